@@ -1,0 +1,36 @@
+/* cli — the subcommand table and small option helpers shared by the
+ * subcommands. Exit codes: 0 ok, 1 bad input, 2 usage, 3 I/O or internal. */
+#ifndef CLI_H
+#define CLI_H
+#include <stdio.h>
+
+enum { CLI_OK = 0, CLI_INPUT = 1, CLI_USAGE = 2, CLI_IO = 3 };
+
+/* Each subcommand: argv[0] is the subcommand name. */
+int cmd_render(int argc, char **argv);
+int cmd_dl2png(int argc, char **argv);
+int cmd_dl(int argc, char **argv);
+int cmd_compare(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
+int cmd_cms(int argc, char **argv);
+
+/* Prints "maprt CMD: error: TEXT" and a hint to use --help; returns CLI_USAGE. */
+int cli_usage_error(const char *cmd, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+/* The value of option argv[*i] (the next argument); advances *i. NULL (after
+ * a usage error message) if missing. */
+const char *cli_value(const char *cmd, int argc, char **argv, int *i);
+/* Parses a whole decimal integer in [lo,hi]; 0 ok, else CLI_USAGE after a message. */
+int cli_long(const char *cmd, const char *opt, const char *s, long lo, long hi, long *out);
+/* Parses a finite decimal number; 0 ok, else CLI_USAGE after a message. */
+int cli_double(const char *cmd, const char *opt, const char *s, double *out);
+/* Parses "WxH" with 1 <= W,H <= max; 0 ok, else CLI_USAGE after a message. */
+int cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, int *h);
+/* 1 if argv contains -h or --help. */
+int cli_wants_help(int argc, char **argv);
+/* 1 when stderr is a terminal (progress bars go there only then). */
+int cli_is_tty(void);
+#endif

@@ -1,0 +1,104 @@
+/* scene — the scene model, in double precision, exactly as the scene deck
+ * describes it. The parser builds it (scene_parse.c), analysis and the
+ * per-mode compilers read it; it is never modified after parsing.
+ *
+ * Geometry conventions (documented in docs/primitives.md):
+ *   - right-handed world, any orientation; the camera's UP picks "up".
+ *   - each primitive lives in a canonical object frame, z is its axis:
+ *       SPHERE    radius dim[0], centre at the origin
+ *       CYLINDER  radius dim[0], z from 0 to dim[1] (height), capped
+ *       BLOCK     [0,dim[0]] x [0,dim[1]] x [0,dim[2]]
+ *       CONE      radius dim[0] at z=0, dim[1] at z=dim[2] (height), capped
+ *       HALFSPACE z <= 0 (the solid below the xy-plane)
+ *   - world_from_object is a 4x4 affine matrix, row-major, acting on column
+ *     vectors (p_world = M * p_object), composed from the deck's transforms.
+ * All arrays are owned by the scene and released by scene_free. */
+#ifndef SCENE_H
+#define SCENE_H
+#include <stddef.h>
+#include "util/diag.h"
+#include "util/recsrc.h"
+
+#define SCENE_NAME_MAX 16     /* significant characters of a name */
+#define SCENE_MAX_FACES 6
+
+typedef enum prim_kind {
+    PRIM_SPHERE, PRIM_CYLINDER, PRIM_BLOCK, PRIM_CONE, PRIM_HALFSPACE,
+    PRIM_KIND_COUNT
+} prim_kind;
+
+/* Where a definition came from, for diagnostics at render time. */
+typedef struct scene_loc {
+    long line, col;           /* record number and column in scene->source */
+} scene_loc;
+
+/* A plain attribute: one colour and one optical model for a whole surface. */
+typedef struct scene_attr {
+    char name[SCENE_NAME_MAX + 1];
+    double color[3];          /* linear 0..1 */
+    double ambient;           /* ka, fraction of the scene ambient reflected */
+    double diffuse;           /* kd */
+    double specular;          /* ks (Phong highlight) */
+    double exponent;          /* Phong exponent */
+    double mirror;            /* kr, mirror reflectance 0..1 */
+    double transmit;          /* kt, transmittance 0..1 */
+    double ior;               /* index of refraction (used when kt > 0) */
+    scene_loc loc;
+} scene_attr;
+
+typedef struct scene_prim {
+    prim_kind kind;
+    double dim[3];                    /* see the table above */
+    double world_from_object[16];     /* row-major 4x4 affine */
+    int attr;                         /* index into attrs (plain attribute) */
+    int face_map[SCENE_MAX_FACES];    /* per face: attribute-mapping binding
+                                         (index into maps), -1 = plain attr */
+    char name[SCENE_NAME_MAX + 1];    /* the deck's name for it */
+    scene_loc loc;
+} scene_prim;
+
+typedef enum csg_op { CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF } csg_op;
+
+/* CSG tree node: a leaf names a primitive; an operator node names its two
+ * operands, left first (operand order matters for DIFF). */
+typedef struct scene_node {
+    csg_op op;
+    int left, right;          /* node indices, operators only */
+    int prim;                 /* prim index, leaves only */
+} scene_node;
+
+typedef struct scene_light {
+    double pos[3];
+    double color[3];
+    double intensity;
+    scene_loc loc;
+} scene_light;
+
+typedef struct scene_view {
+    double eye[3], look[3], up[3];
+    double fov_deg;           /* vertical field of view, degrees */
+    int width, height;        /* default image size (overridden by --size) */
+} scene_view;
+
+typedef struct scene {
+    char *source;             /* file name or fileid the deck came from */
+    scene_view view;
+    double ambient[3];        /* ambient light colour */
+    double background[3];
+    int max_depth;            /* reflection/refraction recursion limit */
+
+    scene_attr *attrs;   size_t nattrs;
+    scene_prim *prims;   size_t nprims;
+    scene_node *nodes;   size_t nnodes;
+    int *roots;          size_t nroots;   /* rendered objects (union of all) */
+    scene_light *lights; size_t nlights;
+    /* Attribute mapping (planar division structures) is added by src/pds. */
+    struct scene_map *maps; size_t nmaps;
+} scene;
+
+/* Parses a scene deck. On success *out owns a new scene and 0 is returned;
+ * otherwise err holds the first error (file:record:column) and *out is
+ * untouched. Never crashes, hangs or allocates without bound. */
+int scene_parse(const recsrc *src, scene **out, diag *err);
+void scene_free(scene *s);
+#endif

@@ -1,0 +1,73 @@
+/* diag — first-error records with locations (see diag.h). */
+#include "util/diag.h"
+#include <stdarg.h>
+#include <string.h>
+
+void diag_init(diag *d)
+{
+    memset(d, 0, sizeof *d);
+    d->offset = -1;
+}
+
+static void diag_file(diag *d, const char *file)
+{
+    size_t n = file ? strlen(file) : 0;
+    if (n >= sizeof d->file)
+        n = sizeof d->file - 1;
+    memcpy(d->file, file ? file : "", n);
+    d->file[n] = '\0';
+}
+
+int diag_at(diag *d, int status, const char *file, long line, long col,
+            const char *fmt, ...)
+{
+    va_list ap;
+    if (!d || d->status)
+        return status;
+    d->status = status;
+    diag_file(d, file);
+    d->line = line;
+    d->col = col;
+    d->offset = -1;
+    va_start(ap, fmt);
+    vsnprintf(d->msg, sizeof d->msg, fmt, ap);
+    va_end(ap);
+    return status;
+}
+
+int diag_offset(diag *d, int status, const char *file, long long offset,
+                const char *fmt, ...)
+{
+    va_list ap;
+    if (!d || d->status)
+        return status;
+    d->status = status;
+    diag_file(d, file);
+    d->line = d->col = 0;
+    d->offset = offset;
+    va_start(ap, fmt);
+    vsnprintf(d->msg, sizeof d->msg, fmt, ap);
+    va_end(ap);
+    return status;
+}
+
+void diag_format(const diag *d, char *buf, size_t size)
+{
+    if (d->offset >= 0)
+        snprintf(buf, size, "%s: offset %lld: error: %s", d->file, d->offset, d->msg);
+    else if (d->line > 0 && d->col > 0)
+        snprintf(buf, size, "%s:%ld:%ld: error: %s", d->file, d->line, d->col, d->msg);
+    else if (d->line > 0)
+        snprintf(buf, size, "%s:%ld: error: %s", d->file, d->line, d->msg);
+    else if (d->file[0])
+        snprintf(buf, size, "%s: error: %s", d->file, d->msg);
+    else
+        snprintf(buf, size, "error: %s", d->msg);
+}
+
+void diag_print(FILE *f, const diag *d)
+{
+    char buf[1024];
+    diag_format(d, buf, sizeof buf);
+    fprintf(f, "maprt: %s\n", buf);
+}

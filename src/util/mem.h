@@ -1,0 +1,23 @@
+/* mem — the one allocation hook. Every heap allocation in maprt goes through
+ * these functions so that tests can fail the Nth allocation (mem_fail_after)
+ * and check that each caller reports the failure instead of crashing. */
+#ifndef MEM_H
+#define MEM_H
+#include <stddef.h>
+
+void *mem_alloc(size_t size);                 /* NULL on failure or size 0 */
+void *mem_calloc(size_t count, size_t size);  /* NULL on overflow of count*size */
+void *mem_realloc(void *p, size_t size);      /* NULL on failure; p untouched */
+void  mem_free(void *p);
+char *mem_strdup(const char *s);
+
+/* Grows *p (an array of *cap elements of elem bytes) to hold at least need
+ * elements, doubling; returns 0 on success, -1 on overflow or failure (then *p
+ * and *cap are unchanged). */
+int mem_grow(void **p, size_t *cap, size_t need, size_t elem);
+
+/* Test hook: allocations succeed n more times, then fail; n < 0 disables.
+ * mem_alloc_count() is the number of successful allocations so far. */
+void mem_fail_after(long n);
+long mem_alloc_count(void);
+#endif

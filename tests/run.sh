@@ -1,0 +1,31 @@
+#!/bin/sh
+# Runs every cmocka binary in BUILD/tests and every CLI script in tests/cli, and
+# ends with the "N passed, N failed" line. Exit status 1 if anything failed.
+build=${1:-build}
+pass=0; fail=0; failed_names=""
+for t in "$build"/tests/test_*; do
+  [ -x "$t" ] || continue
+  out=$("$t" 2>&1); rc=$?
+  p=$(printf '%s\n' "$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | awk '{s+=$1} END {print s+0}')
+  f=$(printf '%s\n' "$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | awk '{s+=$1} END {print s+0}')
+  if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi   # crashed before reporting
+  pass=$((pass + p)); fail=$((fail + f))
+  if [ "$f" -ne 0 ]; then
+    failed_names="$failed_names $(basename "$t")"
+    printf '%s\n' "$out" | grep -v '^\[ \(RUN\|       OK\) ' >&2
+  fi
+  printf '%-40s %4d passed %4d failed\n' "$(basename "$t")" "$p" "$f"
+done
+for s in tests/cli/*.sh; do
+  [ -f "$s" ] || continue
+  if out=$(MAPRT="$build/maprt" sh "$s" 2>&1); then
+    pass=$((pass + 1)); st=ok
+  else
+    fail=$((fail + 1)); st=FAILED; failed_names="$failed_names $(basename "$s")"
+    printf '%s\n' "$out" >&2
+  fi
+  printf '%-40s %s\n' "cli/$(basename "$s")" "$st"
+done
+[ -n "$failed_names" ] && echo "failed:$failed_names"
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

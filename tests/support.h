@@ -1,0 +1,16 @@
+/* support — helpers shared by the cmocka test binaries. */
+#ifndef TEST_SUPPORT_H
+#define TEST_SUPPORT_H
+#include <stddef.h>
+#include <stdint.h>
+
+/* Seed for property tests: MAPRT_SEED from the environment, else a fixed
+ * default; printed once so a failure can be replayed. */
+uint64_t test_seed(const char *test_name);
+/* xorshift64* generator; state must be non-zero. */
+uint64_t test_rand(uint64_t *state);
+/* Uniform double in [lo, hi). */
+double test_uniform(uint64_t *state, double lo, double hi);
+/* Reads a whole file into a new buffer (mem_free it); NULL on failure. */
+char *test_read_file(const char *path, size_t *len);
+#endif

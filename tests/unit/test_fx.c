@@ -1,0 +1,100 @@
+/* test_fx — fixed-point arithmetic against long double references. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include "num/fx.h"
+#include "support.h"
+
+static long double ref_round(long double x) { return x < 0 ? -floorl(-x + 0.5L) : floorl(x + 0.5L); }
+
+static void test_fx_mul_matches_long_double(void **state)
+{
+    uint64_t s = test_seed("test_fx_mul_matches_long_double");
+    int i;
+    (void)state;
+    for (i = 0; i < 100000; i++) {
+        fx16 a = (fx16)(int32_t)test_rand(&s), b = (fx16)(int32_t)(test_rand(&s) >> (test_rand(&s) % 32));
+        long double r = ref_round((long double)a * b / 65536.0L);
+        unsigned long before = fx_overflows;
+        fx16 got = fx16_mul(a, b);
+        if (r > 2147483647.0L || r < -2147483648.0L) {
+            assert_int_equal(got, r > 0 ? FX16_MAX : FX16_MIN);
+            assert_true(fx_overflows == before + 1);
+        } else {
+            assert_true((long double)got == r);
+            assert_true(fx_overflows == before);
+        }
+    }
+}
+
+static void test_fx_edges(void **state)
+{
+    unsigned long before;
+    (void)state;
+    before = fx_overflows;
+    assert_int_equal(fx16_neg(FX16_MIN), FX16_MAX);
+    assert_int_equal(fx16_add(FX16_MAX, 1), FX16_MAX);
+    assert_int_equal(fx16_sub(FX16_MIN, 1), FX16_MIN);
+    assert_int_equal(fx16_div(FX16_ONE, 0), FX16_MAX);
+    assert_true(fx_overflows == before + 4);
+    assert_int_equal(fx16_mul(-1, FX16_ONE), -1);                 /* -1/65536 * 1 */
+    assert_int_equal(fx16_mul(-1, FX16_ONE / 2), -1);             /* -0.5 ulp rounds away */
+    assert_int_equal(fx16_from_double(-1.0 / 65536), -1);
+    assert_int_equal(fx16_from_double(32767.99998474121), FX16_MAX);
+    assert_int_equal(fx16_sqrt(FX16_MAX), fx16_from_double(sqrt(32767.99998474121)));
+    assert_int_equal(fx32_mul(FX32_ONE, FX32_MIN), FX32_MIN);
+    assert_int_equal(fx32_div(FX32_ONE, 3 * FX32_ONE), fx32_from_double(1.0 / 3));
+}
+
+static void test_fx_div_sqrt_match_long_double(void **state)
+{
+    uint64_t s = test_seed("test_fx_div_sqrt_match_long_double");
+    int i;
+    (void)state;
+    for (i = 0; i < 100000; i++) {
+        fx16 a = (fx16)(int32_t)test_rand(&s), b = (fx16)((int32_t)test_rand(&s) >> (test_rand(&s) % 31));
+        long double q, r;
+        if (b == 0)
+            continue;
+        q = ref_round((long double)a * 65536.0L / b);
+        if (q <= 2147483647.0L && q >= -2147483648.0L)
+            assert_true((long double)fx16_div(a, b) == q);
+        if (a >= 0) {
+            r = ref_round(sqrtl((long double)a * 65536.0L));
+            assert_true((long double)fx16_sqrt(a) == r);
+        }
+    }
+}
+
+static void test_fx32_matches_long_double(void **state)
+{
+    uint64_t s = test_seed("test_fx32_matches_long_double");
+    int i;
+    (void)state;
+    for (i = 0; i < 20000; i++) {
+        /* operands with magnitude below 2^40 keep products exact in long double */
+        fx32 a = (fx32)((int64_t)test_rand(&s) >> 24), b = (fx32)((int64_t)test_rand(&s) >> 30);
+        long double p = ref_round((long double)a * b / 4294967296.0L);
+        assert_true((long double)fx32_mul(a, b) == p);
+        if (b != 0) {
+            long double q = ref_round((long double)a * 4294967296.0L / b);
+            if (fabsl(q) < 9.2e18L)
+                assert_true((long double)fx32_div(a, b) == q);
+        }
+        if (a >= 0)
+            assert_true((long double)fx32_sqrt(a) == ref_round(sqrtl((long double)a * 4294967296.0L)));
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_fx_mul_matches_long_double),
+        cmocka_unit_test(test_fx_edges),
+        cmocka_unit_test(test_fx_div_sqrt_match_long_double),
+        cmocka_unit_test(test_fx32_matches_long_double),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
