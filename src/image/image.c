@@ -1,0 +1,114 @@
+/* image — 8-bit rasters and PNG I/O via libpng's simplified API. */
+#include "image/image.h"
+#include "util/mem.h"
+#include "util/outfile.h"
+#include <png.h>
+#include <string.h>
+
+int image_alloc(image *img, int width, int height, int channels, const char *what, diag *err)
+{
+    size_t n;
+    if (width < 1 || height < 1 || width > IMAGE_MAX_SIDE || height > IMAGE_MAX_SIDE ||
+        (size_t)width * (size_t)height > IMAGE_MAX_PIXELS || (channels != 1 && channels != 3))
+        return diag_at(err, DIAG_INPUT, what, 0, 0, "image size %dx%d is outside 1..%d per side",
+                       width, height, IMAGE_MAX_SIDE);
+    n = (size_t)width * (size_t)height * (size_t)channels;
+    img->px = mem_calloc(n, 1);
+    if (!img->px)
+        return diag_at(err, DIAG_IO, what, 0, 0, "out of memory for a %dx%d image", width, height);
+    img->width = width;
+    img->height = height;
+    img->channels = channels;
+    return 0;
+}
+
+void image_free(image *img)
+{
+    mem_free(img->px);
+    img->px = NULL;
+    img->width = img->height = 0;
+}
+
+/* Encodes a prepared png_image to memory, then commits it through outfile. */
+static int image_png_commit(const char *path, png_image *pi, const void *px, int row_stride,
+                            const void *colormap, diag *err)
+{
+    png_alloc_size_t size = 0;
+    void *buf;
+    int rc;
+    if (!png_image_write_to_memory(pi, NULL, &size, 0, px, row_stride, colormap))
+        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
+    buf = mem_alloc(size);
+    if (!buf)
+        return diag_at(err, DIAG_IO, path, 0, 0, "out of memory");
+    if (!png_image_write_to_memory(pi, buf, &size, 0, px, row_stride, colormap)) {
+        mem_free(buf);
+        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
+    }
+    rc = outfile_write_all(path, buf, size, err);
+    mem_free(buf);
+    return rc;
+}
+
+int image_write_png(const char *path, const image *img, diag *err)
+{
+    png_image pi;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = (png_uint_32)img->width;
+    pi.height = (png_uint_32)img->height;
+    pi.format = img->channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+    return image_png_commit(path, &pi, img->px, img->width * img->channels, NULL, err);
+}
+
+int image_write_png_palette(const char *path, int width, int height, const uint8_t *index,
+                            const uint8_t *palette, int ncolors, diag *err)
+{
+    png_image pi;
+    if (ncolors < 1 || ncolors > 256)
+        return diag_at(err, DIAG_INPUT, path, 0, 0, "palette of %d colours (1..256 allowed)", ncolors);
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = (png_uint_32)width;
+    pi.height = (png_uint_32)height;
+    pi.format = PNG_FORMAT_RGB_COLORMAP;
+    pi.colormap_entries = (png_uint_32)ncolors;
+    return image_png_commit(path, &pi, index, width, palette, err);
+}
+
+int image_read_png_memory(const char *name, const void *data, size_t len, int channels,
+                          image *out, diag *err)
+{
+    png_image pi;
+    image img;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    if (channels != 1 && channels != 3)
+        return diag_at(err, DIAG_USAGE, name, 0, 0, "internal: bad channel count");
+    if (!png_image_begin_read_from_memory(&pi, data, len))
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "not a readable PNG: %s", pi.message);
+    if (image_alloc(&img, (int)(pi.width > IMAGE_MAX_SIDE ? 0 : pi.width),
+                    (int)(pi.height > IMAGE_MAX_SIDE ? 0 : pi.height), channels, name, err)) {
+        png_image_free(&pi);
+        return err->status;
+    }
+    pi.format = channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+    if (!png_image_finish_read(&pi, NULL, img.px, img.width * channels, NULL)) {
+        image_free(&img);
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "corrupt PNG: %s", pi.message);
+    }
+    *out = img;
+    return 0;
+}
+
+int image_read_png(const char *path, int channels, image *out, diag *err)
+{
+    char *data;
+    size_t len;
+    int rc;
+    if (infile_read_all(path, (size_t)1 << 30, &data, &len, err))
+        return err->status;
+    rc = image_read_png_memory(path, data, len, channels, out, err);
+    mem_free(data);
+    return rc;
+}
