@@ -87,8 +87,13 @@ int image_read_png_memory(const char *name, const void *data, size_t len, int ch
         return diag_at(err, DIAG_USAGE, name, 0, 0, "internal: bad channel count");
     if (!png_image_begin_read_from_memory(&pi, data, len))
         return diag_at(err, DIAG_INPUT, name, 0, 0, "not a readable PNG: %s", pi.message);
-    if (image_alloc(&img, (int)(pi.width > IMAGE_MAX_SIDE ? 0 : pi.width),
-                    (int)(pi.height > IMAGE_MAX_SIDE ? 0 : pi.height), channels, name, err)) {
+    if (pi.width > IMAGE_MAX_SIDE || pi.height > IMAGE_MAX_SIDE) {
+        diag_at(err, DIAG_INPUT, name, 0, 0, "image size %lux%lu is outside 1..%d per side",
+                (unsigned long)pi.width, (unsigned long)pi.height, IMAGE_MAX_SIDE);
+        png_image_free(&pi);
+        return DIAG_INPUT;
+    }
+    if (image_alloc(&img, (int)pi.width, (int)pi.height, channels, name, err)) {
         png_image_free(&pi);
         return err->status;
     }
