@@ -82,9 +82,12 @@ int scene_lex_next(scene_lex *lx, scene_lex_stmt *st, diag *err)
         if (len > 0 && rec[0] == '*')
             continue;
         {
+            size_t before = st->ntok;
             int more;
             if (scene_lex_card(lx, rec, len, st, &more, err))
                 return err->status;
+            if (st->ntok == before && !more)
+                continue;               /* blank card */
             if (more) {
                 /* the dropped `-` item is still in the array */
                 cont = 1;
