@@ -98,10 +98,10 @@ static int scene_parse_add_def(scene_parser *p, scene_cur *c, const scene_lex_to
 static int scene_parse_once(scene_parser *p, scene_cur *c, int slot)
 {
     const scene_lex_tok *kw = &c->st->tok[0];
-    if (p->view_line[slot])
+    if (p->view_loc[slot].line)
         return diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
-                       "%s given twice (first on record %ld)", c->what, p->view_line[slot]);
-    p->view_line[slot] = kw->line;
+                       "%s given twice (first on record %ld)", c->what, p->view_loc[slot].line);
+    p->view_loc[slot] = scene_parse_loc(kw);
     return 0;
 }
 
@@ -239,8 +239,11 @@ static int scene_parse_light(scene_parser *p, scene_cur *c)
             if (r < 0 || scene_parse_color(c, l.color))
                 return DIAG_INPUT;
         } else if ((r = scene_parse_option(c, "INTENSITY", &seen_int)) != 0) {
-            if (r < 0 || scene_cur_range(c, "INTENSITY", 0, SCENE_CUR_MAX_ABS, &l.intensity))
+            const scene_lex_tok *at;
+            if (r < 0 || scene_cur_number(c, &l.intensity, &at))
                 return DIAG_INPUT;
+            if (l.intensity < 0)
+                return scene_cur_error(c, at, "INTENSITY must not be negative");
         } else {
             return scene_cur_error(c, t, "expected COLOR or INTENSITY, found %s", t->text);
         }
@@ -609,7 +612,7 @@ static int scene_parse_finish(scene_parser *p)
     double d[3], x[3];
     int i;
     for (i = 0; i < 2; i++)
-        if (!p->view_line[i])
+        if (!p->view_loc[i].line)
             return diag_at(p->err, DIAG_INPUT, p->file, 0, 0, "scene has no %s statement",
                            need[i]);
     if (s->nlights == 0)
@@ -619,17 +622,17 @@ static int scene_parse_finish(scene_parser *p)
     for (i = 0; i < 3; i++)
         d[i] = v->look[i] - v->eye[i];
     if (d[0] == 0 && d[1] == 0 && d[2] == 0)
-        return diag_at(p->err, DIAG_INPUT, p->file, p->view_line[SCENE_PARSE_LOOK], 1,
-                       "LOOKAT: point is the EYE point");
+        return diag_at(p->err, DIAG_INPUT, p->file, p->view_loc[SCENE_PARSE_LOOK].line,
+                       p->view_loc[SCENE_PARSE_LOOK].col, "LOOKAT: point is the EYE point");
     x[0] = d[1] * v->up[2] - d[2] * v->up[1];
     x[1] = d[2] * v->up[0] - d[0] * v->up[2];
     x[2] = d[0] * v->up[1] - d[1] * v->up[0];
     if (sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <=
         1e-9 * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) *
                sqrt(v->up[0] * v->up[0] + v->up[1] * v->up[1] + v->up[2] * v->up[2])) {
-        long line = p->view_line[SCENE_PARSE_UP] ? p->view_line[SCENE_PARSE_UP]
-                                                 : p->view_line[SCENE_PARSE_LOOK];
-        return diag_at(p->err, DIAG_INPUT, p->file, line, 1,
+        const scene_loc *at = p->view_loc[SCENE_PARSE_UP].line ? &p->view_loc[SCENE_PARSE_UP]
+                                                              : &p->view_loc[SCENE_PARSE_LOOK];
+        return diag_at(p->err, DIAG_INPUT, p->file, at->line, at->col,
                        "UP is parallel to the line of sight");
     }
     return 0;

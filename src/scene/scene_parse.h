@@ -68,7 +68,7 @@ struct scene_parser {
     scene_parse_def *defs;     size_t ndefs, cap_defs;
     scene_parse_use *operands; size_t noperands, cap_operands;
     size_t cap_attrs, cap_lights, cap_prims, cap_nodes, cap_roots;
-    long view_line[SCENE_PARSE_VIEW_COUNT];   /* record of each view statement, 0 = none */
+    scene_loc view_loc[SCENE_PARSE_VIEW_COUNT];  /* each view statement; line 0 = none */
 };
 
 /* Reads "ATTR name"'s name at the cursor and resolves it to an attribute

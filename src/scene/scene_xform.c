@@ -41,9 +41,13 @@ int scene_xform_ok(const double m[16])
     for (i = 0; i < 16; i++)
         if (!(fabs(m[i]) <= SCENE_XFORM_MAX_ABS))
             return 0;
-    for (i = 0; i < 3; i++)
-        norms *= sqrt(m[i * 4] * m[i * 4] + m[i * 4 + 1] * m[i * 4 + 1] +
-                      m[i * 4 + 2] * m[i * 4 + 2]);
+    for (i = 0; i < 3; i++) {
+        double n = sqrt(m[i * 4] * m[i * 4] + m[i * 4 + 1] * m[i * 4 + 1] +
+                        m[i * 4 + 2] * m[i * 4 + 2]);
+        if (!(n >= 1 / SCENE_XFORM_MAX_ABS))     /* shrunk to nothing */
+            return 0;
+        norms *= n;
+    }
     det = m[0] * (m[5] * m[10] - m[6] * m[9])
         - m[1] * (m[4] * m[10] - m[6] * m[8])
         + m[2] * (m[4] * m[9] - m[5] * m[8]);
