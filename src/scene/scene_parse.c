@@ -221,6 +221,7 @@ static int scene_parse_option(scene_cur *c, const char *kw, int *seen)
     return 1;
 }
 
+/* LIGHT x y z [COLOR r g b] [INTENSITY i]: appends a point light. */
 static int scene_parse_light(scene_parser *p, scene_cur *c)
 {
     scene_light l;
@@ -277,6 +278,8 @@ static int scene_parse_add_attr(scene_parser *p, const scene_attr *a, const scen
     return 0;
 }
 
+/* ATTR name COLOR r g b {option value}: appends a plain attribute; the
+ * option table gives each coefficient's keyword, range and field. */
 static int scene_parse_attr(scene_parser *p, scene_cur *c)
 {
     static const struct { const char *kw; double lo, hi; size_t off; } opt[] = {
@@ -340,6 +343,8 @@ static int scene_parse_dim(scene_cur *c, const char *label, int zero_ok, double 
     return 0;
 }
 
+/* SPHERE | CYLINDER | BLOCK | CONE | HALFSPACE name dims tail: defines a
+ * primitive solid (dimensions as in scene.h's canonical frames). */
 static int scene_parse_prim(scene_parser *p, scene_cur *c, prim_kind kind)
 {
     scene_parse_def d;
@@ -408,12 +413,17 @@ static int scene_parse_use_at(scene_parser *p, scene_cur *c, scene_parse_use *u,
     return scene_parse_tail(p, c, u->m, &u->attr);
 }
 
+/* a + b, saturated just above the primitive limit. */
 static size_t scene_parse_sat_add(size_t a, size_t b)
 {
     size_t cap = (size_t)SCENE_PARSE_MAX_PRIMS + 1;
     return (a >= cap || b >= cap || a + b >= cap) ? cap : a + b;
 }
 
+/* UNION | INTER | DIFF name operand operand {operand}: defines a CSG solid.
+ * Its leaf count (saturated) and nesting depth are derived from the
+ * operands here, so OBJECT can check sizes before expanding. On error the
+ * operands already appended are dropped again. */
 static int scene_parse_csg(scene_parser *p, scene_cur *c, csg_op op)
 {
     scene_parse_def d;
@@ -524,6 +534,9 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int a
     return left;
 }
 
+/* OBJECT name tail: checks the expansion against the scene limits, reserves
+ * exactly the room it needs, expands it and adds its root. On error the
+ * scene is left as before the statement. */
 static int scene_parse_object(scene_parser *p, scene_cur *c)
 {
     scene *s = p->s;
@@ -648,6 +661,9 @@ static void scene_parse_defaults(scene *s)
     s->max_depth = 5;
 }
 
+/* See scene.h. The built-in DEFAULT attribute is attrs[0]; statements are
+ * dispatched through scene_parse_tables; the parser state (with its large
+ * statement buffer) lives on the heap. */
 int scene_parse(const recsrc *src, scene **out, diag *err)
 {
     scene_parser *p = mem_calloc(1, sizeof *p);

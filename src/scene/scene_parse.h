@@ -4,7 +4,8 @@
  * keyword; scene_parse.c lists the tables it consults (scene_parse_tables).
  * Handlers read their operands with scene_cur, resolve names through
  * scene_parse_attr_ref / scene_parse_find_solid and build into p->s.
- * scene_parse() itself is declared in scene.h. */
+ * New keywords must also be added to the reserved words (scene_cur.c) so
+ * that they cannot be names. scene_parse() itself is declared in scene.h. */
 #ifndef SCENE_PARSE_H
 #define SCENE_PARSE_H
 #include <stddef.h>
