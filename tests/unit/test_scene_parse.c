@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include "scene/scene.h"
 #include "scene/scene_parse.h"
 #include "util/mem.h"
@@ -705,6 +706,44 @@ static void test_scene_parse_shipped_scenes(void **state)
     scene_free(s);
 }
 
+/* Every deck in scenes/ parses and is made of 80-column cards whose
+ * sequence fields (columns 77-80) increase. */
+static void test_scene_parse_every_deck(void **state)
+{
+    DIR *d = opendir("scenes");
+    struct dirent *e;
+    int decks = 0;
+    (void)state;
+    assert_non_null(d);
+    while ((e = readdir(d)) != NULL) {
+        char path[512], *text, *line;
+        size_t len, n = strlen(e->d_name);
+        long prev = -1;
+        if (n < 6 || strcmp(e->d_name + n - 6, ".scene") != 0)
+            continue;
+        snprintf(path, sizeof path, "scenes/%s", e->d_name);
+        scene_free(parse_file(path));
+        text = test_read_file(path, &len);
+        assert_non_null(text);
+        for (line = text; line < text + len;) {
+            char *nl = memchr(line, '\n', (size_t)(text + len - line));
+            long seq;
+            assert_non_null(nl);
+            if (nl - line != 80)
+                fprintf(stderr, "%s: a card of %d columns\n", path, (int)(nl - line));
+            assert_int_equal(nl - line, 80);
+            seq = strtol(line + 76, NULL, 10);
+            assert_true(seq > prev);
+            prev = seq;
+            line = nl + 1;
+        }
+        mem_free(text);
+        decks++;
+    }
+    closedir(d);
+    assert_true(decks >= 3);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -728,6 +767,7 @@ int main(void)
         cmocka_unit_test(test_scene_parse_many_definitions),
         cmocka_unit_test(test_scene_parse_oom_sweep),
         cmocka_unit_test(test_scene_parse_shipped_scenes),
+        cmocka_unit_test(test_scene_parse_every_deck),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
