@@ -53,24 +53,34 @@ int cms_cp_get(cms_cp_id id, const cms_cp **cp, diag *err)
     return diag_at(err, DIAG_USAGE, "", 0, 0, "unknown code page %d (use 037 or 1047)", (int)id);
 }
 
-cms_cp_id cms_cp_detect(const unsigned char *b, size_t n, cms_cp_id fallback)
+unsigned cms_cp_scan(const unsigned char *b, size_t n)
 {
-    int s1047 = 0, s037 = 0;
+    unsigned ev = 0;
     size_t i;
     for (i = 0; i < n; i++) {
         switch (b[i]) {
-        case 0xAD: case 0xBD: case 0x5F: s1047 = 1; break;
-        case 0xBA: case 0xBB: case 0xB0: s037 = 1; break;
+        case 0xAD: case 0xBD: case 0x5F: ev |= 1; break;
+        case 0xBA: case 0xBB: case 0xB0: ev |= 2; break;
         default: break;
         }
     }
-    if (s1047 && s037)
+    return ev;
+}
+
+cms_cp_id cms_cp_choose(unsigned ev, cms_cp_id fallback)
+{
+    if (ev == 3)
         return CMS_CP_AUTO;
-    if (s1047)
+    if (ev == 1)
         return CMS_CP_1047;
-    if (s037)
+    if (ev == 2)
         return CMS_CP_037;
     return fallback;
+}
+
+cms_cp_id cms_cp_detect(const unsigned char *b, size_t n, cms_cp_id fallback)
+{
+    return cms_cp_choose(cms_cp_scan(b, n), fallback);
 }
 
 size_t cms_cp_decode(const cms_cp *cp, const unsigned char *in, size_t n, char *out, size_t *bad)
@@ -112,7 +122,9 @@ size_t cms_cp_encode(const cms_cp *cp, const char *in, size_t n, unsigned char *
             *bad = at;
             return (size_t)-1;
         }
-        out[o++] = cp->from_latin1[c];
+        if (out)
+            out[o] = cp->from_latin1[c];
+        o++;
     }
     return o;
 }

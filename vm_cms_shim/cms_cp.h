@@ -33,6 +33,11 @@ int cms_cp_get(cms_cp_id id, const cms_cp **cp, diag *err);
  * pages then give the same text), and CMS_CP_AUTO when both occur (the bytes
  * do not decide; the caller must ask for --cp). */
 cms_cp_id cms_cp_detect(const unsigned char *b, size_t n, cms_cp_id fallback);
+/* The same decision in two steps, for text spread over several buffers:
+ * cms_cp_scan returns evidence bits (1 = a 1047 code, 2 = a 037 code), to be
+ * OR-ed over all buffers and passed to cms_cp_choose. */
+unsigned cms_cp_scan(const unsigned char *b, size_t n);
+cms_cp_id cms_cp_choose(unsigned evidence, cms_cp_id fallback);
 
 /* Appends the UTF-8 form of EBCDIC bytes to out (room for 2*n bytes needed).
  * Returns the number of bytes written, or (size_t)-1 with *bad set to the
@@ -40,7 +45,8 @@ cms_cp_id cms_cp_detect(const unsigned char *b, size_t n, cms_cp_id fallback);
  * record may hold. */
 size_t cms_cp_decode(const cms_cp *cp, const unsigned char *in, size_t n, char *out, size_t *bad);
 
-/* Encodes UTF-8 host text to EBCDIC (out has room for n bytes). Returns the
+/* Encodes UTF-8 host text to EBCDIC (out has room for n bytes, or is NULL to
+ * only count). Returns the
  * number of bytes written, or (size_t)-1 with *bad set to the byte index of the
  * first character outside Latin-1, control character or malformed sequence. */
 size_t cms_cp_encode(const cms_cp *cp, const char *in, size_t n, unsigned char *out, size_t *bad);
