@@ -34,7 +34,7 @@ int cms_file_open_read(cms_file **f, const cms_disks *d, const char *arg,
                        const cms_decode_opts *o, diag *err);
 
 /* Reads record recno (1-based; 0 = the next one, as FSREAD's RECNO=0).
- * Returns 0 with *rec/*len (host text, valid until close), or CMS_RC_EOF
+ * Returns 0 with *rec and *len (host text, valid until close), or CMS_RC_EOF
  * (12) past the last record; no diagnostic for end of file. */
 int cms_file_read(cms_file *f, long recno, const char **rec, size_t *len);
 
