@@ -94,11 +94,9 @@ static int build_ebcdic(recs_build *b, const cms_cp *cp, const unsigned char *da
     return cms_recs_append(&b->r, &b->textcap, &b->reccap, b->tmp, n, err);
 }
 
-/* Checks for a :READ card in host text s (len bytes). Returns 1 and fills
- * *id for a header, 0 if s is not one, DIAG_INPUT (negated) for a header
- * with a bad fileid. Columns: 1 ':', 2-5 READ, 8-15 fn, 17-24 ft, 26-27 fm. */
-static int punch_header(const char *s, size_t len, cms_fileid *id, const char *name,
-                        long recno, diag *err)
+/* Columns of a :READ card: 1 ':', 2-5 READ, 8-15 fn, 17-24 ft, 26-27 fm. */
+int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *name,
+                       long recno, diag *err)
 {
     char card[CMS_CARD_COLS];
     size_t n = len < CMS_CARD_COLS ? len : CMS_CARD_COLS;
@@ -113,14 +111,22 @@ static int punch_header(const char *s, size_t len, cms_fileid *id, const char *n
         err->col = 8;
         snprintf(err->file, sizeof err->file, "%s", name);
         snprintf(err->msg, sizeof err->msg, ":READ card: %s", msg);
-        return -DIAG_INPUT;
+        return DIAG_INPUT;
     }
     return 1;
 }
 
+/* cms_recs_read_card with errors as negative statuses. */
+static int punch_header(const char *s, size_t len, cms_fileid *id, const char *name,
+                        long recno, diag *err)
+{
+    int h = cms_recs_read_card(s, len, id, name, recno, err);
+    return h == DIAG_INPUT ? -DIAG_INPUT : h;
+}
+
 /* Text and punch decks: one line per record. */
 static int decode_text(const unsigned char *buf, size_t n, cms_form form, int forced,
-                       const char *name, cms_recs *out, diag *err)
+                       int raw, const char *name, cms_recs *out, diag *err)
 {
     recs_build b;
     size_t pos = 0;
@@ -147,7 +153,7 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
                            "NUL byte: not a text file, nor a valid V or RDW stream "
                            "(choose the form with --form)");
         }
-        if (form == CMS_FORM_PUNCH || (!forced && recno == 1)) {
+        if (!raw && (form == CMS_FORM_PUNCH || (!forced && recno == 1))) {
             cms_fileid id;
             h = punch_header((const char *)s, len, &id, name, recno, err);
             if (h < 0) {
@@ -216,7 +222,7 @@ static int pick_cp(cms_cp_id want, unsigned evidence, const char *name, const cm
 /* EBCDIC cards of lrecl bytes, no line ends; a leading :READ card names the
  * file. */
 static int decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_id want,
-                        const char *name, cms_recs *out, diag *err)
+                        int raw, const char *name, cms_recs *out, diag *err)
 {
     static const unsigned char read_e[5] = {0x7A, 0xD9, 0xC5, 0xC1, 0xC4};
     const cms_cp *cp;
@@ -237,7 +243,7 @@ static int decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_i
             build_free(&b);
             return err->status;
         }
-        if (memcmp(c, read_e, 5) == 0) {
+        if (!raw && memcmp(c, read_e, 5) == 0) {
             cms_fileid id;
             cms_rec *r = &b.r.rec[b.r.count - 1];
             int h = punch_header(b.r.text + r->off, r->len, &id, name, recno, err);
@@ -342,7 +348,7 @@ static int decode_chain(const unsigned char *buf, size_t n, int rdw, cms_cp_id w
 /* Content test for EBCDIC cards: every byte a graphic EBCDIC code (X'40' or
  * above), and some byte above X'7F' (letters and digits are), which ASCII
  * text never satisfies (it has blanks X'20' and line ends). */
-static int looks_ebcdic(const unsigned char *buf, size_t n, size_t L)
+int cms_recs_looks_ebcdic(const unsigned char *buf, size_t n, size_t L)
 {
     size_t i;
     int high = 0;
@@ -363,6 +369,7 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
     long lrecl = o && o->lrecl ? o->lrecl : CMS_CARD_COLS;
     cms_form form = o ? o->form : CMS_FORM_AUTO;
     cms_cp_id cp = o ? o->cp : CMS_CP_AUTO;
+    int raw = o ? o->raw_headers : 0;
     if (lrecl < 1 || lrecl > CMS_LRECL_MAX)
         return diag_at(err, DIAG_USAGE, name, 0, 0, "LRECL %ld is outside 1..%d", lrecl, CMS_LRECL_MAX);
     if (n > (size_t)CMS_FILE_MAX_BYTES)
@@ -370,8 +377,8 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
     if (form == CMS_FORM_AUTO) {
         unsigned ev = 0;
         int v, rdw;
-        if (looks_ebcdic(buf, n, (size_t)lrecl))
-            return decode_cards(buf, n, lrecl, cp, name, out, err);
+        if (cms_recs_looks_ebcdic(buf, n, (size_t)lrecl))
+            return decode_cards(buf, n, lrecl, cp, raw, name, out, err);
         v = walk_chain(buf, n, 0, &ev, NULL, NULL, name, err);
         rdw = walk_chain(buf, n, 1, &ev, NULL, NULL, name, err);
         if (v && rdw)
@@ -380,14 +387,14 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
                            "(choose with --form vstream or --form rdw)");
         if (v || rdw)
             return decode_chain(buf, n, rdw, cp, name, out, err);
-        return decode_text(buf, n, CMS_FORM_TEXT, 0, name, out, err);
+        return decode_text(buf, n, CMS_FORM_TEXT, 0, raw, name, out, err);
     }
     switch (form) {
     case CMS_FORM_TEXT:
     case CMS_FORM_PUNCH:
-        return decode_text(buf, n, form, 1, name, out, err);
+        return decode_text(buf, n, form, 1, raw, name, out, err);
     case CMS_FORM_EBCDIC:
-        return decode_cards(buf, n, lrecl, cp, name, out, err);
+        return decode_cards(buf, n, lrecl, cp, raw, name, out, err);
     case CMS_FORM_VSTREAM:
     case CMS_FORM_RDW:
         return decode_chain(buf, n, form == CMS_FORM_RDW, cp, name, out, err);

@@ -34,6 +34,7 @@ typedef struct cms_decode_opts {
     cms_form form;        /* CMS_FORM_AUTO: detect from the content */
     cms_cp_id cp;         /* CMS_CP_AUTO: detect, defaulting to 1047 */
     long lrecl;           /* card length for CMS_FORM_EBCDIC; 0 = 80 */
+    int raw_headers;      /* keep :READ cards as records (deck splitting) */
 } cms_decode_opts;
 
 typedef struct cms_rec {
@@ -72,6 +73,16 @@ int cms_recs_from_stream(const unsigned char *s, size_t n, char recfm, long lrec
                          diag *err);
 
 void cms_recs_free(cms_recs *r);
+
+/* 1 if buf looks like EBCDIC cards of card_len bytes (the auto-detection
+ * rule of cms_recs_decode), else 0. */
+int cms_recs_looks_ebcdic(const unsigned char *buf, size_t n, size_t card_len);
+
+/* Reads a :READ control card from host text s (len bytes): returns 1 and
+ * fills *id, 0 when s is not a :READ card, or DIAG_INPUT after an error at
+ * (name, recno, column 8) for a card with a bad fileid. */
+int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *name,
+                       long recno, diag *err);
 
 /* Appends one record (host text) to a growing record set; used by decoders
  * and the punch splitter. Returns 0 or DIAG_IO. */
