@@ -3,6 +3,16 @@
 #include "util/mem.h"
 #include <string.h>
 
+/* Characters (UTF-8 code points) in n bytes of host text: the column count
+ * of a record, which is what LRECL limits. */
+static size_t text_cols(const char *s, size_t n)
+{
+    size_t i, c = 0;
+    for (i = 0; i < n; i++)
+        c += ((unsigned char)s[i] & 0xC0) != 0x80;
+    return c;
+}
+
 static const char *const form_names[] = {"auto", "text", "punch", "ebcdic", "vstream", "rdw"};
 
 const char *cms_form_name(cms_form f)
@@ -130,7 +140,7 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
 {
     recs_build b;
     size_t pos = 0;
-    long recno = 0;
+    long recno = 0, first_cols = 0;
     int same = 1;
     memset(&b, 0, sizeof b);
     while (pos < n) {
@@ -174,24 +184,30 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
             }
         }
         if (form == CMS_FORM_PUNCH) {
-            if (len > CMS_CARD_COLS) {
+            size_t cols = text_cols((const char *)s, len);
+            if (cols > CMS_CARD_COLS) {
                 build_free(&b);
                 return diag_at(err, DIAG_INPUT, name, recno, CMS_CARD_COLS + 1,
                                "card longer than %d columns", CMS_CARD_COLS);
             }
-            if (build_tmp(&b, CMS_CARD_COLS, err)) {
+            if (build_tmp(&b, len + CMS_CARD_COLS - cols, err)) {
                 build_free(&b);
                 return DIAG_IO;
             }
-            memset(b.tmp, ' ', CMS_CARD_COLS);
             memcpy(b.tmp, s, len);
+            memset(b.tmp + len, ' ', CMS_CARD_COLS - cols);
+            len += CMS_CARD_COLS - cols;
             s = (const unsigned char *)b.tmp;
-            len = CMS_CARD_COLS;
         }
-        if (b.r.count && len != b.r.rec[0].len)
-            same = 0;
-        if ((long)len > b.r.lrecl)
-            b.r.lrecl = (long)len;
+        {
+            long cols = (long)text_cols((const char *)s, len);
+            if (b.r.count && cols != first_cols)
+                same = 0;
+            if (!b.r.count)
+                first_cols = cols;
+            if (cols > b.r.lrecl)
+                b.r.lrecl = cols;
+        }
         if (cms_recs_append(&b.r, &b.textcap, &b.reccap, (const char *)s, len, err)) {
             build_free(&b);
             return DIAG_IO;
@@ -498,7 +514,7 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
                            const char *rec, size_t len, cms_sink sink, void *ctx,
                            const char *name, long recno, diag *err)
 {
-    size_t bad = 0, elen = len;
+    size_t bad = 0, elen = text_cols(rec, len);
     if (f == CMS_FORM_EBCDIC || f == CMS_FORM_VSTREAM) {
         elen = cms_cp_encode(cp, rec, len, NULL, &bad);
         if (elen == (size_t)-1)
@@ -512,13 +528,13 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
     case CMS_FORM_TEXT:
         sink(ctx, rec, len);
         if (recfm == 'F')
-            put_pad(sink, ctx, ' ', (size_t)lrecl - len);
+            put_pad(sink, ctx, ' ', (size_t)lrecl - elen);
         else if (len == 0)
             sink(ctx, blanks, 1);
         sink(ctx, "\n", 1);
         return 0;
     case CMS_FORM_PUNCH:
-        if (len > CMS_CARD_COLS)
+        if (elen > CMS_CARD_COLS)
             return diag_at(err, DIAG_INPUT, name, recno, CMS_CARD_COLS + 1,
                            "record longer than the %d columns of a card", CMS_CARD_COLS);
         while (len && rec[len - 1] == ' ')
