@@ -39,7 +39,7 @@ int cms_punch_split(const unsigned char *buf, size_t n, const cms_decode_opts *o
         if (i < all.count) {
             h = cms_recs_read_card(all.text + all.rec[i].off, all.rec[i].len, &next, name,
                                    (long)i + 1, err);
-            if (h == DIAG_INPUT) {
+            if (h < 0) {
                 rc = DIAG_INPUT;
                 break;
             }

@@ -121,7 +121,7 @@ int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *na
         err->col = 8;
         snprintf(err->file, sizeof err->file, "%s", name);
         snprintf(err->msg, sizeof err->msg, ":READ card: %s", msg);
-        return DIAG_INPUT;
+        return -1;
     }
     return 1;
 }
@@ -131,7 +131,7 @@ static int punch_header(const char *s, size_t len, cms_fileid *id, const char *n
                         long recno, diag *err)
 {
     int h = cms_recs_read_card(s, len, id, name, recno, err);
-    return h == DIAG_INPUT ? -DIAG_INPUT : h;
+    return h < 0 ? -DIAG_INPUT : h;
 }
 
 /* Text and punch decks: one line per record. */

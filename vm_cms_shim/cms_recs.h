@@ -79,7 +79,7 @@ void cms_recs_free(cms_recs *r);
 int cms_recs_looks_ebcdic(const unsigned char *buf, size_t n, size_t card_len);
 
 /* Reads a :READ control card from host text s (len bytes): returns 1 and
- * fills *id, 0 when s is not a :READ card, or DIAG_INPUT after an error at
+ * fills *id, 0 when s is not a :READ card, or -1 after a DIAG_INPUT error at
  * (name, recno, column 8) for a card with a bad fileid. */
 int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *name,
                        long recno, diag *err);
