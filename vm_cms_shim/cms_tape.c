@@ -232,7 +232,7 @@ int cms_tape_read(const unsigned char *buf, size_t n, const char *name, cms_tape
     for (;;) {
         const unsigned char *r;
         size_t len;
-        long long off;
+        long long off, at = (long long)a.pos;
         int k = cms_aws_next(&a, &r, &len, &off, err);
         if (k < 0) {
             rc = err->status;
@@ -243,8 +243,7 @@ int cms_tape_read(const unsigned char *buf, size_t n, const char *name, cms_tape
                 break;
             continue;
         }
-        off = (long long)a.pos;
-        if ((rc = dump_open_check(&t, off, k == CMS_AWS_MARK ? "tape mark" : "end of tape", err)) ||
+        if ((rc = dump_open_check(&t, at, k == CMS_AWS_MARK ? "tape mark" : "end of tape", err)) ||
             (rc = plc_finish(&t, err)) || k == CMS_AWS_END)
             break;
     }
