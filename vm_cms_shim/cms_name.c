@@ -3,6 +3,7 @@
 #include "util/mem.h"
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 static int name_path(const char *arg, cms_name *n, diag *err)
 {
@@ -18,8 +19,14 @@ int cms_name_input(const cms_disks *d, const char *arg, cms_name *n, diag *err)
     cms_fileid id, found;
     char *path = NULL;
     int rc;
-    if (!cms_fileid_is_fileid(arg))
+    if (!cms_fileid_is_fileid(arg)) {
+        /* "RAY DATA A9": meant as a fileid unless such a host file exists */
+        if (!strchr(arg, '/') && strchr(arg, ' ') && access(arg, F_OK) != 0) {
+            cms_fileid_parse(arg, &id, err);
+            return DIAG_INPUT;
+        }
         return name_path(arg, n, err);
+    }
     cms_fileid_parse(arg, &id, err);
     if ((rc = cms_disks_find(d, &id, &path, &found, err)))
         return rc;

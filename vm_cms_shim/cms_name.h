@@ -17,8 +17,10 @@ typedef struct cms_name {
 } cms_name;
 
 /* Resolves an existing input file. Errors: CMS RCs 20/24/28/36 (DIAG_INPUT,
- * err->rc set) for fileids; host paths are not checked here (opening them
- * reports). Fills *n on success; release with cms_name_free. */
+ * err->rc set) for fileids, also for blank-separated words without '/' that
+ * are no valid fileid and no existing host file ("RAY DATA A9" -> RC 24);
+ * host paths are not checked here (opening them reports). Fills *n on
+ * success; release with cms_name_free. */
 int cms_name_input(const cms_disks *d, const char *arg, cms_name *n, diag *err);
 
 /* Resolves an output name: a fileid goes to its disk directory (an existing
