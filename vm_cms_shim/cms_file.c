@@ -69,8 +69,7 @@ int cms_file_read(cms_file *f, long recno, const char **rec, size_t *len)
     long i = recno > 0 ? recno : f->pos + 1;
     if (f->writing || i < 1 || (unsigned long)i > f->recs.count)
         return CMS_RC_EOF;
-    *rec = f->recs.text ? f->recs.text + f->recs.rec[i - 1].off : "";
-    *len = f->recs.rec[i - 1].len;
+    *rec = cms_recs_at(&f->recs, (size_t)i - 1, len);
     f->pos = i;
     return 0;
 }

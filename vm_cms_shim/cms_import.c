@@ -32,11 +32,14 @@ static int import_write(import_ctx *c, const cms_fileid *src, const cms_recs *r,
     cms_fileid_format(&id, name, sizeof name);
     if ((rc = cms_file_open_write(&f, c->d, name, r->recfm, lrecl, NULL, err)))
         return rc;
-    for (i = 0; i < r->count; i++)
-        if ((rc = cms_file_write(f, r->text + r->rec[i].off, r->rec[i].len, err))) {
+    for (i = 0; i < r->count; i++) {
+        size_t len;
+        const char *rec = cms_recs_at(r, i, &len);
+        if ((rc = cms_file_write(f, rec, len, err))) {
             cms_file_abort(f);
             return rc;
         }
+    }
     if ((rc = cms_file_close(f, err)))
         return rc;
     c->files++;

@@ -37,8 +37,9 @@ int cms_punch_split(const unsigned char *buf, size_t n, const cms_decode_opts *o
         cms_fileid next;
         int h = 0;
         if (i < all.count) {
-            h = cms_recs_read_card(all.text + all.rec[i].off, all.rec[i].len, &next, name,
-                                   (long)i + 1, err);
+            size_t len;
+            const char *rec = cms_recs_at(&all, i, &len);
+            h = cms_recs_read_card(rec, len, &next, name, (long)i + 1, err);
             if (h < 0) {
                 rc = DIAG_INPUT;
                 break;
@@ -55,9 +56,11 @@ int cms_punch_split(const unsigned char *buf, size_t n, const cms_decode_opts *o
                 break;
             }
             memset(&part, 0, sizeof part);
-            for (k = first; k < i && !rc; k++)
-                rc = cms_recs_append(&part, &textcap, &reccap, all.text + all.rec[k].off,
-                                     all.rec[k].len, err);
+            for (k = first; k < i && !rc; k++) {
+                size_t len;
+                const char *rec = cms_recs_at(&all, k, &len);
+                rc = cms_recs_append(&part, &textcap, &reccap, rec, len, err);
+            }
             part.recfm = 'F';
             part.lrecl = CMS_CARD_COLS;
             part.form = all.form;

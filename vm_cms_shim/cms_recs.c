@@ -38,6 +38,12 @@ void cms_recs_free(cms_recs *r)
     memset(r, 0, sizeof *r);
 }
 
+const char *cms_recs_at(const cms_recs *r, size_t i, size_t *len)
+{
+    *len = r->rec[i].len;
+    return r->text ? r->text + r->rec[i].off : "";
+}
+
 int cms_recs_append(cms_recs *r, size_t *textcap, size_t *reccap,
                     const char *data, size_t len, diag *err)
 {

@@ -74,6 +74,10 @@ int cms_recs_from_stream(const unsigned char *s, size_t n, char recfm, long lrec
 
 void cms_recs_free(cms_recs *r);
 
+/* Record i (0-based, < r->count) and its length; never a null pointer, also
+ * when every record is empty and no text was stored. */
+const char *cms_recs_at(const cms_recs *r, size_t i, size_t *len);
+
 /* 1 if buf looks like EBCDIC cards of card_len bytes (the auto-detection
  * rule of cms_recs_decode), else 0. */
 int cms_recs_looks_ebcdic(const unsigned char *buf, size_t n, size_t card_len);
