@@ -126,7 +126,7 @@ int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *na
         err->line = recno;
         err->col = 8;
         snprintf(err->file, sizeof err->file, "%s", name);
-        snprintf(err->msg, sizeof err->msg, ":READ card: %s", msg);
+        snprintf(err->msg, sizeof err->msg, ":READ card: %.480s", msg);
         return -1;
     }
     return 1;
