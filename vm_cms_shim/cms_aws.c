@@ -18,7 +18,8 @@ int cms_aws_detect(const unsigned char *buf, size_t n)
         return 0;
     if (buf[4] == AWS_MARK)
         return cur == 0;
-    return (buf[4] == (AWS_SOR | AWS_EOR) || buf[4] == AWS_SOR) && cur > 0 && cur <= n - AWS_HDR;
+    /* other flag bits are let through here so the reader can name them */
+    return (buf[4] & AWS_SOR) && !(buf[4] & AWS_MARK) && cur > 0 && cur <= n - AWS_HDR;
 }
 
 void cms_aws_init(cms_aws *a, const unsigned char *buf, size_t n, const char *name)
@@ -62,6 +63,12 @@ int cms_aws_next(cms_aws *a, const unsigned char **rec, size_t *len, long long *
         cur = h[0] | ((size_t)h[1] << 8);
         prev = h[2] | ((size_t)h[3] << 8);
         f1 = h[4];
+        if (f1 & ~(unsigned)(AWS_SOR | AWS_EOR | AWS_MARK)) {
+            diag_offset(err, DIAG_INPUT, a->name, (long long)a->pos,
+                        "AWS block flags X'%02X' are not plain AWS (compressed HET images are "
+                        "not read: copy the tape to an uncompressed AWS image first)", f1);
+            return -1;
+        }
         if (prev != a->prev) {
             diag_offset(err, DIAG_INPUT, a->name, (long long)a->pos,
                         "AWS header: previous length %zu, but the previous block held %zu bytes "

@@ -396,6 +396,19 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
         return diag_at(err, DIAG_USAGE, name, 0, 0, "LRECL %ld is outside 1..%d", lrecl, CMS_LRECL_MAX);
     if (n > (size_t)CMS_FILE_MAX_BYTES)
         return diag_at(err, DIAG_INPUT, name, 0, 0, "file larger than %ld bytes", CMS_FILE_MAX_BYTES);
+    if (form != CMS_FORM_VSTREAM && form != CMS_FORM_RDW) {
+        static const unsigned char cms_card[4] = {0x02, 0xC3, 0xD4, 0xE2};
+        static const unsigned char netdata[7] = {0xE0, 0xC9, 0xD5, 0xD4, 0xD9, 0xF0, 0xF1};
+        if (n >= 4 && memcmp(buf, cms_card, 4) == 0)
+            return diag_offset(err, DIAG_INPUT, name, 0,
+                               "cards starting X'02' CMS: a DISK DUMP deck or raw CMS tape blocks; "
+                               "DISK DUMP decks are not read (their card layout is unconfirmed): "
+                               "restore it on CMS with DISK LOAD and send the file by PUNCH or TAPE DUMP");
+        if (n >= 8 && memcmp(buf + 1, netdata, 7) == 0)
+            return diag_offset(err, DIAG_INPUT, name, 0,
+                               "a NETDATA deck (SENDFILE/TRANSMIT): not read; RECEIVE it on CMS "
+                               "and send the file by PUNCH or TAPE DUMP");
+    }
     if (form == CMS_FORM_AUTO) {
         unsigned ev = 0;
         int v, rdw;

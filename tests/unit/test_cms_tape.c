@@ -411,6 +411,40 @@ static void test_cms_punch_two_files(void **state)
     tb_free(&eb);
 }
 
+static void test_cms_punch_rejects_unread_decks(void **state)
+{
+    tbuf b = {0};
+    pgot g;
+    diag e;
+    (void)state;
+    tb_put(&b, "\x02\xC3\xD4\xE2\x40", 5);
+    tb_fill(&b, 0x40, 75);
+    memset(&g, 0, sizeof g);
+    diag_init(&e);
+    assert_int_equal(cms_punch_split(b.p, b.n, NULL, "dd.ebc", pcollect, &g, NULL, &e), DIAG_INPUT);
+    expect_diag(&e, "dd.ebc: offset 0: error: cards starting X'02' CMS: a DISK DUMP deck or raw CMS "
+                    "tape blocks; DISK DUMP decks are not read (their card layout is unconfirmed): "
+                    "restore it on CMS with DISK LOAD and send the file by PUNCH or TAPE DUMP");
+    b.n = 0;
+    tb_put(&b, "\x20\xE0\xC9\xD5\xD4\xD9\xF0\xF1", 8);
+    tb_fill(&b, 0x40, 72);
+    diag_init(&e);
+    assert_int_equal(cms_punch_split(b.p, b.n, NULL, "nd.ebc", pcollect, &g, NULL, &e), DIAG_INPUT);
+    expect_diag(&e, "nd.ebc: offset 0: error: a NETDATA deck (SENDFILE/TRANSMIT): not read; RECEIVE "
+                    "it on CMS and send the file by PUNCH or TAPE DUMP");
+    /* a compressed HET block */
+    b.n = 0;
+    t_aws_prev = 0;
+    tb_aws_record(&b, (const unsigned char *)"\x02\xC3\xD4\xE2\x40", 5);
+    b.p[4] = 0xA1;
+    assert_true(cms_aws_detect(b.p, b.n));
+    diag_init(&e);
+    assert_int_equal(cms_tape_read(b.p, b.n, "x.het", collect, NULL, NULL, &e), DIAG_INPUT);
+    expect_diag(&e, "x.het: offset 0: error: AWS block flags X'A1' are not plain AWS (compressed HET "
+                    "images are not read: copy the tape to an uncompressed AWS image first)");
+    tb_free(&b);
+}
+
 /* ---- import ------------------------------------------------------------ */
 
 typedef struct report_log {
@@ -530,6 +564,7 @@ int main(void)
         cmocka_unit_test(test_cms_tape_vmfplc2),
         cmocka_unit_test(test_cms_tape_errors),
         cmocka_unit_test(test_cms_punch_two_files),
+        cmocka_unit_test(test_cms_punch_rejects_unread_decks),
         cmocka_unit_test(test_cms_import_tape_to_disk),
         cmocka_unit_test(test_cms_oom_sweep_import),
     };
