@@ -12,8 +12,8 @@ static const char usage_text[] =
     "usage: maprt cms import FILE [--to L] [--tape|--punch] [--read-as FORM] [--cp CP] [--disk L=DIR ...]\n"
     "       maprt cms list [L|*] [--read-as FORM] [--cp CP] [--disk L=DIR ...]\n"
     "       maprt cms type NAME [--read-as FORM] [--cp CP] [--disk L=DIR ...]\n"
-    "       maprt cms export NAME OUT [--form text|ebcdic|vstream|punch] [--cp CP]\n"
-    "                        [--recfm F|V] [--lrecl N] [--read-as FORM] [--read-cp CP] [--disk L=DIR ...]\n"
+    "       maprt cms export NAME OUT [--form FORM] [--cp CP] [--recfm F|V] [--lrecl N]\n"
+    "                        [--read-as FORM] [--read-cp CP] [--disk L=DIR ...]\n"
     "\n"
     "VM/CMS files on the host. NAME and OUT are a CMS fileid such as 'FIG1 SCENE A'\n"
     "(fn ft [fm]; fm defaults to A1, '*' searches disks A..Z) or a host path (anything\n"
@@ -22,25 +22,51 @@ static const char usage_text[] =
     "A file 'fn ft fm' is DIR/fn.ft, matched case-insensitively (new files: lower case).\n"
     "\n"
     "  import   unpack an AWS tape image (CMS TAPE DUMP or VMFPLC2 files) or a punch\n"
-    "           deck with :READ cards (ASCII or EBCDIC) onto disk L (--to, default A) as\n"
-    "           host text files; prints each fileid, RECFM, LRECL and record count.\n"
-    "           --tape / --punch force the container (default: detected).\n"
+    "           deck with :READ cards (ASCII or EBCDIC) onto a disk as host text files;\n"
+    "           prints each fileid, RECFM, LRECL and record count.\n"
     "  list     like LISTFILE: fileid, RECFM, LRECL, records and host form of every\n"
     "           file on disk L (default A; '*' = every accessed disk).\n"
     "  type     print a file's records as text lines (trailing blanks removed).\n"
-    "  export   write a file in a form a CMS system can read back: text (lines),\n"
-    "           ebcdic (fixed cards of LRECL bytes, for a Hercules reader in ebcdic\n"
-    "           mode), vstream (2-byte length + record, CMS V stream) or punch (ASCII\n"
-    "           deck with a :READ card, for READCARD). RECFM/LRECL default to the\n"
-    "           source's; --cp is the EBCDIC code page written (default 1047).\n"
+    "  export   write a file in a form a CMS system can read back.\n"
     "\n"
-    "Reading detects the form: text lines, punch deck (:READ first), ebcdic cards,\n"
-    "vstream, or rdw (z/OS 4-byte RDW stream); --read-as FORM forces one. EBCDIC\n"
-    "code page (--cp / --read-cp 037|1047): detected from the bracket and caret codes\n"
-    "where they decide it, else 1047.\n"
+    "options:\n"
+    "  --disk L=DIR    disk L is directory DIR (repeatable; overrides MAPRT_DISK_L)\n"
+    "  --to L          import: the disk written to (default A)\n"
+    "  --tape, --punch import: FILE is an AWS tape / a punch deck (default: detected)\n"
+    "  --read-as FORM  read the input as text, punch (text led by a :READ card), ebcdic\n"
+    "                  (80-byte EBCDIC cards), vstream (CMS V stream: 2-byte length +\n"
+    "                  record) or rdw (z/OS 4-byte RDW stream); default: detected.\n"
+    "                  import takes auto, punch or ebcdic\n"
+    "  --cp CP         EBCDIC code page, 037 or 1047: of the input for import, list and\n"
+    "                  type (default: detected from the bracket and caret codes where they\n"
+    "                  decide it, else 1047); of the output for export (default 1047)\n"
+    "  --read-cp CP    export: code page of the input (default: detected, as above)\n"
+    "  --form FORM     export: text (lines), ebcdic (cards of LRECL bytes, for a Hercules\n"
+    "                  reader in ebcdic mode), vstream, or punch (ASCII deck with a :READ\n"
+    "                  card, for READCARD); default text\n"
+    "  --recfm F|V     export: record format written (default: the input's)\n"
+    "  --lrecl N       export: record length written, 1-65535 (default: the input's)\n"
+    "\n"
     "Errors carry CMS return codes: 20 invalid character in fileid, 24 invalid\n"
     "filemode, 28 file not found, 36 disk not accessed.\n"
     "Exit status: 0 ok, 1 bad input (incl. those RCs), 2 usage, 3 I/O failure.\n";
+
+/* Which options each action takes (bit per option, see opt_names). */
+static const char *const opt_names[] = {"--disk", "--read-as", "--form", "--cp", "--read-cp",
+                                        "--recfm", "--lrecl", "--to", "--tape", "--punch"};
+enum { OPT_DISK = 1, OPT_READ_AS = 2, OPT_FORM = 4, OPT_CP = 8, OPT_READ_CP = 16,
+       OPT_RECFM = 32, OPT_LRECL = 64, OPT_TO = 128, OPT_TAPE = 256, OPT_PUNCH = 512 };
+
+static unsigned action_opts(const char *action)
+{
+    if (!strcmp(action, "import"))
+        return OPT_DISK | OPT_READ_AS | OPT_CP | OPT_TO | OPT_TAPE | OPT_PUNCH;
+    if (!strcmp(action, "list") || !strcmp(action, "type"))
+        return OPT_DISK | OPT_READ_AS | OPT_CP;
+    if (!strcmp(action, "export"))
+        return OPT_DISK | OPT_READ_AS | OPT_FORM | OPT_CP | OPT_READ_CP | OPT_RECFM | OPT_LRECL;
+    return 0;
+}
 
 /* Options shared by the subcommands. */
 typedef struct cms_cli {
@@ -83,6 +109,10 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
         return cli_fail(&d);
     for (i = 2; i < argc; i++) {
         const char *a = argv[i], *v;
+        unsigned k;
+        for (k = 0; k < sizeof opt_names / sizeof opt_names[0]; k++)
+            if (!strcmp(a, opt_names[k]) && !(action_opts(argv[1]) & (1u << k)))
+                return cli_usage_error("cms", "option %s does not apply to '%s'", a, argv[1]);
         if (!strcmp(a, "--disk") || !strcmp(a, "--read-as") || !strcmp(a, "--form") ||
             !strcmp(a, "--cp") || !strcmp(a, "--read-cp") || !strcmp(a, "--recfm") ||
             !strcmp(a, "--lrecl") || !strcmp(a, "--to")) {
@@ -310,6 +340,8 @@ int cmd_cms(int argc, char **argv)
         fputs(usage_text, stderr);
         return CLI_USAGE;
     }
+    if (!action_opts(argv[1]))
+        return cli_usage_error("cms", "unknown action '%s' (import, list, type, export)", argv[1]);
     memset(&c, 0, sizeof c);
     cms_disks_init(&c.disks);
     if ((rc = cms_cli_parse(&c, argc, argv)) == 0) {
@@ -319,10 +351,8 @@ int cmd_cms(int argc, char **argv)
             rc = cms_do_list(&c);
         else if (!strcmp(argv[1], "type"))
             rc = cms_do_type(&c);
-        else if (!strcmp(argv[1], "export"))
-            rc = cms_do_export(&c);
         else
-            rc = cli_usage_error("cms", "unknown action '%s' (import, list, type, export)", argv[1]);
+            rc = cms_do_export(&c);
     }
     cms_disks_free(&c.disks);
     return rc;

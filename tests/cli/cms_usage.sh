@@ -8,7 +8,7 @@ for opt in --disk --to --tape --punch --read-as --cp --read-cp --form --recfm --
 done
 for args in "" "frob" "type" "type A B C D E" "type X --cp 500" "type X --read-as cards" \
             "export A B --form rdw" "list --disk 1=x" "import --to 9 f" "type X --bogus" \
-            "export A B --lrecl 0"; do
+            "export A B --lrecl 0" "type X --to B" "list --form ebcdic" "import f --recfm F"; do
   # shellcheck disable=SC2086
   "$MAPRT" cms $args >/dev/null 2>&1; rc=$?
   [ $rc -eq 2 ] || { echo "'maprt cms $args' exited $rc, expected 2"; exit 1; }
