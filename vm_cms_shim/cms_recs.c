@@ -88,9 +88,9 @@ static int build_tmp(recs_build *b, size_t need, diag *err)
     return 0;
 }
 
-/* Decodes one EBCDIC record through cp and appends it. recno/col_base place
- * a bad byte: for cards the line is the card and the column the byte;
- * for streams (col_base < 0) the error is a byte offset. */
+/* Decodes one EBCDIC record through cp and appends it. A bad byte is placed
+ * by (recno, column) for cards (offset < 0), else by its byte offset in the
+ * stream (offset = where the record's data starts). */
 static int build_ebcdic(recs_build *b, const cms_cp *cp, const unsigned char *data, size_t len,
                         const char *name, long recno, long long offset, diag *err)
 {
@@ -116,17 +116,15 @@ int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *na
 {
     char card[CMS_CARD_COLS];
     size_t n = len < CMS_CARD_COLS ? len : CMS_CARD_COLS;
+    diag sub;
     if (len < 5 || memcmp(s, ":READ", 5) != 0 || (len > 5 && s[5] != ' '))
         return 0;
     memset(card, ' ', sizeof card);
     memcpy(card, s, n);
-    if (cms_fileid_from_fields(card + 7, card + 16, card + 25, id, err)) {
-        char msg[sizeof err->msg];
-        memcpy(msg, err->msg, sizeof msg);
-        err->line = recno;
-        err->col = 8;
-        snprintf(err->file, sizeof err->file, "%s", name);
-        snprintf(err->msg, sizeof err->msg, ":READ card: %.480s", msg);
+    diag_init(&sub);
+    if (cms_fileid_from_fields(card + 7, card + 16, card + 25, id, &sub)) {
+        diag_at(err, DIAG_INPUT, name, recno, 8, ":READ card: %.480s", sub.msg);
+        err->rc = sub.rc;
         return -1;
     }
     return 1;
@@ -167,7 +165,7 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
             build_free(&b);
             return diag_at(err, DIAG_INPUT, name, recno, (long)(z - s) + 1,
                            "NUL byte: not a text file, nor a valid V or RDW stream "
-                           "(choose the form with --form)");
+                           "(choose the form with --read-as)");
         }
         if (!raw && (form == CMS_FORM_PUNCH || (!forced && recno == 1))) {
             cms_fileid id;
@@ -294,8 +292,8 @@ static int decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_i
 }
 
 /* Walks a V (rdw = 0) or RDW (rdw = 1) length chain. With b == NULL only
- * checks that the chain covers buf exactly and returns 1/0 without
- * diagnostics, OR-ing code-page evidence into *ev. Otherwise decodes into b
+ * checks that the chain covers buf exactly with EBCDIC text records and
+ * returns 1/0 without diagnostics, OR-ing code-page evidence into *ev. Otherwise decodes into b
  * and returns 0 or a status. */
 static int walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
                       recs_build *b, const cms_cp *cp, const char *name, diag *err)
@@ -335,6 +333,11 @@ static int walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
                                recno, len, n - pos - hdr);
         }
         if (!b) {
+            /* detection also wants EBCDIC text: a text file's line ends fail here */
+            size_t i;
+            for (i = 0; i < len; i++)
+                if (buf[pos + hdr + i] < 0x40 || buf[pos + hdr + i] == 0xFF)
+                    return 0;
             *ev |= cms_cp_scan(buf + pos + hdr, len);
         } else {
             if (build_ebcdic(b, cp, buf + pos + hdr, len, name, recno, (long long)(pos + hdr), err))
@@ -419,7 +422,7 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
         if (v && rdw)
             return diag_at(err, DIAG_INPUT, name, 0, 0,
                            "the bytes read both as a CMS V stream and as an RDW stream "
-                           "(choose with --form vstream or --form rdw)");
+                           "(choose with --read-as vstream or --read-as rdw)");
         if (v || rdw)
             return decode_chain(buf, n, rdw, cp, name, out, err);
         return decode_text(buf, n, CMS_FORM_TEXT, 0, raw, name, out, err);

@@ -58,7 +58,8 @@ typedef struct cms_recs {
  * give byte offsets). Auto-detection: EBCDIC cards when n is a multiple of
  * the card length and every byte is at least X'40' with some above X'7F';
  * else an RDW or V stream when the length chain covers the buffer exactly
- * (both at once is an error asking for --form); else text. RECFM of text is F
+ * with EBCDIC text records
+ * (both at once is an error asking for --read-as); else text. RECFM of text is F
  * when every line has the same length, else V; LRECL the longest. A punch
  * deck is F 80; a second :READ card is an error (import splits decks).
  * Returns 0 or DIAG_INPUT / DIAG_IO; *out is written only on success. */

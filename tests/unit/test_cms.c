@@ -340,7 +340,7 @@ static void test_cms_vstream_vs_rdw(void **state)
     diag_init(&e);
     assert_int_equal(cms_recs_decode(trunc, sizeof trunc, NULL, "V", &r, &e), DIAG_INPUT);
     expect_diag(&e, "V:1:1: error: NUL byte: not a text file, nor a valid V or RDW stream "
-                    "(choose the form with --form)");
+                    "(choose the form with --read-as)");
 }
 
 static void test_cms_text_forms(void **state)
