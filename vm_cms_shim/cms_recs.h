@@ -58,9 +58,9 @@ typedef struct cms_recs {
  * give byte offsets). Auto-detection: EBCDIC cards when n is a multiple of
  * the card length and every byte is at least X'40' with some above X'7F';
  * else an RDW or V stream when the length chain covers the buffer exactly
- * with EBCDIC text records
- * (both at once is an error asking for --read-as); else text. RECFM of text is F
- * when every line has the same length, else V; LRECL the longest. A punch
+ * with EBCDIC text records (both at once is an error asking for --read-as);
+ * else text. RECFM of text is F when every line has the same length, else
+ * V; LRECL the longest (in characters). A punch
  * deck is F 80; a second :READ card is an error (import splits decks).
  * Returns 0 or DIAG_INPUT / DIAG_IO; *out is written only on success. */
 int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o,
