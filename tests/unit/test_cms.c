@@ -1,11 +1,11 @@
 /* test_cms — the CMS shim's fileids, disks, code pages, record forms, record
  * file API and scene-deck recsrc, against vectors built here (EBCDIC by a
- * hand-written chart, see cms_testlib.h). */
+ * hand-written chart, see test_cms_lib.h). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <cmocka.h>
-#include "cms_testlib.h"
+#include "test_cms_lib.h"
 #include "support.h"
 #include "util/mem.h"
 #include "vm_cms_shim/cms_deck.h"

@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <cmocka.h>
-#include "cms_testlib.h"
+#include "test_cms_lib.h"
 #include "support.h"
 #include "util/mem.h"
 #include "vm_cms_shim/cms_aws.h"

@@ -1,10 +1,10 @@
-/* cms_testlib — helpers shared by the CMS shim tests: an EBCDIC encoder
+/* test_cms_lib — helpers shared by the CMS shim tests: an EBCDIC encoder
  * written out by hand from the code page charts (independent of the shim's
  * iconv tables), a growable byte buffer, AWS/tape block builders, and scratch
  * directories. Header-only (static functions) so each test binary stays one
  * .c file. */
-#ifndef CMS_TESTLIB_H
-#define CMS_TESTLIB_H
+#ifndef TEST_CMS_LIB_H
+#define TEST_CMS_LIB_H
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
