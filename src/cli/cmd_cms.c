@@ -233,9 +233,10 @@ static int cms_do_list(cms_cli *c)
         return cli_usage_error("cms", "list takes at most one disk letter");
     if (c->npos == 1) {
         const char *v = c->pos[0];
-        if (!strcmp(v, "*"))
-            lo = 'A', hi = 'Z';
-        else if (((v[0] | 0x20) >= 'a' && (v[0] | 0x20) <= 'z') && !v[1])
+        if (!strcmp(v, "*")) {
+            lo = 'A';
+            hi = 'Z';
+        } else if (((v[0] | 0x20) >= 'a' && (v[0] | 0x20) <= 'z') && !v[1])
             lo = hi = (char)(v[0] & ~0x20);
         else
             return cli_usage_error("cms", "list: '%s' is not a disk letter or '*'", v);
