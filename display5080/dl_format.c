@@ -3,6 +3,22 @@
 
 const uint8_t dl_magic[6] = {0xC4, 0xD3, 0xF5, 0xF0, 0xF8, 0xF0};
 
+const unsigned dl_format_codes[DL_FORMAT_NCODES] = {
+    DL_POLYLINE, DL_SEGMENTS, DL_FILL_RECT, DL_FILL_CIRCLE, DL_CIRCLE, DL_BEGIN_POLYGON,
+    DL_END_POLYGON, DL_TEXT, DL_VIEWPORT, DL_SCISSOR, DL_BLT, DL_NOOP, DL_LINE_TYPE,
+    DL_LINE_COLOUR, DL_INTERIOR_COLOUR, DL_LOGIC_OP, DL_PLANE_MASK, DL_LOAD_COLOURS, DL_CLEAR,
+    DL_END, DL_RUN_ROW,
+};
+
+int dl_format_slot(unsigned code)
+{
+    int i;
+    for (i = 0; i < DL_FORMAT_NCODES; i++)
+        if (dl_format_codes[i] == code)
+            return i;
+    return -1;
+}
+
 const char *dl_format_name(unsigned code)
 {
     switch (code) {

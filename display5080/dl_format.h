@@ -59,6 +59,12 @@ static inline uint32_t dl_be32(const uint8_t *p)
     return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
 }
 
+/* Every element code, in code order. */
+#define DL_FORMAT_NCODES 21
+extern const unsigned dl_format_codes[DL_FORMAT_NCODES];
+/* Index of code in dl_format_codes, or -1. */
+int dl_format_slot(unsigned code);
+
 /* Name of an element code ("polyline"), or NULL for an unknown code. */
 const char *dl_format_name(unsigned code);
 #endif
