@@ -291,8 +291,6 @@ int dl_decode(const uint8_t *buf, size_t len, const char *name, const dl_decode_
             return dl_bad(&c, "expected end-polygon after the boundary polyline");
         if (e.code == DL_END_POLYGON && polygon != 2)
             return dl_bad(&c, "end-polygon without begin-polygon and boundary");
-        if (e.code == DL_END && polygon)
-            return dl_bad(&c, "display list ends inside a polygon");
         e.in_polygon = polygon == 1;
         if (e.code == DL_BEGIN_POLYGON)
             polygon = 1;

@@ -160,7 +160,7 @@ static void test_dl_decode_malformed_errors_name_offsets(void **state)
         {27, "t.dl: offset 16: error: run-row (0x5F03): 2 runs do not match a payload of 10 bytes"},
         {28, "t.dl: offset 20: error: fill-rect (0x5004): expected the polygon's boundary polyline after begin-polygon"},
         {29, "t.dl: offset 16: error: end-polygon (0x500B): end-polygon without begin-polygon and boundary"},
-        {30, "t.dl: offset 40: error: end (0x5F02): display list ends inside a polygon"},
+        {30, "t.dl: offset 40: error: end (0x5F02): expected end-polygon after the boundary polyline"},
         {31, "t.dl: offset 20: error: 2 bytes after the end element"},
         {32, "t.dl: offset 16: error: end (0x5F02): element takes no payload"},
         {33, "t.dl: offset 16: error: clear (0x5F01): payload must be one 16-bit word"},
