@@ -37,8 +37,9 @@ static void dl_egl_close(void *dev)
         eglMakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(e->dpy, e->ctx);
     }
-    if (e->dpy != EGL_NO_DISPLAY)
-        eglTerminate(e->dpy);
+    /* The display is not terminated: EGL displays are per-process, and
+     * eglTerminate would unload Mesa's driver only to load it again for the
+     * next list. It stays initialised until the process ends. */
     mem_free(e);
 }
 
@@ -72,10 +73,8 @@ static int dl_egl_open(int width, int height, void **dev, diag *err)
     e->dpy = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
     if (e->dpy == EGL_NO_DISPLAY)
         return dl_egl_fail(e, "no surfaceless EGL display", err);
-    if (!eglInitialize(e->dpy, &major, &minor)) {
-        e->dpy = EGL_NO_DISPLAY;
+    if (!eglInitialize(e->dpy, &major, &minor))
         return dl_egl_fail(e, "cannot initialise the surfaceless EGL display", err);
-    }
     ext = eglQueryString(e->dpy, EGL_EXTENSIONS);
     if (!ext || !strstr(ext, "EGL_KHR_surfaceless_context") || !strstr(ext, "EGL_KHR_no_config_context")) {
         dl_egl_close(e);
