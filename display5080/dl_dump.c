@@ -19,25 +19,21 @@ typedef struct dl_dump_ctx {
 static void dl_dump_add(dl_dump_ctx *c, const char *fmt, ...)
 {
     va_list ap;
+    void *p = c->line;
     int n;
-    char small[128];
     va_start(ap, fmt);
-    n = vsnprintf(small, sizeof small, fmt, ap);
+    n = vsnprintf(NULL, 0, fmt, ap);
     va_end(ap);
     if (n < 0 || c->oom)
         return;
-    if ((size_t)n >= sizeof small) {   /* not expected: formats here are short */
-        n = (int)sizeof small - 1;
+    if (mem_grow(&p, &c->cap, c->len + (size_t)n + 1, 1)) {
+        c->oom = 1;
+        return;
     }
-    {
-        void *p = c->line;
-        if (mem_grow(&p, &c->cap, c->len + (size_t)n + 1, 1)) {
-            c->oom = 1;
-            return;
-        }
-        c->line = p;
-    }
-    memcpy(c->line + c->len, small, (size_t)n);
+    c->line = p;
+    va_start(ap, fmt);
+    vsnprintf(c->line + c->len, (size_t)n + 1, fmt, ap);
+    va_end(ap);
     c->len += (size_t)n;
 }
 

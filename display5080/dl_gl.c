@@ -6,7 +6,8 @@
 #include <math.h>
 #include <string.h>
 
-/* GL constants used here (values fixed by the GL specification). */
+/* GL constants used here (values fixed by the GL specification), spelled
+ * out so that this file builds where no GL headers are installed. */
 enum {
     GLc_PROJECTION = 0x1701, GLc_MODELVIEW = 0x1700, GLc_DITHER = 0x0BD0,
     GLc_BLEND = 0x0BE2, GLc_MULTISAMPLE = 0x809D, GLc_SCISSOR_TEST = 0x0C11,
