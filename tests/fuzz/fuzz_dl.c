@@ -1,0 +1,34 @@
+/* fuzz_dl — libFuzzer target for the DL5080 parser and everything behind it:
+ * validation, the disassembler and the software 5081 interpreter (with a
+ * small work budget so slow inputs end as errors, not timeouts). */
+#include <stddef.h>
+#include <stdint.h>
+#include "display5080/dl_dump.h"
+#include "display5080/dl_render.h"
+#include "display5080/dl_validate.h"
+
+static void fuzz_dl_sink(void *ctx, const void *data, size_t len)
+{
+    (void)ctx;
+    (void)data;
+    (void)len;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    dl_validate_summary s;
+    dl_render_opts ro = {0, 1u << 22};
+    dl_frame f;
+    diag err;
+    diag_init(&err);
+    if (dl_validate(data, size, "fuzz", &s, &err) != 0)
+        return 0;
+    diag_init(&err);
+    dl_dump(data, size, "fuzz", fuzz_dl_sink, NULL, &err);
+    diag_init(&err);
+    if (dl_render(data, size, "fuzz", &dl_backend_png, &ro, &f, &err) == 0)
+        dl_frame_free(&f);
+    return 0;
+}
