@@ -1,0 +1,223 @@
+/* scene_cur — item cursor and operand checks for scene statements
+ * (see scene_cur.h). */
+#include "scene/scene_cur.h"
+#include <ctype.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Words of the language that cannot be names, so that an operand list such
+ * as "A TRANSLATE 1 0 0 B" has exactly one reading. Sorted for bsearch. */
+static const char *const scene_cur_words[] = {
+    "AMBIENT", "ATTR", "AXIS", "BACKGROUND", "BLOCK", "COLOR", "CONE",
+    "CYLINDER", "DEPTH", "DIFF", "DIFFERENCE", "DIFFUSE", "EXPONENT",
+    "EYE", "FOV", "HALFSPACE", "INF", "INFINITY", "INTENSITY", "INTER",
+    "INTERSECT", "INTERSECTION", "IOR", "LIGHT", "LOOK", "LOOKAT", "MATRIX", "MIRROR", "NAN",
+    "OBJECT", "ROTATE", "SCALE", "SIZE", "SPECULAR", "SPHERE", "TRANSLATE",
+    "TRANSMIT", "UNION", "UP"
+};
+
+static int scene_cur_cmp(const void *key, const void *elem)
+{
+    return strcmp((const char *)key, *(const char *const *)elem);
+}
+
+int scene_cur_reserved(const char *word)
+{
+    return bsearch(word, scene_cur_words,
+                   sizeof scene_cur_words / sizeof scene_cur_words[0],
+                   sizeof scene_cur_words[0], scene_cur_cmp) != NULL;
+}
+
+void scene_cur_init(scene_cur *c, const scene_lex_stmt *st, const char *file,
+                    const char *what, diag *err)
+{
+    c->st = st;
+    c->pos = 1;               /* item 0 is the keyword */
+    c->file = file;
+    c->what = what;
+    c->err = err;
+}
+
+const scene_lex_tok *scene_cur_peek(const scene_cur *c)
+{
+    return c->pos < c->st->ntok ? &c->st->tok[c->pos] : NULL;
+}
+
+int scene_cur_at_end(const scene_cur *c)
+{
+    return c->pos >= c->st->ntok;
+}
+
+int scene_cur_is(const scene_lex_tok *t, const char *keyword)
+{
+    size_t i;
+    if (!t)
+        return 0;
+    for (i = 0; i < t->len; i++)
+        if (toupper((unsigned char)t->text[i]) != (unsigned char)keyword[i])
+            return 0;
+    return keyword[i] == '\0';
+}
+
+int scene_cur_accept(scene_cur *c, const char *keyword)
+{
+    if (!scene_cur_is(scene_cur_peek(c), keyword))
+        return 0;
+    c->pos++;
+    return 1;
+}
+
+int scene_cur_numeric(const scene_lex_tok *t)
+{
+    char ch = t ? t->text[0] : '\0';
+    return isdigit((unsigned char)ch) || ch == '+' || ch == '-' || ch == '.';
+}
+
+int scene_cur_error(scene_cur *c, const scene_lex_tok *t, const char *fmt, ...)
+{
+    char msg[400];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (t)
+        return diag_at(c->err, DIAG_INPUT, c->file, t->line, t->col, "%s: %s", c->what, msg);
+    return diag_at(c->err, DIAG_INPUT, c->file, c->st->end_line, c->st->end_col,
+                   "%s: %s", c->what, msg);
+}
+
+/* 1 if s is [+-] digits [. digits] [E [+-] digits] with a digit in the
+ * mantissa (a leading or trailing '.' is allowed: ".5", "2."). */
+static int scene_cur_syntax(const char *s)
+{
+    int digits = 0;
+    if (*s == '+' || *s == '-')
+        s++;
+    while (isdigit((unsigned char)*s)) { s++; digits++; }
+    if (*s == '.') {
+        s++;
+        while (isdigit((unsigned char)*s)) { s++; digits++; }
+    }
+    if (!digits)
+        return 0;
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-')
+            s++;
+        if (!isdigit((unsigned char)*s))
+            return 0;
+        while (isdigit((unsigned char)*s))
+            s++;
+    }
+    return *s == '\0';
+}
+
+/* 1 if the item spells NaN or infinity the way strtod would accept it. */
+static int scene_cur_nonfinite(const scene_lex_tok *t)
+{
+    scene_lex_tok u = *t;
+    if (u.text[0] == '+' || u.text[0] == '-') {
+        memmove(u.text, u.text + 1, u.len);
+        u.len--;
+    }
+    return scene_cur_is(&u, "NAN") || scene_cur_is(&u, "INF") ||
+           scene_cur_is(&u, "INFINITY");
+}
+
+int scene_cur_number(scene_cur *c, double *v, const scene_lex_tok **at)
+{
+    const scene_lex_tok *t = scene_cur_peek(c);
+    double d;
+    if (at)
+        *at = t;
+    if (!t)
+        return scene_cur_error(c, NULL, "missing number");
+    if (scene_cur_nonfinite(t))
+        return scene_cur_error(c, t, "%s is not a finite number", t->text);
+    if (!scene_cur_syntax(t->text))
+        return scene_cur_error(c, t, "expected a number, found %s", t->text);
+    d = strtod(t->text, NULL);   /* syntax checked: always converts fully */
+    if (!(fabs(d) <= SCENE_CUR_MAX_ABS))
+        return scene_cur_error(c, t, "%s is out of range (magnitude above 1e6)", t->text);
+    c->pos++;
+    *v = d;
+    return 0;
+}
+
+int scene_cur_numbers(scene_cur *c, double *v, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (scene_cur_number(c, &v[i], NULL))
+            return DIAG_INPUT;
+    return 0;
+}
+
+int scene_cur_int(scene_cur *c, const char *label, long lo, long hi, long *v)
+{
+    const scene_lex_tok *t;
+    double d;
+    if (scene_cur_number(c, &d, &t))
+        return DIAG_INPUT;
+    if (d != floor(d) || d < (double)lo || d > (double)hi)
+        return scene_cur_error(c, t, "%s must be a whole number from %ld to %ld",
+                               label, lo, hi);
+    *v = (long)d;
+    return 0;
+}
+
+int scene_cur_range(scene_cur *c, const char *label, double lo, double hi, double *v)
+{
+    const scene_lex_tok *t;
+    double d;
+    if (scene_cur_number(c, &d, &t))
+        return DIAG_INPUT;
+    if (d < lo || d > hi)
+        return scene_cur_error(c, t, "%s must be between %g and %g", label, lo, hi);
+    *v = d;
+    return 0;
+}
+
+static int scene_cur_namechar(char ch)
+{
+    return isalnum((unsigned char)ch) || ch == '_' || ch == '$' || ch == '#' || ch == '@';
+}
+
+int scene_cur_name(scene_cur *c, char out[SCENE_NAME_MAX + 1], const scene_lex_tok **at)
+{
+    const scene_lex_tok *t = scene_cur_peek(c);
+    char up[SCENE_LEX_COLUMNS + 1];
+    size_t i;
+    if (at)
+        *at = t;
+    if (!t)
+        return scene_cur_error(c, NULL, "missing name");
+    for (i = 0; i < t->len; i++) {
+        if (!scene_cur_namechar(t->text[i]))
+            break;
+        up[i] = (char)toupper((unsigned char)t->text[i]);
+    }
+    up[i < t->len ? 0 : t->len] = '\0';
+    if (i < t->len || !isalpha((unsigned char)t->text[0]))
+        return scene_cur_error(c, t, "bad name %s (a letter, then letters, digits or _ $ # @)",
+                               t->text);
+    if (t->len > SCENE_NAME_MAX)
+        return scene_cur_error(c, t, "name %s is longer than %d characters",
+                               t->text, SCENE_NAME_MAX);
+    if (scene_cur_reserved(up))
+        return scene_cur_error(c, t, "%s is a reserved word, not a name", t->text);
+    memcpy(out, up, t->len + 1);
+    c->pos++;
+    return 0;
+}
+
+int scene_cur_finish(scene_cur *c)
+{
+    const scene_lex_tok *t = scene_cur_peek(c);
+    if (t)
+        return scene_cur_error(c, t, "extra operand %s", t->text);
+    return 0;
+}

@@ -1,0 +1,42 @@
+/* scene_lex — card images to statements for the scene parser.
+ * Reads records from a recsrc, keeps columns 1-72 (73-80 carry sequence
+ * numbers and are ignored), drops comment cards (`*` in column 1) and blank
+ * cards, joins continued cards (a card whose last item is a lone `-`) and
+ * splits the result into blank-separated items, each with the record and
+ * column it came from. Sits between the record reader and scene_parse. */
+#ifndef SCENE_LEX_H
+#define SCENE_LEX_H
+#include <stddef.h>
+#include "util/diag.h"
+#include "util/recsrc.h"
+
+#define SCENE_LEX_COLUMNS 72       /* significant columns of a card */
+#define SCENE_LEX_MAX_ITEMS 512    /* items in one (continued) statement */
+
+typedef struct scene_lex_tok {
+    long line, col;                       /* record number, 1-based column */
+    size_t len;
+    char text[SCENE_LEX_COLUMNS + 1];     /* as written, NUL-terminated */
+} scene_lex_tok;
+
+/* One statement: its items in order; tok[0] is the keyword. */
+typedef struct scene_lex_stmt {
+    size_t ntok;
+    scene_lex_tok tok[SCENE_LEX_MAX_ITEMS];
+    long end_line, end_col;   /* just past the last item, for "missing" */
+} scene_lex_stmt;
+
+typedef struct scene_lex {
+    const recsrc *src;
+    long recno;               /* records read so far */
+} scene_lex;
+
+void scene_lex_init(scene_lex *lx, const recsrc *src);
+
+/* Reads the next statement into *st. Returns 1 with a statement, 0 at the
+ * end of the deck, or DIAG_INPUT / DIAG_IO (-1 from the recsrc is reported
+ * as DIAG_IO) with err filled. Errors: a character outside printable ASCII,
+ * a statement of more than SCENE_LEX_MAX_ITEMS items, a continuation at the
+ * end of the deck. */
+int scene_lex_next(scene_lex *lx, scene_lex_stmt *st, diag *err);
+#endif

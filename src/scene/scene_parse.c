@@ -1,0 +1,719 @@
+/* scene_parse — scene deck (card images) to the scene model.
+ * Data flow: recsrc records -> scene_lex statements -> a handler per
+ * statement keyword (tables below) -> definitions, lights, attributes and the
+ * view in a scene being built -> each OBJECT expanded at once into primitive
+ * copies and binary CSG nodes (sizes checked with saturating counts before
+ * any allocation) -> completeness checks -> the finished scene.
+ * The language is documented in docs/scene-format.md. */
+#include "scene/scene_parse.h"
+#include <math.h>
+#include <string.h>
+#include "scene/scene_xform.h"
+#include "util/mem.h"
+
+/* ---- shared helpers ------------------------------------------------------ */
+
+static scene_loc scene_parse_loc(const scene_lex_tok *t)
+{
+    scene_loc l;
+    l.line = t->line;
+    l.col = t->col;
+    return l;
+}
+
+static int scene_parse_oom(scene_parser *p, const scene_lex_tok *t)
+{
+    return diag_at(p->err, DIAG_IO, p->file, t ? t->line : 0, t ? t->col : 0,
+                   "out of memory");
+}
+
+int scene_parse_find_solid(const scene_parser *p, const char *name)
+{
+    return scene_names_find(&p->names, SCENE_NAMES_SOLID, name);
+}
+
+int scene_parse_attr_ref(scene_parser *p, scene_cur *c, int *attr)
+{
+    char name[SCENE_NAME_MAX + 1];
+    const scene_lex_tok *t;
+    int i;
+    if (scene_cur_name(c, name, &t))
+        return DIAG_INPUT;
+    i = scene_names_find(&p->names, SCENE_NAMES_ATTR, name);
+    if (i < 0)
+        return scene_cur_error(c, t, "%s is used before it is defined", t->text);
+    *attr = i;
+    return 0;
+}
+
+int scene_parse_tail(scene_parser *p, scene_cur *c, double m[16], int *attr)
+{
+    for (;;) {
+        const scene_lex_tok *t = scene_cur_peek(c);
+        if (scene_xform_starts(c)) {
+            if (scene_xform_parse(c, m))
+                return DIAG_INPUT;
+        } else if (scene_cur_is(t, "ATTR")) {
+            if (*attr >= 0)
+                return scene_cur_error(c, t, "ATTR given twice");
+            c->pos++;
+            if (scene_parse_attr_ref(p, c, attr))
+                return DIAG_INPUT;
+        } else {
+            return 0;
+        }
+    }
+}
+
+/* Reads a new solid's name and checks it is not yet defined. */
+static int scene_parse_new_name(scene_parser *p, scene_cur *c, char name[SCENE_NAME_MAX + 1],
+                                const scene_lex_tok **at)
+{
+    int i;
+    if (scene_cur_name(c, name, at))
+        return DIAG_INPUT;
+    i = scene_parse_find_solid(p, name);
+    if (i >= 0)
+        return scene_cur_error(c, *at, "%s is already defined on record %ld",
+                               (*at)->text, p->defs[i].loc.line);
+    return 0;
+}
+
+/* Appends def (name already checked) to the definitions and the name table. */
+static int scene_parse_add_def(scene_parser *p, scene_cur *c, const scene_lex_tok *at,
+                               const scene_parse_def *def)
+{
+    if (p->ndefs >= SCENE_PARSE_MAX_DEFS)
+        return scene_cur_error(c, at, "more than %d solids", SCENE_PARSE_MAX_DEFS);
+    if (mem_grow((void **)&p->defs, &p->cap_defs, p->ndefs + 1, sizeof *p->defs) ||
+        scene_names_add(&p->names, SCENE_NAMES_SOLID, def->name, (int)p->ndefs))
+        return scene_parse_oom(p, at);
+    p->defs[p->ndefs++] = *def;
+    return 0;
+}
+
+/* ---- view statements ----------------------------------------------------- */
+
+/* Records that view statement slot appears here; fails on a repeat. */
+static int scene_parse_once(scene_parser *p, scene_cur *c, int slot)
+{
+    const scene_lex_tok *kw = &c->st->tok[0];
+    if (p->view_loc[slot].line)
+        return diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
+                       "%s given twice (first on record %ld)", c->what, p->view_loc[slot].line);
+    p->view_loc[slot] = scene_parse_loc(kw);
+    return 0;
+}
+
+static int scene_parse_color(scene_cur *c, double rgb[3])
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (scene_cur_range(c, "a colour component", 0, 1, &rgb[i]))
+            return DIAG_INPUT;
+    return 0;
+}
+
+static int scene_parse_eye(scene_parser *p, scene_cur *c)
+{
+    double v[3];
+    if (scene_parse_once(p, c, SCENE_PARSE_EYE) || scene_cur_numbers(c, v, 3) ||
+        scene_cur_finish(c))
+        return DIAG_INPUT;
+    memcpy(p->s->view.eye, v, sizeof v);
+    return 0;
+}
+
+static int scene_parse_look(scene_parser *p, scene_cur *c)
+{
+    double v[3];
+    if (scene_parse_once(p, c, SCENE_PARSE_LOOK) || scene_cur_numbers(c, v, 3) ||
+        scene_cur_finish(c))
+        return DIAG_INPUT;
+    memcpy(p->s->view.look, v, sizeof v);
+    return 0;
+}
+
+static int scene_parse_up(scene_parser *p, scene_cur *c)
+{
+    double v[3];
+    if (scene_parse_once(p, c, SCENE_PARSE_UP) || scene_cur_numbers(c, v, 3))
+        return DIAG_INPUT;
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0)
+        return scene_cur_error(c, &c->st->tok[1], "direction must not be zero");
+    if (scene_cur_finish(c))
+        return DIAG_INPUT;
+    memcpy(p->s->view.up, v, sizeof v);
+    return 0;
+}
+
+static int scene_parse_fov(scene_parser *p, scene_cur *c)
+{
+    const scene_lex_tok *t;
+    double v;
+    if (scene_parse_once(p, c, SCENE_PARSE_FOV) || scene_cur_number(c, &v, &t))
+        return DIAG_INPUT;
+    if (!(v > 0 && v < 180))
+        return scene_cur_error(c, t, "angle must be above 0 and below 180 degrees");
+    if (scene_cur_finish(c))
+        return DIAG_INPUT;
+    p->s->view.fov_deg = v;
+    return 0;
+}
+
+static int scene_parse_size(scene_parser *p, scene_cur *c)
+{
+    long w, h;
+    if (scene_parse_once(p, c, SCENE_PARSE_SIZE) ||
+        scene_cur_int(c, "width", 1, 16384, &w) ||
+        scene_cur_int(c, "height", 1, 16384, &h) || scene_cur_finish(c))
+        return DIAG_INPUT;
+    p->s->view.width = (int)w;
+    p->s->view.height = (int)h;
+    return 0;
+}
+
+static int scene_parse_ambient(scene_parser *p, scene_cur *c)
+{
+    double v[3];
+    if (scene_parse_once(p, c, SCENE_PARSE_AMBIENT) || scene_parse_color(c, v) ||
+        scene_cur_finish(c))
+        return DIAG_INPUT;
+    memcpy(p->s->ambient, v, sizeof v);
+    return 0;
+}
+
+static int scene_parse_background(scene_parser *p, scene_cur *c)
+{
+    double v[3];
+    if (scene_parse_once(p, c, SCENE_PARSE_BACKGROUND) || scene_parse_color(c, v) ||
+        scene_cur_finish(c))
+        return DIAG_INPUT;
+    memcpy(p->s->background, v, sizeof v);
+    return 0;
+}
+
+static int scene_parse_depth(scene_parser *p, scene_cur *c)
+{
+    long n;
+    if (scene_parse_once(p, c, SCENE_PARSE_DEPTH) ||
+        scene_cur_int(c, "depth", 0, 32, &n) || scene_cur_finish(c))
+        return DIAG_INPUT;
+    p->s->max_depth = (int)n;
+    return 0;
+}
+
+/* ---- LIGHT and ATTR ------------------------------------------------------ */
+
+/* Accepts option keyword once; *seen tracks it. Returns 1 if consumed, 0 if
+ * the next item is something else, -1 after an error (given twice). */
+static int scene_parse_option(scene_cur *c, const char *kw, int *seen)
+{
+    const scene_lex_tok *t = scene_cur_peek(c);
+    if (!scene_cur_is(t, kw))
+        return 0;
+    if (*seen) {
+        scene_cur_error(c, t, "%s given twice", kw);
+        return -1;
+    }
+    *seen = 1;
+    c->pos++;
+    return 1;
+}
+
+/* LIGHT x y z [COLOR r g b] [INTENSITY i]: appends a point light. */
+static int scene_parse_light(scene_parser *p, scene_cur *c)
+{
+    scene_light l;
+    int seen_color = 0, seen_int = 0, r;
+    const scene_lex_tok *kw = &c->st->tok[0];
+    if (p->s->nlights >= SCENE_PARSE_MAX_LIGHTS)
+        return scene_cur_error(c, kw, "more than %d lights", SCENE_PARSE_MAX_LIGHTS);
+    if (scene_cur_numbers(c, l.pos, 3))
+        return DIAG_INPUT;
+    l.color[0] = l.color[1] = l.color[2] = 1;
+    l.intensity = 1;
+    l.loc = scene_parse_loc(kw);
+    while (!scene_cur_at_end(c)) {
+        const scene_lex_tok *t = scene_cur_peek(c);
+        if ((r = scene_parse_option(c, "COLOR", &seen_color)) != 0) {
+            if (r < 0 || scene_parse_color(c, l.color))
+                return DIAG_INPUT;
+        } else if ((r = scene_parse_option(c, "INTENSITY", &seen_int)) != 0) {
+            const scene_lex_tok *at;
+            if (r < 0 || scene_cur_number(c, &l.intensity, &at))
+                return DIAG_INPUT;
+            if (l.intensity < 0)
+                return scene_cur_error(c, at, "INTENSITY must not be negative");
+        } else {
+            return scene_cur_error(c, t, "expected COLOR or INTENSITY, found %s", t->text);
+        }
+    }
+    if (mem_grow((void **)&p->s->lights, &p->cap_lights, p->s->nlights + 1, sizeof l))
+        return scene_parse_oom(p, kw);
+    p->s->lights[p->s->nlights++] = l;
+    return 0;
+}
+
+/* Default coefficients of an attribute (docs/scene-format.md). */
+static void scene_parse_attr_defaults(scene_attr *a)
+{
+    memset(a, 0, sizeof *a);
+    a->color[0] = a->color[1] = a->color[2] = 0.8;
+    a->ambient = 1;
+    a->diffuse = 0.8;
+    a->specular = 0;
+    a->exponent = 20;
+    a->mirror = 0;
+    a->transmit = 0;
+    a->ior = 1;
+}
+
+static int scene_parse_add_attr(scene_parser *p, const scene_attr *a, const scene_lex_tok *at)
+{
+    if (mem_grow((void **)&p->s->attrs, &p->cap_attrs, p->s->nattrs + 1, sizeof *a) ||
+        scene_names_add(&p->names, SCENE_NAMES_ATTR, a->name, (int)p->s->nattrs))
+        return scene_parse_oom(p, at);
+    p->s->attrs[p->s->nattrs++] = *a;
+    return 0;
+}
+
+/* ATTR name COLOR r g b {option value}: appends a plain attribute; the
+ * option table gives each coefficient's keyword, range and field. */
+static int scene_parse_attr(scene_parser *p, scene_cur *c)
+{
+    static const struct { const char *kw; double lo, hi; size_t off; } opt[] = {
+        { "AMBIENT", 0, 1, offsetof(scene_attr, ambient) },
+        { "DIFFUSE", 0, 1, offsetof(scene_attr, diffuse) },
+        { "SPECULAR", 0, 1, offsetof(scene_attr, specular) },
+        { "EXPONENT", 1, 10000, offsetof(scene_attr, exponent) },
+        { "MIRROR", 0, 1, offsetof(scene_attr, mirror) },
+        { "TRANSMIT", 0, 1, offsetof(scene_attr, transmit) },
+        { "IOR", 1, 10, offsetof(scene_attr, ior) },
+    };
+    enum { NOPT = sizeof opt / sizeof opt[0] };
+    int seen[NOPT + 1] = { 0 }, i, r;
+    const scene_lex_tok *kw = &c->st->tok[0], *at;
+    scene_attr a;
+    scene_parse_attr_defaults(&a);
+    if (scene_cur_name(c, a.name, &at))
+        return DIAG_INPUT;
+    i = scene_names_find(&p->names, SCENE_NAMES_ATTR, a.name);
+    if (i >= 0) {
+        if (p->s->attrs[i].loc.line == 0)
+            return scene_cur_error(c, at, "%s is built in and cannot be redefined", at->text);
+        return scene_cur_error(c, at, "%s is already defined on record %ld", at->text,
+                               p->s->attrs[i].loc.line);
+    }
+    if (p->s->nattrs >= SCENE_PARSE_MAX_ATTRS)
+        return scene_cur_error(c, at, "more than %d attributes", SCENE_PARSE_MAX_ATTRS);
+    a.loc = scene_parse_loc(kw);
+    while (!scene_cur_at_end(c)) {
+        const scene_lex_tok *t = scene_cur_peek(c);
+        if ((r = scene_parse_option(c, "COLOR", &seen[NOPT])) != 0) {
+            if (r < 0 || scene_parse_color(c, a.color))
+                return DIAG_INPUT;
+            continue;
+        }
+        for (i = 0; i < NOPT; i++)
+            if ((r = scene_parse_option(c, opt[i].kw, &seen[i])) != 0)
+                break;
+        if (i == NOPT)
+            return scene_cur_error(c, t, "expected COLOR, AMBIENT, DIFFUSE, SPECULAR, "
+                                   "EXPONENT, MIRROR, TRANSMIT or IOR, found %s", t->text);
+        if (r < 0 || scene_cur_range(c, opt[i].kw, opt[i].lo, opt[i].hi,
+                                     (double *)(void *)((char *)&a + opt[i].off)))
+            return DIAG_INPUT;
+    }
+    if (!seen[NOPT])
+        return scene_cur_error(c, NULL, "COLOR is required");
+    return scene_parse_add_attr(p, &a, kw);
+}
+
+/* ---- solids -------------------------------------------------------------- */
+
+/* Reads a dimension that must be positive (or, if zero_ok, not negative). */
+static int scene_parse_dim(scene_cur *c, const char *label, int zero_ok, double *v)
+{
+    const scene_lex_tok *t;
+    if (scene_cur_number(c, v, &t))
+        return DIAG_INPUT;
+    if (zero_ok ? *v < 0 : *v <= 0)
+        return scene_cur_error(c, t, "%s must be %s", label, zero_ok ? "0 or more" : "positive");
+    return 0;
+}
+
+/* SPHERE | CYLINDER | BLOCK | CONE | HALFSPACE name dims tail: defines a
+ * primitive solid (dimensions as in scene.h's canonical frames). */
+static int scene_parse_prim(scene_parser *p, scene_cur *c, prim_kind kind)
+{
+    scene_parse_def d;
+    const scene_lex_tok *at;
+    memset(&d, 0, sizeof d);
+    if (scene_parse_new_name(p, c, d.name, &at))
+        return DIAG_INPUT;
+    d.loc = scene_parse_loc(&c->st->tok[0]);
+    d.op = CSG_LEAF;
+    d.kind = kind;
+    d.leaves = 1;
+    d.depth = 1;
+    d.attr = -1;
+    scene_xform_identity(d.m);
+    switch (kind) {
+    case PRIM_SPHERE:
+        if (scene_parse_dim(c, "radius", 0, &d.dim[0]))
+            return DIAG_INPUT;
+        break;
+    case PRIM_CYLINDER:
+        if (scene_parse_dim(c, "radius", 0, &d.dim[0]) ||
+            scene_parse_dim(c, "height", 0, &d.dim[1]))
+            return DIAG_INPUT;
+        break;
+    case PRIM_BLOCK:
+        if (scene_parse_dim(c, "size", 0, &d.dim[0]) || scene_parse_dim(c, "size", 0, &d.dim[1]) ||
+            scene_parse_dim(c, "size", 0, &d.dim[2]))
+            return DIAG_INPUT;
+        break;
+    case PRIM_CONE:
+        if (scene_parse_dim(c, "radius", 1, &d.dim[0]) ||
+            scene_parse_dim(c, "radius", 1, &d.dim[1]))
+            return DIAG_INPUT;
+        if (d.dim[0] == 0 && d.dim[1] == 0)
+            return scene_cur_error(c, &c->st->tok[c->pos - 1], "radii must not both be zero");
+        if (scene_parse_dim(c, "height", 0, &d.dim[2]))
+            return DIAG_INPUT;
+        break;
+    default:  /* PRIM_HALFSPACE: no dimensions */
+        break;
+    }
+    if (scene_parse_tail(p, c, d.m, &d.attr) || scene_cur_finish(c))
+        return DIAG_INPUT;
+    return scene_parse_add_def(p, c, at, &d);
+}
+
+static int scene_parse_sphere(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_SPHERE); }
+static int scene_parse_cylinder(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_CYLINDER); }
+static int scene_parse_block(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_BLOCK); }
+static int scene_parse_cone(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_CONE); }
+static int scene_parse_halfspace(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_HALFSPACE); }
+
+/* Reads one use of a solid: its name (defined earlier) and its tail. */
+static int scene_parse_use_at(scene_parser *p, scene_cur *c, scene_parse_use *u,
+                              const scene_lex_tok **at)
+{
+    char name[SCENE_NAME_MAX + 1];
+    if (scene_cur_name(c, name, at))
+        return DIAG_INPUT;
+    u->def = scene_parse_find_solid(p, name);
+    if (u->def < 0)
+        return scene_cur_error(c, *at, "%s is used before it is defined", (*at)->text);
+    u->loc = scene_parse_loc(*at);
+    u->attr = -1;
+    scene_xform_identity(u->m);
+    return scene_parse_tail(p, c, u->m, &u->attr);
+}
+
+/* a + b, saturated just above the primitive limit. */
+static size_t scene_parse_sat_add(size_t a, size_t b)
+{
+    size_t cap = (size_t)SCENE_PARSE_MAX_PRIMS + 1;
+    return (a >= cap || b >= cap || a + b >= cap) ? cap : a + b;
+}
+
+/* UNION | INTER | DIFF name operand operand {operand}: defines a CSG solid.
+ * Its leaf count (saturated) and nesting depth are derived from the
+ * operands here, so OBJECT can check sizes before expanding. On error the
+ * operands already appended are dropped again. */
+static int scene_parse_csg(scene_parser *p, scene_cur *c, csg_op op)
+{
+    scene_parse_def d;
+    const scene_lex_tok *at, *ot;
+    size_t first = p->noperands;
+    memset(&d, 0, sizeof d);
+    if (scene_parse_new_name(p, c, d.name, &at))
+        return DIAG_INPUT;
+    d.loc = scene_parse_loc(&c->st->tok[0]);
+    d.op = op;
+    d.attr = -1;
+    d.first = first;
+    scene_xform_identity(d.m);
+    while (!scene_cur_at_end(c)) {
+        scene_parse_use u;
+        const scene_parse_def *od;
+        if (scene_parse_use_at(p, c, &u, &ot))
+            goto fail;
+        od = &p->defs[u.def];
+        if (od->depth >= SCENE_PARSE_MAX_NEST) {
+            scene_cur_error(c, ot, "%s would nest solids more than %d deep", ot->text,
+                            SCENE_PARSE_MAX_NEST);
+            goto fail;
+        }
+        if (od->depth + 1 > d.depth)
+            d.depth = od->depth + 1;
+        d.leaves = scene_parse_sat_add(d.leaves, od->leaves);
+        if (p->noperands >= SCENE_PARSE_MAX_OPERANDS) {
+            scene_cur_error(c, ot, "more than %d operands in all", SCENE_PARSE_MAX_OPERANDS);
+            goto fail;
+        }
+        if (mem_grow((void **)&p->operands, &p->cap_operands, p->noperands + 1, sizeof u)) {
+            scene_parse_oom(p, ot);
+            goto fail;
+        }
+        p->operands[p->noperands++] = u;
+    }
+    d.count = p->noperands - first;
+    if (d.count < 2) {
+        scene_cur_error(c, NULL, "needs at least two operands");
+        goto fail;
+    }
+    if (scene_parse_add_def(p, c, at, &d) == 0)
+        return 0;
+fail:
+    p->noperands = first;
+    return DIAG_INPUT;
+}
+
+static int scene_parse_union(scene_parser *p, scene_cur *c) { return scene_parse_csg(p, c, CSG_UNION); }
+static int scene_parse_inter(scene_parser *p, scene_cur *c) { return scene_parse_csg(p, c, CSG_INTER); }
+static int scene_parse_diff(scene_parser *p, scene_cur *c) { return scene_parse_csg(p, c, CSG_DIFF); }
+
+/* ---- OBJECT: expansion --------------------------------------------------- */
+
+/* Expands definition di under transform m and inherited attribute attr into
+ * prims and nodes (capacity reserved by the caller); returns the node index
+ * or -1 when a composed transform is unusable (*bad names the primitive).
+ * Recursion depth is bounded by SCENE_PARSE_MAX_NEST (checked at definition). */
+static int scene_parse_expand(scene_parser *p, int di, const double m[16], int attr,
+                              const scene_parse_def **bad)
+{
+    const scene_parse_def *d = &p->defs[di];
+    scene *s = p->s;
+    scene_node *n;
+    size_t i;
+    int left = -1;
+    if (d->op == CSG_LEAF) {
+        scene_prim *pr = &s->prims[s->nprims];
+        int k;
+        scene_xform_mul(pr->world_from_object, m, d->m);
+        if (!scene_xform_ok(pr->world_from_object)) {
+            *bad = d;
+            return -1;
+        }
+        pr->kind = d->kind;
+        memcpy(pr->dim, d->dim, sizeof pr->dim);
+        pr->attr = d->attr >= 0 ? d->attr : attr;
+        for (k = 0; k < SCENE_MAX_FACES; k++)
+            pr->face_map[k] = -1;
+        memcpy(pr->name, d->name, sizeof pr->name);
+        pr->loc = d->loc;
+        n = &s->nodes[s->nnodes];
+        n->op = CSG_LEAF;
+        n->left = n->right = -1;
+        n->prim = (int)s->nprims++;
+        return (int)s->nnodes++;
+    }
+    for (i = 0; i < d->count; i++) {
+        const scene_parse_use *u = &p->operands[d->first + i];
+        double um[16];
+        int r;
+        scene_xform_mul(um, m, u->m);
+        r = scene_parse_expand(p, u->def, um, u->attr >= 0 ? u->attr : attr, bad);
+        if (r < 0)
+            return -1;
+        if (left < 0) {
+            left = r;
+            continue;
+        }
+        n = &s->nodes[s->nnodes];
+        n->op = d->op;
+        n->left = left;
+        n->right = r;
+        n->prim = -1;
+        left = (int)s->nnodes++;
+    }
+    return left;
+}
+
+/* OBJECT name tail: checks the expansion against the scene limits, reserves
+ * exactly the room it needs, expands it and adds its root. On error the
+ * scene is left as before the statement. */
+static int scene_parse_object(scene_parser *p, scene_cur *c)
+{
+    scene *s = p->s;
+    scene_parse_use u;
+    const scene_lex_tok *at;
+    const scene_parse_def *d, *bad = NULL;
+    size_t np0 = s->nprims, nn0 = s->nnodes, leaves;
+    int root;
+    if (scene_parse_use_at(p, c, &u, &at) || scene_cur_finish(c))
+        return DIAG_INPUT;
+    d = &p->defs[u.def];
+    leaves = d->leaves;
+    if (leaves > SCENE_PARSE_MAX_PRIMS - s->nprims)
+        return scene_cur_error(c, at, "%s brings the scene to more than %d primitives",
+                               at->text, SCENE_PARSE_MAX_PRIMS);
+    if (2 * leaves - 1 > SCENE_PARSE_MAX_NODES - s->nnodes)
+        return scene_cur_error(c, at, "%s brings the scene to more than %d CSG nodes",
+                               at->text, SCENE_PARSE_MAX_NODES);
+    if (mem_grow((void **)&s->prims, &p->cap_prims, s->nprims + leaves, sizeof *s->prims) ||
+        mem_grow((void **)&s->nodes, &p->cap_nodes, s->nnodes + 2 * leaves - 1,
+                 sizeof *s->nodes) ||
+        mem_grow((void **)&s->roots, &p->cap_roots, s->nroots + 1, sizeof *s->roots))
+        return scene_parse_oom(p, at);
+    root = scene_parse_expand(p, u.def, u.m, u.attr >= 0 ? u.attr : 0, &bad);
+    if (root < 0) {
+        s->nprims = np0;
+        s->nnodes = nn0;
+        return scene_cur_error(c, at, "transforms make primitive %s degenerate or out of range",
+                               bad->name);
+    }
+    s->roots[s->nroots++] = root;
+    return 0;
+}
+
+/* ---- dispatch ------------------------------------------------------------ */
+
+static const scene_parse_stmt scene_parse_core[] = {
+    { "EYE", "EYE", scene_parse_eye },
+    { "LOOKAT", "LOOKAT", scene_parse_look },
+    { "LOOK", "LOOKAT", scene_parse_look },
+    { "UP", "UP", scene_parse_up },
+    { "FOV", "FOV", scene_parse_fov },
+    { "SIZE", "SIZE", scene_parse_size },
+    { "AMBIENT", "AMBIENT", scene_parse_ambient },
+    { "BACKGROUND", "BACKGROUND", scene_parse_background },
+    { "DEPTH", "DEPTH", scene_parse_depth },
+    { "LIGHT", "LIGHT", scene_parse_light },
+    { "ATTR", "ATTR", scene_parse_attr },
+    { "SPHERE", "SPHERE", scene_parse_sphere },
+    { "CYLINDER", "CYLINDER", scene_parse_cylinder },
+    { "BLOCK", "BLOCK", scene_parse_block },
+    { "CONE", "CONE", scene_parse_cone },
+    { "HALFSPACE", "HALFSPACE", scene_parse_halfspace },
+    { "UNION", "UNION", scene_parse_union },
+    { "INTER", "INTER", scene_parse_inter },
+    { "INTERSECT", "INTER", scene_parse_inter },
+    { "INTERSECTION", "INTER", scene_parse_inter },
+    { "DIFF", "DIFF", scene_parse_diff },
+    { "DIFFERENCE", "DIFF", scene_parse_diff },
+    { "OBJECT", "OBJECT", scene_parse_object },
+    { NULL, NULL, NULL }
+};
+
+/* Statement tables consulted in order; a statement file adds its table here. */
+static const scene_parse_stmt *const scene_parse_tables[] = {
+    scene_parse_core,
+    NULL
+};
+
+static const scene_parse_stmt *scene_parse_lookup(const scene_lex_tok *kw)
+{
+    size_t t, i;
+    for (t = 0; scene_parse_tables[t]; t++)
+        for (i = 0; scene_parse_tables[t][i].keyword; i++)
+            if (scene_cur_is(kw, scene_parse_tables[t][i].keyword))
+                return &scene_parse_tables[t][i];
+    return NULL;
+}
+
+/* Checks that the deck is complete and its view usable. */
+static int scene_parse_finish(scene_parser *p)
+{
+    scene *s = p->s;
+    scene_view *v = &s->view;
+    static const char *const need[] = { "EYE", "LOOKAT" };
+    double d[3], x[3];
+    int i;
+    for (i = 0; i < 2; i++)
+        if (!p->view_loc[i].line)
+            return diag_at(p->err, DIAG_INPUT, p->file, 0, 0, "scene has no %s statement",
+                           need[i]);
+    if (s->nlights == 0)
+        return diag_at(p->err, DIAG_INPUT, p->file, 0, 0, "scene has no LIGHT statement");
+    if (s->nroots == 0)
+        return diag_at(p->err, DIAG_INPUT, p->file, 0, 0, "scene has no OBJECT statement");
+    for (i = 0; i < 3; i++)
+        d[i] = v->look[i] - v->eye[i];
+    if (d[0] == 0 && d[1] == 0 && d[2] == 0)
+        return diag_at(p->err, DIAG_INPUT, p->file, p->view_loc[SCENE_PARSE_LOOK].line,
+                       p->view_loc[SCENE_PARSE_LOOK].col, "LOOKAT: point is the EYE point");
+    x[0] = d[1] * v->up[2] - d[2] * v->up[1];
+    x[1] = d[2] * v->up[0] - d[0] * v->up[2];
+    x[2] = d[0] * v->up[1] - d[1] * v->up[0];
+    if (sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <=
+        1e-9 * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) *
+               sqrt(v->up[0] * v->up[0] + v->up[1] * v->up[1] + v->up[2] * v->up[2])) {
+        const scene_loc *at = p->view_loc[SCENE_PARSE_UP].line ? &p->view_loc[SCENE_PARSE_UP]
+                                                              : &p->view_loc[SCENE_PARSE_LOOK];
+        return diag_at(p->err, DIAG_INPUT, p->file, at->line, at->col,
+                       "UP is parallel to the line of sight");
+    }
+    return 0;
+}
+
+/* Defaults of the view and lighting statements (docs/scene-format.md). */
+static void scene_parse_defaults(scene *s)
+{
+    s->view.up[2] = 1;
+    s->view.fov_deg = 40;
+    s->view.width = s->view.height = 512;
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.1;
+    s->max_depth = 5;
+}
+
+/* See scene.h. The built-in DEFAULT attribute is attrs[0]; statements are
+ * dispatched through scene_parse_tables; the parser state (with its large
+ * statement buffer) lives on the heap. */
+int scene_parse(const recsrc *src, scene **out, diag *err)
+{
+    scene_parser *p = mem_calloc(1, sizeof *p);
+    const char *file = src->name ? src->name : "";
+    scene_attr def;
+    int r;
+    if (!p)
+        return diag_at(err, DIAG_IO, file, 0, 0, "out of memory");
+    p->file = file;
+    p->err = err;
+    scene_names_init(&p->names);
+    scene_lex_init(&p->lex, src);
+    p->s = mem_calloc(1, sizeof *p->s);
+    if (!p->s || !(p->s->source = mem_strdup(file))) {
+        r = diag_at(err, DIAG_IO, file, 0, 0, "out of memory");
+        goto done;
+    }
+    scene_parse_defaults(p->s);
+    scene_parse_attr_defaults(&def);
+    strcpy(def.name, "DEFAULT");
+    if (scene_parse_add_attr(p, &def, NULL) != 0) {
+        r = err->status;
+        goto done;
+    }
+    while ((r = scene_lex_next(&p->lex, &p->st, err)) == 1) {
+        const scene_lex_tok *kw = &p->st.tok[0];
+        const scene_parse_stmt *e = scene_parse_lookup(kw);
+        scene_cur c;
+        if (!e) {
+            r = diag_at(err, DIAG_INPUT, file, kw->line, kw->col, "unknown statement %s",
+                        kw->text);
+            goto done;
+        }
+        scene_cur_init(&c, &p->st, file, e->canon, err);
+        if (e->fn(p, &c)) {
+            r = err->status ? err->status : DIAG_INPUT;
+            goto done;
+        }
+    }
+    if (r == 0)
+        r = scene_parse_finish(p);
+done:
+    if (r == 0) {
+        *out = p->s;
+        p->s = NULL;
+    }
+    scene_free(p->s);
+    scene_names_free(&p->names);
+    mem_free(p->defs);
+    mem_free(p->operands);
+    mem_free(p);
+    return r;
+}

@@ -1,0 +1,84 @@
+/* scene_parse — the parser's state and statement dispatch, for files that
+ * add statements to the scene language (e.g. attribute mapping). A statement
+ * file provides a table of scene_parse_stmt entries ending with a NULL
+ * keyword; scene_parse.c lists the tables it consults (scene_parse_tables).
+ * Handlers read their operands with scene_cur, resolve names through
+ * scene_parse_attr_ref / scene_parse_find_solid and build into p->s.
+ * New keywords must also be added to the reserved words (scene_cur.c) so
+ * that they cannot be names. scene_parse() itself is declared in scene.h. */
+#ifndef SCENE_PARSE_H
+#define SCENE_PARSE_H
+#include <stddef.h>
+#include "scene/scene.h"
+#include "scene/scene_cur.h"
+#include "scene/scene_lex.h"
+#include "scene/scene_names.h"
+
+/* Documented limits (docs/scene-format.md). */
+#define SCENE_PARSE_MAX_LIGHTS   64
+#define SCENE_PARSE_MAX_ATTRS    4096
+#define SCENE_PARSE_MAX_DEFS     65536     /* named solids */
+#define SCENE_PARSE_MAX_OPERANDS 100000    /* operands of all CSG statements */
+#define SCENE_PARSE_MAX_NEST     64        /* CSG definitions inside each other */
+#define SCENE_PARSE_MAX_PRIMS    100000    /* primitives after expansion */
+#define SCENE_PARSE_MAX_NODES    400000    /* CSG nodes after expansion */
+
+/* A named solid: a primitive (op CSG_LEAF) or a CSG combination of
+ * operands[first .. first+count-1]. */
+typedef struct scene_parse_def {
+    char name[SCENE_NAME_MAX + 1];
+    scene_loc loc;
+    csg_op op;
+    prim_kind kind;           /* leaf: primitive kind, dimensions, */
+    double dim[3];
+    double m[16];             /* its own transforms, */
+    int attr;                 /* and its ATTR (-1 none) */
+    size_t first, count;      /* CSG: operands */
+    size_t leaves;            /* primitives in one expansion (saturated) */
+    int depth;                /* nesting: 1 for a primitive */
+} scene_parse_def;
+
+/* One use of a solid: as a CSG operand or by OBJECT. */
+typedef struct scene_parse_use {
+    int def;
+    double m[16];             /* transforms written at the use */
+    int attr;                 /* ATTR written at the use, -1 none */
+    scene_loc loc;
+} scene_parse_use;
+
+typedef struct scene_parser scene_parser;
+typedef int (*scene_parse_fn)(scene_parser *p, scene_cur *c);
+
+typedef struct scene_parse_stmt {
+    const char *keyword;      /* upper case; NULL ends a table */
+    const char *canon;        /* name used in messages (for aliases) */
+    scene_parse_fn fn;
+} scene_parse_stmt;
+
+enum { SCENE_PARSE_EYE, SCENE_PARSE_LOOK, SCENE_PARSE_UP, SCENE_PARSE_FOV,
+       SCENE_PARSE_SIZE, SCENE_PARSE_AMBIENT, SCENE_PARSE_BACKGROUND,
+       SCENE_PARSE_DEPTH, SCENE_PARSE_VIEW_COUNT };
+
+struct scene_parser {
+    scene *s;
+    const char *file;
+    diag *err;
+    scene_lex lex;
+    scene_lex_stmt st;
+    scene_names names;
+    scene_parse_def *defs;     size_t ndefs, cap_defs;
+    scene_parse_use *operands; size_t noperands, cap_operands;
+    size_t cap_attrs, cap_lights, cap_prims, cap_nodes, cap_roots;
+    scene_loc view_loc[SCENE_PARSE_VIEW_COUNT];  /* each view statement; line 0 = none */
+};
+
+/* Reads "ATTR name"'s name at the cursor and resolves it to an attribute
+ * index in *attr ("<name> is used before it is defined"). */
+int scene_parse_attr_ref(scene_parser *p, scene_cur *c, int *attr);
+/* Index of the named solid, or -1. */
+int scene_parse_find_solid(const scene_parser *p, const char *name);
+/* Reads the items after a solid's name at a use or definition: any mix of
+ * transforms (composed after m) and at most one "ATTR name" (into *attr,
+ * which the caller sets to -1). Stops at the first other item. */
+int scene_parse_tail(scene_parser *p, scene_cur *c, double m[16], int *attr);
+#endif

@@ -1,0 +1,152 @@
+/* scene_xform — affine transforms and their statement items (see
+ * scene_xform.h). */
+#include "scene/scene_xform.h"
+#include <math.h>
+#include <string.h>
+
+void scene_xform_identity(double m[16])
+{
+    int i;
+    for (i = 0; i < 16; i++)
+        m[i] = (i % 5 == 0) ? 1.0 : 0.0;
+}
+
+void scene_xform_mul(double out[16], const double a[16], const double b[16])
+{
+    double r[16];
+    int i, j, k;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++) {
+            double s = 0;
+            for (k = 0; k < 4; k++)
+                s += a[i * 4 + k] * b[k * 4 + j];
+            r[i * 4 + j] = s;
+        }
+    memcpy(out, r, sizeof r);
+}
+
+void scene_xform_point(const double m[16], const double p[3], double out[3])
+{
+    double r[3];
+    int i;
+    for (i = 0; i < 3; i++)
+        r[i] = m[i * 4] * p[0] + m[i * 4 + 1] * p[1] + m[i * 4 + 2] * p[2] + m[i * 4 + 3];
+    memcpy(out, r, sizeof r);
+}
+
+int scene_xform_ok(const double m[16])
+{
+    double det, norms = 1;
+    int i;
+    for (i = 0; i < 16; i++)
+        if (!(fabs(m[i]) <= SCENE_XFORM_MAX_ABS))
+            return 0;
+    for (i = 0; i < 3; i++) {
+        double n = sqrt(m[i * 4] * m[i * 4] + m[i * 4 + 1] * m[i * 4 + 1] +
+                        m[i * 4 + 2] * m[i * 4 + 2]);
+        if (!(n >= 1 / SCENE_XFORM_MAX_ABS))     /* shrunk to nothing */
+            return 0;
+        norms *= n;
+    }
+    det = m[0] * (m[5] * m[10] - m[6] * m[9])
+        - m[1] * (m[4] * m[10] - m[6] * m[8])
+        + m[2] * (m[4] * m[9] - m[5] * m[8]);
+    return norms > 0 && fabs(det) > 1e-12 * norms;
+}
+
+int scene_xform_starts(const scene_cur *c)
+{
+    const scene_lex_tok *t = scene_cur_peek(c);
+    return scene_cur_is(t, "TRANSLATE") || scene_cur_is(t, "ROTATE") ||
+           scene_cur_is(t, "SCALE") || scene_cur_is(t, "MATRIX");
+}
+
+/* Rotation by deg degrees about the unit axis u (right-hand rule). */
+static void scene_xform_rotation(double m[16], const double u[3], double deg,
+                                 int principal)
+{
+    double a = deg * (3.14159265358979323846 / 180.0);
+    double s = sin(a), k = 1 - cos(a), cs = cos(a);
+    scene_xform_identity(m);
+    m[0] = cs + u[0] * u[0] * k;
+    m[1] = u[0] * u[1] * k - u[2] * s;
+    m[2] = u[0] * u[2] * k + u[1] * s;
+    m[4] = u[1] * u[0] * k + u[2] * s;
+    m[5] = cs + u[1] * u[1] * k;
+    m[6] = u[1] * u[2] * k - u[0] * s;
+    m[8] = u[2] * u[0] * k - u[1] * s;
+    m[9] = u[2] * u[1] * k + u[0] * s;
+    m[10] = cs + u[2] * u[2] * k;
+    /* quarter turns about X, Y or Z are exact permutations (sin and cos of
+     * the rounded pi/2 are not exactly 1 and 0) */
+    if (principal && fmod(deg, 90.0) == 0) {
+        int i;
+        for (i = 0; i < 16; i++)
+            m[i] = floor(m[i] + 0.5);
+    }
+}
+
+int scene_xform_parse(scene_cur *c, double m[16])
+{
+    const scene_lex_tok *kw = scene_cur_peek(c);
+    const scene_lex_tok *t;
+    double t4[16], v[12];
+    int i, rc = 0;
+    scene_xform_identity(t4);
+    c->pos++;
+    if (scene_cur_is(kw, "TRANSLATE")) {
+        if (scene_cur_numbers(c, v, 3))
+            return DIAG_INPUT;
+        t4[3] = v[0]; t4[7] = v[1]; t4[11] = v[2];
+    } else if (scene_cur_is(kw, "ROTATE")) {
+        double u[3] = { 0, 0, 0 }, len;
+        t = scene_cur_peek(c);
+        if (scene_cur_accept(c, "X")) u[0] = 1;
+        else if (scene_cur_accept(c, "Y")) u[1] = 1;
+        else if (scene_cur_accept(c, "Z")) u[2] = 1;
+        else if (scene_cur_accept(c, "AXIS")) {
+            if (scene_cur_numbers(c, u, 3))
+                return DIAG_INPUT;
+            len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            if (!(len > 0))
+                return scene_cur_error(c, t, "ROTATE axis must not be zero");
+            for (i = 0; i < 3; i++)
+                u[i] /= len;
+        } else if (!t)
+            return scene_cur_error(c, NULL, "ROTATE needs X, Y, Z or AXIS");
+        else
+            return scene_cur_error(c, t, "ROTATE needs X, Y, Z or AXIS, found %s", t->text);
+        if (scene_cur_number(c, &v[0], NULL))
+            return DIAG_INPUT;
+        scene_xform_rotation(t4, u, v[0], !scene_cur_is(t, "AXIS"));
+    } else if (scene_cur_is(kw, "SCALE")) {
+        int n = 1;
+        const scene_lex_tok *at[3];
+        if (scene_cur_number(c, &v[0], &at[0]))
+            return DIAG_INPUT;
+        if (scene_cur_numeric(scene_cur_peek(c))) {
+            n = 3;
+            if (scene_cur_number(c, &v[1], &at[1]) || scene_cur_number(c, &v[2], &at[2]))
+                return DIAG_INPUT;
+        } else {
+            v[1] = v[2] = v[0];
+            at[1] = at[2] = at[0];
+        }
+        for (i = 0; i < n; i++)
+            if (v[i] == 0)
+                return scene_cur_error(c, at[i], "SCALE factor must not be zero");
+        t4[0] = v[0]; t4[5] = v[1]; t4[10] = v[2];
+    } else {  /* MATRIX */
+        if (scene_cur_numbers(c, v, 12))
+            return DIAG_INPUT;
+        memcpy(t4, v, sizeof v);
+        if (!scene_xform_ok(t4))
+            return scene_cur_error(c, kw, "MATRIX is singular");
+    }
+    scene_xform_mul(t4, t4, m);
+    if (!scene_xform_ok(t4))
+        rc = scene_cur_error(c, kw, "transforms give a degenerate or out-of-range matrix");
+    else
+        memcpy(m, t4, sizeof t4);
+    return rc;
+}

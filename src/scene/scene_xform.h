@@ -1,0 +1,34 @@
+/* scene_xform — 4x4 affine transforms of the scene model (row-major, acting
+ * on column vectors: p' = M p) and the transform items of the scene language:
+ *   TRANSLATE x y z | ROTATE X|Y|Z deg | ROTATE AXIS ax ay az deg |
+ *   SCALE s | SCALE sx sy sz | MATRIX m11 m12 m13 m14 m21 ... m34
+ * applied in the order written. Used by scene_parse for definitions and uses,
+ * and by the expansion that composes world_from_object. */
+#ifndef SCENE_XFORM_H
+#define SCENE_XFORM_H
+#include "scene/scene_cur.h"
+
+/* Largest entry magnitude of a composed transform; beyond it (or for a
+ * linear part whose determinant is not clearly non-zero) a transform is
+ * rejected as degenerate. */
+#define SCENE_XFORM_MAX_ABS 1e12
+
+void scene_xform_identity(double m[16]);
+/* out = a * b (out may alias a or b). */
+void scene_xform_mul(double out[16], const double a[16], const double b[16]);
+/* Applies m to the point p (w = 1). */
+void scene_xform_point(const double m[16], const double p[3], double out[3]);
+/* 1 if m is finite, within SCENE_XFORM_MAX_ABS, no row of its 3x3 linear
+ * part is shorter than 1/SCENE_XFORM_MAX_ABS and that part is invertible
+ * (|det| above 1e-12 times the product of its row lengths). */
+int scene_xform_ok(const double m[16]);
+
+/* 1 if the next item starts a transform (TRANSLATE, ROTATE, SCALE, MATRIX). */
+int scene_xform_starts(const scene_cur *c);
+/* Parses one transform item at the cursor and composes it after m
+ * (m = T * m). Errors (DIAG_INPUT, at the offending item): missing or bad
+ * numbers, "ROTATE: expected X, Y, Z or AXIS, found W", "ROTATE: axis must
+ * not be zero", "SCALE factor must not be zero", "MATRIX is singular",
+ * "transforms give a degenerate or out-of-range matrix". */
+int scene_xform_parse(scene_cur *c, double m[16]);
+#endif
