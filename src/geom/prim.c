@@ -390,10 +390,10 @@ int NS(prim_intersect)(const prim *p, const ray *r, num tmax, span *out)
     s.a.prim = s.b.prim = p->id;
     s.a.face = s.b.face = FACE_NONE;
     if (p->bounded) {
+        /* The bound only rejects: span ends always come from faces, so a
+         * rounding difference between bound and face cannot hide a face. */
         if (vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmax, &tc))
             return 0;
-        s.a.t = num_sub(tc, p->br);
-        s.b.t = num_add(tc, p->br);
     }
     if (!prim_clip_planes(p, r, &s))
         return 0;
