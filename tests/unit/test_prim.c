@@ -110,11 +110,11 @@ static void test_prim_properties_all_modes(void **state)
                          prim_decl[kind], tail);
                 sc = tt_parse(deck);
                 assert_non_null(sc);
-                prim_check_scene(tt_modes[m], sc, &s, &f);
+                prim_check_scene(tt_mode(m), sc, &s, &f);
                 scene_free(sc);
             }
             printf("# %s %s: %ld hits; failures surf=%ld uv=%ld inside=%ld respawn_out=%ld respawn_in=%ld\n",
-                   tt_modes[m]->name, prim_decl[kind], f.hits, f.surf, f.uv, f.inside, f.respawn_out,
+                   tt_mode(m)->name, prim_decl[kind], f.hits, f.surf, f.uv, f.inside, f.respawn_out,
                    f.respawn_in);
             assert_true(f.hits > 0 || kind == PRIM_HALFSPACE);
             assert_int_equal(f.surf + f.uv + f.inside + f.respawn_out + f.respawn_in, 0);

@@ -12,11 +12,15 @@
 #include "util/recsrc.h"
 #include "support.h"
 
-static const probe_ops *const tt_modes[4] = {&q16_probe_ops, &q32_probe_ops,
-                                             &f32_probe_ops, &f64_probe_ops};
+static inline const probe_ops *tt_mode(int i)
+{
+    static const probe_ops *const all[4] = {&q16_probe_ops, &q32_probe_ops,
+                                            &f32_probe_ops, &f64_probe_ops};
+    return all[i];
+}
 
 /* Parses a deck given as text; fails the test on error. */
-static scene *tt_parse(const char *text)
+static inline scene *tt_parse(const char *text)
 {
     recsrc src;
     recsrc_mem m;
@@ -34,7 +38,7 @@ static scene *tt_parse(const char *text)
 }
 
 /* Object coordinates of world point p for primitive sp (double inverse). */
-static void tt_to_object(const scene_prim *sp, const double *p, double *q)
+static inline void tt_to_object(const scene_prim *sp, const double *p, double *q)
 {
     const double *m = sp->world_from_object;
     double a[9] = {m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]}, c[9], det, w[3];
@@ -51,7 +55,7 @@ static void tt_to_object(const scene_prim *sp, const double *p, double *q)
 /* Signed "distance" of object point q to primitive sp (negative inside),
  * exact for planes and spheres, a Lipschitz-1 bound for cylinder/cone sides
  * (cone: measured horizontally). */
-static double tt_sdf(const scene_prim *sp, const double *q)
+static inline double tt_sdf(const scene_prim *sp, const double *q)
 {
     const double *d = sp->dim;
     double r = sqrt(q[0] * q[0] + q[1] * q[1]), f;
@@ -83,7 +87,7 @@ static double tt_sdf(const scene_prim *sp, const double *q)
 
 /* A random rotation/uniform scale/translation tail for a deck, scale in
  * [0.5, 2], translation in [-2, 2]^3. */
-static void tt_random_tail(uint64_t *s, char *buf, size_t len)
+static inline void tt_random_tail(uint64_t *s, char *buf, size_t len)
 {
     snprintf(buf, len, "-\n  ROTATE AXIS %.6f %.6f %.6f %.4f -\n  SCALE %.5f TRANSLATE %.5f %.5f %.5f",
              test_uniform(s, -1, 1), test_uniform(s, -1, 1), test_uniform(s, 0.1, 1),
@@ -92,7 +96,7 @@ static void tt_random_tail(uint64_t *s, char *buf, size_t len)
 }
 
 /* Uniform random unit vector. */
-static void tt_random_dir(uint64_t *s, double *d)
+static inline void tt_random_dir(uint64_t *s, double *d)
 {
     double l;
     do {
