@@ -76,10 +76,10 @@ static double m3d_spectral_norm(const double *m)
     return sqrt(q + 2 * p * cos(phi));
 }
 
-/* Rounds a plane coefficient to a 2^-30 grid so that planes computed along
+/* Rounds a plane coefficient to a 2^-40 grid so that planes computed along
  * different transform paths, equal up to double rounding, become identical
  * in every numeric mode. */
-static double prim_snap(double x) { return nearbyint(x * 1073741824.0) / 1073741824.0; }
+static double prim_snap(double x) { return nearbyint(x * 1099511627776.0) / 1099511627776.0; }
 
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
 {
