@@ -67,7 +67,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
     vec3 p, nsn;
     double d[3], ns[3], dn, refl, c[3];
     size_t li;
-    int i, inside;
+    int i, inside, far;
 
     /* Step 1: nearest hit, else the background. */
     if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)) {
@@ -95,6 +95,10 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
         ns[i] = dn > 0 ? -sf.n[i] : sf.n[i];
     inside = !h.entering;
     nsn = trace_vec_d(ns);
+    /* No ray is spawned from beyond GEOM_TMAX (only a half-space reaches
+     * there): ray origins then stay inside the range argued in
+     * docs/numerics.md, and nothing out there can cast a visible shadow. */
+    far = vec3_maxabs(p) > num_from_i(GEOM_TMAX);
     /* Step 5 (1): a bump attribute would perturb ns here. */
 
     for (i = 0; i < 3; i++)
@@ -110,7 +114,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
         ndl = ns[0] * ld[0] + ns[1] * ld[1] + ns[2] * ld[2];
         if (ndl <= 0)
             continue;
-        if (trace_shadowed(cs, tc, p, l, dist, h.prim, sf.n))
+        if (!far && trace_shadowed(cs, tc, p, l, dist, h.prim, sf.n))
             continue;
         if (at->specular > 0) {
             /* Phong: the light reflected about ns against the view direction */
@@ -127,6 +131,8 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
 
     /* Step 5 (3): mirror reflection and transmission recurse from step 1. */
     refl = at->mirror;
+    if (far)
+        depth = cs->max_depth;
     if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT) {
         double eta = inside ? at->ior : 1.0 / at->ior, cosi = -(d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2]);
         double k = 1 - eta * eta * (1 - cosi * cosi);

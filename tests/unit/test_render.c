@@ -164,6 +164,30 @@ static void test_render_scale_independent(void **state)
     }
 }
 
+/* Refraction and mirror recursion: q16 and f64 agree on a glass scene. */
+static void test_render_glass_modes_agree(void **state)
+{
+    scene *sc = render_load("bench/glass.scene");
+    render_fb a, b;
+    render_stats sa, sb;
+    render_opts o = render_default(96, 72, 1);
+    diag err;
+    long bad;
+    (void)state;
+    diag_init(&err);
+    assert_int_equal(render_scene(sc, &q16_render_ops, &o, &a, &sa, &err), 0);
+    assert_int_equal(render_scene(sc, &f64_render_ops, &o, &b, &sb, &err), 0);
+    bad = render_diff(&a.img, &b.img, 8);
+    printf("# glass: %llu refracted, %llu reflected rays; %ld pixels differ by more than 8/255\n",
+           sa.rays_refracted, sa.rays_reflected, bad);
+    assert_true(sa.rays_refracted > 1000 && sb.rays_refracted > 1000);
+    assert_true(bad <= 96 * 72 / 100);
+    assert_true(sa.fx_overflows == 0);
+    render_fb_free(&a);
+    render_fb_free(&b);
+    scene_free(sc);
+}
+
 static void test_render_mode_lookup(void **state)
 {
     (void)state;
@@ -226,6 +250,7 @@ int main(void)
         cmocka_unit_test(test_render_goldens),
         cmocka_unit_test(test_render_counts_and_threads),
         cmocka_unit_test(test_render_scale_independent),
+        cmocka_unit_test(test_render_glass_modes_agree),
         cmocka_unit_test(test_render_mode_lookup),
         cmocka_unit_test(test_render_bad_view),
         cmocka_unit_test(test_render_oom_sweep),
