@@ -5,6 +5,7 @@
 #include "cli/cli.h"
 #include "cli/cli_scene.h"
 #include "render/render.h"
+#include "util/mem.h"
 #include "util/outfile.h"
 #include <math.h>
 #include <omp.h>
@@ -99,11 +100,11 @@ static int bench_plot(const char *out, const bench_row *rows, int n)
         fprintf(stderr, "maprt: %s: error: --plot needs gnuplot, which is not installed\n", out);
         return CLI_IO;
     }
-    if (!(tmp = malloc(len)))
+    if (!(tmp = mem_alloc(len)))
         return CLI_IO;
     snprintf(tmp, len, "%s.tmp-%ld", out, (long)getpid());
     if (!(gp = popen("gnuplot", "w"))) {
-        free(tmp);
+        mem_free(tmp);
         fprintf(stderr, "maprt: %s: error: cannot run gnuplot\n", out);
         return CLI_IO;
     }
@@ -117,11 +118,11 @@ static int bench_plot(const char *out, const bench_row *rows, int n)
     rc = pclose(gp);
     if (rc != 0 || rename(tmp, out) != 0) {
         remove(tmp);
-        free(tmp);
+        mem_free(tmp);
         fprintf(stderr, "maprt: %s: error: gnuplot failed\n", out);
         return CLI_IO;
     }
-    free(tmp);
+    mem_free(tmp);
     return CLI_OK;
 }
 
@@ -195,11 +196,11 @@ int cmd_bench(int argc, char **argv)
     if (o.threads > RENDER_MAX_THREADS)
         o.threads = RENDER_MAX_THREADS;
     bench_modes("q16,q32,f32,f64", modes, &nmodes);
-    scenes = malloc(sizeof *scenes * (size_t)argc);
-    rows = malloc(sizeof *rows * (size_t)argc * BENCH_MAX_MODES);
+    scenes = mem_alloc(sizeof *scenes * (size_t)argc);
+    rows = mem_alloc(sizeof *rows * (size_t)argc * BENCH_MAX_MODES);
     if (!scenes || !rows) {
-        free(scenes);
-        free(rows);
+        mem_free(scenes);
+        mem_free(rows);
         fprintf(stderr, "maprt bench: error: out of memory\n");
         return CLI_IO;
     }
@@ -275,11 +276,11 @@ int cmd_bench(int argc, char **argv)
         status = bench_csv(csv, rows, nrows);
     if (status == CLI_OK && plot)
         status = bench_plot(plot, rows, nrows);
-    free(scenes);
-    free(rows);
+    mem_free(scenes);
+    mem_free(rows);
     return status;
 usage:
-    free(scenes);
-    free(rows);
+    mem_free(scenes);
+    mem_free(rows);
     return CLI_USAGE;
 }
