@@ -184,8 +184,9 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
     for (i = 0; i < 9; i++)
         p.minv_s.m[i] = num_from_d(p.ainv_d[i] / frob);
     p.smin = num_from_d(1.0 / frob);
+    p.inv_smin = num_from_d(frob);
     p.org = vec3_from_d(p.org_d);
-    if (p.bounded && p.smin == NUM_ZERO)
+    if (p.bounded && (p.smin == NUM_ZERO || num_to_d(p.inv_smin) < frob * (1 - 1e-3)))
         return prim_fail(err, file, sp, "too small for the numeric range");
 
     /* bounding sphere */
@@ -274,7 +275,7 @@ typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
 static int prim_side(const prim *p, const ray *r, num tc, span *s)
 {
     vec3 o1 = vec3_madd(r->o, tc, r->d);
-    vec3 ol = vec3_div(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->smin);
+    vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->inv_smin);
     vec3 du, cl, rel;
     num L, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];

@@ -42,6 +42,7 @@ typedef struct prim {
     vec3 org;          /* canonical origin in the world */
     mat3 minv_s;       /* canonical_from_world (linear part) times smin */
     num smin;          /* 1 / frobenius norm of canonical_from_world */
+    num inv_smin;      /* its reciprocal (the frobenius norm) */
     num cone_a, cone_k;/* cone radius at canonical z: a + k z */
     /* double copies for surface evaluation */
     double a_d[9], ainv_d[9], org_d[3], pn_d[6][3];

@@ -43,7 +43,7 @@ static inline int vec3_normalize(vec3 v, vec3 *unit, num *len)
     s = num_sqrt(vec3_dot(w, w));
     if (s == NUM_ZERO)
         return -1;
-    *unit = vec3_div(w, s);
+    *unit = vec3_scale(w, num_div(NUM_ONE, s));      /* s in [1, sqrt 3] */
     if (len)
         *len = num_mul(m, s);
     return 0;
