@@ -74,7 +74,9 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
     return 1;
 }
 
-/* Nearest hit of r; fills h (deck units) and the num hit point. */
+/* Nearest hit of r; fills h (deck units) and the num hit point. The probe
+ * owns one arena, so one compiled probe must not be queried from two
+ * threads at once. */
 static int probe_trace(const probe_cs *pc, const ray *r, probe_hit *h, vec3 *pn)
 {
     const cscene *cs = pc->cs;

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include "tracer_test.h"
 #include "geom/geom.h"
+#include "num/fx.h"
 
 /* Allowed distance of a hit point from the surface, deck units, for a scene
  * whose normalised half-extent is about 10 deck units (docs/numerics.md). */
@@ -101,6 +102,7 @@ static void test_prim_properties_all_modes(void **state)
     for (m = 0; m < 4; m++)
         for (kind = 0; kind < PRIM_KIND_COUNT; kind++) {
             prim_fail f;
+            unsigned long ov0 = fx_overflows;
             memset(&f, 0, sizeof f);
             for (n = 0; n < (m == 1 ? 3 : 12); n++) {
                 char tail[256], deck[1024];
@@ -118,6 +120,8 @@ static void test_prim_properties_all_modes(void **state)
                    f.respawn_in);
             assert_true(f.hits > 0 || kind == PRIM_HALFSPACE);
             assert_int_equal(f.surf + f.uv + f.inside + f.respawn_out + f.respawn_in, 0);
+            /* no saturation for any of these rays, inside or grazing */
+            assert_int_equal(fx_overflows - ov0, 0);
         }
 }
 
@@ -177,6 +181,64 @@ static void test_prim_face_mapping(void **state)
     }
 }
 
+/* Grazing, tangent, in-plane, along-edge and through-apex rays: any hit
+ * must lie on the surface, and no mode may saturate. */
+static void test_prim_stress_grazing(void **state)
+{
+    static const struct { const char *decl; double o[3], d[3]; } c[] = {
+        {"SPHERE P 1", {-5, 1, 0}, {1, 0, 0}},
+        {"SPHERE P 1", {-5, 0.9999999, 0}, {1, 0, 0}},
+        {"SPHERE P 1", {-5, 0, 1.0000001}, {1, 0, 0}},
+        {"SPHERE P 1", {0, 0, 0}, {0, 0, 1}},
+        {"BLOCK P 1 1 1", {-5, 0.5, 1}, {1, 0, 0}},
+        {"BLOCK P 1 1 1", {-5, 0, 0}, {1, 0, 0}},
+        {"BLOCK P 1 1 1", {-5, -5, 0.5}, {1, 1, 0}},
+        {"BLOCK P 1 1 1", {-4, -4, -4}, {1, 1, 1}},
+        {"CYLINDER P 1 1", {1, 0, -5}, {0, 0, 1}},
+        {"CYLINDER P 1 1", {0, 0, -5}, {0, 0, 1}},
+        {"CYLINDER P 1 1", {-5, 1, 0.5}, {1, 0, 0}},
+        {"CYLINDER P 1 1", {-5, 0, 1}, {1, 0, 0}},
+        {"CONE P 1 0 1", {0, 0, 5}, {0, 0, -1}},
+        {"CONE P 1 0 1", {-5, 0, 1}, {1, 0, 0}},
+        {"CONE P 1 0 1", {-1, 0, -5}, {0, 0, 1}},
+        {"CONE P 1 0 1", {-2, 0, 2}, {1, 0, -1}},
+        {"CONE P 0 1 1", {0, 0, -5}, {0, 0, 1}},
+        {"HALFSPACE P", {-5, 0, 0}, {1, 0, 0}},
+        {"HALFSPACE P", {-5, 0, 1}, {1, 0, -1e-6}},
+    };
+    size_t i;
+    int m;
+    (void)state;
+    for (m = 0; m < 4; m++)
+        for (i = 0; i < sizeof c / sizeof c[0]; i++) {
+            char deck[512];
+            scene *sc;
+            void *cs;
+            diag err;
+            probe_hit h;
+            double t[2], q[3];
+            int face[2];
+            unsigned long ov0 = fx_overflows;
+            const probe_ops *ops = tt_mode(m);
+            snprintf(deck, sizeof deck, "EYE 9 -9 7\nLOOKAT 0 0 0\nLIGHT 0 0 20\n%s\nOBJECT P\n", c[i].decl);
+            sc = tt_parse(deck);
+            assert_non_null(sc);
+            diag_init(&err);
+            assert_int_equal(ops->compile(sc, &cs, &err), 0);
+            (void)ops->prim_span(cs, 0, c[i].o, c[i].d, t, face);
+            if (ops->hit(cs, c[i].o, c[i].d, &h)) {
+                tt_to_object(&sc->prims[0], h.p, q);
+                if (fabs(tt_sdf(&sc->prims[0], q)) > 2 * prim_tol(ops->name) * (1 + h.t / 10))
+                    printf("# %s case %zu (%s): hit %.3g off the surface\n", ops->name, i, c[i].decl,
+                           tt_sdf(&sc->prims[0], q));
+                assert_true(fabs(tt_sdf(&sc->prims[0], q)) <= 2 * prim_tol(ops->name) * (1 + h.t / 10));
+            }
+            assert_int_equal(fx_overflows - ov0, 0);
+            ops->free(cs);
+            scene_free(sc);
+        }
+}
+
 static void test_prim_face_names(void **state)
 {
     (void)state;
@@ -219,6 +281,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_prim_properties_all_modes),
         cmocka_unit_test(test_prim_face_mapping),
+        cmocka_unit_test(test_prim_stress_grazing),
         cmocka_unit_test(test_prim_face_names),
         cmocka_unit_test(test_prim_rejects_bad_dimensions),
     };
