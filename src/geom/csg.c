@@ -336,18 +336,21 @@ typedef struct csg_query {
 } csg_query;
 
 /* Span list of compiled node ni along the ray, placed at the arena top on
- * entry (nothing is left allocated when it returns 0). */
-static int csg_eval(csg_query *q, int ni, span **out)
+ * entry (nothing is left allocated when it returns 0). Only parameters in
+ * [lo, hi] can matter to the caller, so subtrees whose bounds lie outside
+ * are skipped; the right operand of a difference or intersection only
+ * matters where the left one has spans, which narrows [lo, hi] further. */
+static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
 {
     const csg_node *nd = &q->c->nodes[ni];
     size_t mark = arena_mark(q->ar);
     span *l = NULL, *r = NULL, *tmp, *dst;
     int nl, nr, n;
-    num tc;
+    num tc, rlo = lo, rhi = hi;
     if (nd->op == CSG_LEAF) {
         span s;
         q->st->prim_tests++;
-        if (!NS(prim_intersect)(&q->prims[nd->prim], q->r, q->tmax, &s))
+        if (!NS(prim_intersect)(&q->prims[nd->prim], q->r, lo, hi, &s))
             return 0;
         if (!(dst = arena_alloc(q->ar, sizeof s))) {
             q->st->arena_full++;
@@ -359,17 +362,21 @@ static int csg_eval(csg_query *q, int ni, span **out)
     }
     if (nd->bounded) {
         q->st->bound_tests++;
-        if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, q->tmax, &tc)) {
+        if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)) {
             q->st->pruned++;
             return 0;
         }
     }
-    nl = csg_eval(q, nd->left, &l);
+    nl = csg_eval(q, nd->left, lo, hi, &l);
     if (nl == 0 && nd->op != CSG_UNION) {
         q->st->pruned++;          /* the right operand cannot matter */
         return 0;
     }
-    nr = csg_eval(q, nd->right, &r);
+    if (nd->op != CSG_UNION) {
+        rlo = num_max(lo, l[0].a.t);
+        rhi = num_min(hi, l[nl - 1].b.t);
+    }
+    nr = csg_eval(q, nd->right, rlo, rhi, &r);
     if (nr == 0) {
         if (nd->op == CSG_INTER) {
             arena_release(q->ar, mark);
@@ -412,7 +419,7 @@ int NS(csg_intersect)(const csg *c, const prim *prims, const ray *r, num tmax,
     q.tmax = tmax;
     q.ar = ar;
     q.st = st;
-    n = csg_eval(&q, c->root, &s);
+    n = csg_eval(&q, c->root, NUM_ZERO, tmax, &s);
     for (i = 0; i < n && !found; i++) {
         const span_end *e[2];
         int k;

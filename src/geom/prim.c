@@ -381,7 +381,7 @@ static int prim_side(const prim *p, const ray *r, num tc, span *s)
     return 0;
 }
 
-int NS(prim_intersect)(const prim *p, const ray *r, num tmax, span *out)
+int NS(prim_intersect)(const prim *p, const ray *r, num tmin, num tmax, span *out)
 {
     const num big = num_from_i(GEOM_TBIG);
     span s;
@@ -393,7 +393,7 @@ int NS(prim_intersect)(const prim *p, const ray *r, num tmax, span *out)
     if (p->bounded) {
         /* The bound only rejects: span ends always come from faces, so a
          * rounding difference between bound and face cannot hide a face. */
-        if (vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmax, &tc))
+        if (vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmin, tmax, &tc))
             return 0;
     }
     if (!prim_clip_planes(p, r, &s))

@@ -54,10 +54,11 @@ typedef struct prim {
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
                      const char *file, diag *err);
 
-/* Intersects r with p over parameters up to tmax (bounding tests use it).
+/* Intersects r with p; the bounding test rejects p when it lies wholly
+ * outside the parameters [tmin, tmax] (the span itself is not clipped).
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
  * and carry FACE_NONE) or 0 when the ray misses. */
-int NS(prim_intersect)(const prim *p, const ray *r, num tmax, span *out);
+int NS(prim_intersect)(const prim *p, const ray *r, num tmin, num tmax, span *out);
 
 /* Surface data of face `face` of p at world point pt (a hit point). */
 void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out);

@@ -83,14 +83,14 @@ static inline num num_div_clamp(num a, num b, num lim)
 }
 
 /* Bounding-sphere rejection: 1 when the ray o + t d (d unit) misses the
- * sphere (c, r) for every t in [0, tmax]; else 0 and *tc = the parameter of
+ * sphere (c, r) for every t in [tmin, tmax]; else 0 and *tc = the parameter of
  * the ray point closest to c. Division-free; the only squares are of
  * quantities already checked to be at most r (docs/numerics.md). */
-static inline int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmax, num *tc)
+static inline int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmin, num tmax, num *tc)
 {
     vec3 oc = vec3_sub(c, o), q;
     num t = vec3_dot(oc, d);
-    if (num_add(t, r) < NUM_ZERO || num_sub(t, r) > tmax)
+    if (num_add(t, r) < tmin || num_sub(t, r) > tmax)
         return 1;
     q = vec3_madd(oc, num_neg(t), d);
     if (vec3_maxabs(q) > r || vec3_dot(q, q) > num_mul(r, r))

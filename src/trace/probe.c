@@ -65,7 +65,7 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
     span s;
     if (pi < 0 || (size_t)pi >= cs->nprims || probe_ray(cs, o, d, &r))
         return 0;
-    if (!NS(prim_intersect)(&cs->prims[pi], &r, num_from_i(GEOM_TMAX), &s))
+    if (!NS(prim_intersect)(&cs->prims[pi], &r, num_neg(num_from_i(GEOM_TBIG)), num_from_i(GEOM_TMAX), &s))
         return 0;
     t[0] = num_to_d(s.a.t) / cs->nm.scale;
     t[1] = num_to_d(s.b.t) / cs->nm.scale;
