@@ -68,12 +68,14 @@ int scene_lex_next(scene_lex *lx, scene_lex_stmt *st, diag *err)
         if (r < 0) {
             if (!err->status)
                 diag_at(err, DIAG_IO, lx->src->name, lx->recno + 1, 0, "read error");
-            return err->status;
+            return -1;
         }
         if (r == 0) {
-            if (cont)
-                return diag_at(err, DIAG_INPUT, lx->src->name, cont_line, cont_col,
-                               "continued statement has no continuation card");
+            if (cont) {
+                diag_at(err, DIAG_INPUT, lx->src->name, cont_line, cont_col,
+                        "continued statement has no continuation card");
+                return -1;
+            }
             return 0;
         }
         lx->recno++;
@@ -85,9 +87,17 @@ int scene_lex_next(scene_lex *lx, scene_lex_stmt *st, diag *err)
             size_t before = st->ntok;
             int more;
             if (scene_lex_card(lx, rec, len, st, &more, err))
-                return err->status;
-            if (st->ntok == before && !more)
-                continue;               /* blank card */
+                return -1;
+            if (st->ntok == before && !more) {
+                /* a blank card ends a deck section; after a `-` it would
+                 * silently join two statements, so it is refused there */
+                if (cont) {
+                    diag_at(err, DIAG_INPUT, lx->src->name, cont_line, cont_col,
+                            "continued statement has no continuation card");
+                    return -1;
+                }
+                continue;
+            }
             if (more) {
                 /* the dropped `-` item is still in the array */
                 cont = 1;

@@ -1,7 +1,8 @@
 /* scene_lex — card images to statements for the scene parser.
  * Reads records from a recsrc, keeps columns 1-72 (73-80 carry sequence
  * numbers and are ignored), drops comment cards (`*` in column 1) and blank
- * cards, joins continued cards (a card whose last item is a lone `-`) and
+ * cards, joins continued cards (a card whose last item is a lone `-`; comment
+ * cards may come between, blank cards may not) and
  * splits the result into blank-separated items, each with the record and
  * column it came from. Sits between the record reader and scene_parse. */
 #ifndef SCENE_LEX_H
@@ -34,9 +35,9 @@ typedef struct scene_lex {
 void scene_lex_init(scene_lex *lx, const recsrc *src);
 
 /* Reads the next statement into *st. Returns 1 with a statement, 0 at the
- * end of the deck, or DIAG_INPUT / DIAG_IO (-1 from the recsrc is reported
- * as DIAG_IO) with err filled. Errors: a character outside printable ASCII,
- * a statement of more than SCENE_LEX_MAX_ITEMS items, a continuation at the
- * end of the deck. */
+ * end of the deck, or -1 with err filled (DIAG_INPUT for the deck's faults,
+ * DIAG_IO for a read error of the recsrc). Errors: a character outside printable ASCII,
+ * a statement of more than SCENE_LEX_MAX_ITEMS items, a continuation
+ * followed by a blank card or the end of the deck. */
 int scene_lex_next(scene_lex *lx, scene_lex_stmt *st, diag *err);
 #endif

@@ -703,7 +703,9 @@ int scene_parse(const recsrc *src, scene **out, diag *err)
             goto done;
         }
     }
-    if (r == 0)
+    if (r < 0)
+        r = err->status;
+    else
         r = scene_parse_finish(p);
 done:
     if (r == 0) {

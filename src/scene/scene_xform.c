@@ -25,15 +25,6 @@ void scene_xform_mul(double out[16], const double a[16], const double b[16])
     memcpy(out, r, sizeof r);
 }
 
-void scene_xform_point(const double m[16], const double p[3], double out[3])
-{
-    double r[3];
-    int i;
-    for (i = 0; i < 3; i++)
-        r[i] = m[i * 4] * p[0] + m[i * 4 + 1] * p[1] + m[i * 4 + 2] * p[2] + m[i * 4 + 3];
-    memcpy(out, r, sizeof r);
-}
-
 int scene_xform_ok(const double m[16])
 {
     double det, norms = 1;

@@ -16,8 +16,6 @@
 void scene_xform_identity(double m[16]);
 /* out = a * b (out may alias a or b). */
 void scene_xform_mul(double out[16], const double a[16], const double b[16]);
-/* Applies m to the point p (w = 1). */
-void scene_xform_point(const double m[16], const double p[3], double out[3]);
 /* 1 if m is finite, within SCENE_XFORM_MAX_ABS, no row of its 3x3 linear
  * part is shorter than 1/SCENE_XFORM_MAX_ABS and that part is invertible
  * (|det| above 1e-12 times the product of its row lengths). */

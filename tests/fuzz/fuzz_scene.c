@@ -25,6 +25,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                                      n->right < 0 || (size_t)n->right >= i))
                 __builtin_trap();
         }
+        for (i = 0; i < s->nroots; i++)
+            if (s->roots[i] < 0 || (size_t)s->roots[i] >= s->nnodes)
+                __builtin_trap();
         for (i = 0; i < s->nprims; i++)
             if (s->prims[i].attr < 0 || (size_t)s->prims[i].attr >= s->nattrs)
                 __builtin_trap();

@@ -353,11 +353,14 @@ static void test_scene_parse_continuation(void **state)
 {
     scene *s;
     (void)state;
-    s = parse_ok(TAIL "CYLINDER C -\n* a comment between the cards\n\n   2 -\n  3 TRANSLATE 1 -\n"
+    s = parse_ok(TAIL "CYLINDER C -\n* a comment between the cards\n   2 -\n  3 TRANSLATE 1 -\n"
                  "-\n 2 3\nOBJECT C\n");
     assert_true(s->prims[0].dim[0] == 2 && s->prims[0].dim[1] == 3);
     assert_point(s->prims[0].world_from_object, 0, 0, 0, 1, 2, 3);
     scene_free(s);
+    /* a blank card may not follow a continued card */
+    expect_error(TAIL "SPHERE A 1 -\n\nOBJECT A\n",
+                 "t.scene:4:12: error: continued statement has no continuation card");
     /* a "-" glued to an item is a sign, not a continuation */
     expect_error(TAIL "SPHERE A 1 TRANSLATE 1 2 -3-\n",
                  "t.scene:4:26: error: SPHERE: expected a number, found -3-");
@@ -505,6 +508,36 @@ static void test_scene_parse_error_texts(void **state)
         expect_error(cases[i].deck, cases[i].want);
 }
 
+/* A record source that fails after its first record. */
+static int failing_next(void *ctx, const char **rec, size_t *len, diag *err)
+{
+    int *calls = ctx;
+    (void)err;
+    if ((*calls)++ > 0)
+        return -1;
+    *rec = "EYE 1 2 3";
+    *len = 9;
+    return 1;
+}
+
+static void test_scene_parse_read_error(void **state)
+{
+    int calls = 0;
+    recsrc src;
+    scene *s = NULL;
+    diag err;
+    char buf[256];
+    (void)state;
+    src.next = failing_next;
+    src.ctx = &calls;
+    src.name = "r.scene";
+    diag_init(&err);
+    assert_int_equal(scene_parse(&src, &s, &err), DIAG_IO);
+    assert_null(s);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "r.scene:2: error: read error");
+}
+
 static void test_scene_parse_light_limit(void **state)
 {
     char *buf = NULL;
@@ -590,6 +623,35 @@ static void test_scene_parse_deep_nesting(void **state)
         addf(&buf, &len, &cap, "INTER S%d S0 S%d\n", i, i - 1);
     addf(&buf, &len, &cap, "OBJECT S10000\n");
     expect_error(buf, "t.scene:68:14: error: INTER: S63 would nest solids more than 64 deep");
+    free(buf);
+}
+
+/* The table limits on attributes, solids and operands. */
+static void test_scene_parse_table_limits(void **state)
+{
+    char *buf = NULL;
+    size_t len = 0, cap = 0;
+    int i, j;
+    (void)state;
+    for (i = 1; i < 4096; i++)                 /* DEFAULT is the 4096th */
+        addf(&buf, &len, &cap, "ATTR A%d COLOR 1 1 1\n", i);
+    addf(&buf, &len, &cap, "ATTR TOOMANY COLOR 1 1 1\n");
+    expect_error(buf, "t.scene:4096:6: error: ATTR: more than 4096 attributes");
+    len = 0;
+    for (i = 0; i < 65536; i++)
+        addf(&buf, &len, &cap, "HALFSPACE H%d\n", i);
+    addf(&buf, &len, &cap, "HALFSPACE TOOMANY\n");
+    expect_error(buf, "t.scene:65537:11: error: HALFSPACE: more than 65536 solids");
+    len = 0;
+    addf(&buf, &len, &cap, "SPHERE A 1\n");
+    for (i = 0; i < 200; i++) {                /* 200 x 500 operands */
+        addf(&buf, &len, &cap, "UNION U%d -\n", i);
+        for (j = 0; j < 500; j++)
+            addf(&buf, &len, &cap, j % 20 == 19 && j < 499 ? " A -\n" : " A");
+        addf(&buf, &len, &cap, "\n");
+    }
+    addf(&buf, &len, &cap, "UNION LAST A A\n");
+    expect_error(buf, "t.scene:5202:12: error: UNION: more than 100000 operands in all");
     free(buf);
 }
 
@@ -760,10 +822,12 @@ int main(void)
         cmocka_unit_test(test_scene_parse_case_insensitive),
         cmocka_unit_test(test_scene_parse_names),
         cmocka_unit_test(test_scene_parse_error_texts),
+        cmocka_unit_test(test_scene_parse_read_error),
         cmocka_unit_test(test_scene_parse_light_limit),
         cmocka_unit_test(test_scene_parse_item_limit),
         cmocka_unit_test(test_scene_parse_expansion_limit),
         cmocka_unit_test(test_scene_parse_deep_nesting),
+        cmocka_unit_test(test_scene_parse_table_limits),
         cmocka_unit_test(test_scene_parse_many_definitions),
         cmocka_unit_test(test_scene_parse_oom_sweep),
         cmocka_unit_test(test_scene_parse_shipped_scenes),
