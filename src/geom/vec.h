@@ -39,7 +39,9 @@ static inline int vec3_normalize(vec3 v, vec3 *unit, num *len)
     vec3 w;
     if (m == NUM_ZERO)
         return -1;
-    w = vec3_div(v, m);
+    /* one reciprocal instead of three quotients when 1/m is well inside
+     * the range (m >= 1/64) */
+    w = m >= num_div(NUM_ONE, num_from_i(64)) ? vec3_scale(v, num_div(NUM_ONE, m)) : vec3_div(v, m);
     s = num_sqrt(vec3_dot(w, w));
     if (s == NUM_ZERO)
         return -1;
