@@ -329,7 +329,7 @@ size_t NS(csg_arena_bytes)(const csg *c)
 typedef struct csg_query {
     const csg *c;
     const prim *prims;
-    const ray *r;
+    const prim_ray *r;
     num tmax;
     arena *ar;
     geom_stats *st;
@@ -404,7 +404,7 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
     return n;
 }
 
-int NS(csg_intersect)(const csg *c, const prim *prims, const ray *r, num tmax,
+int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
                       arena *ar, geom_stats *st, csg_hit *hit)
 {
     csg_query q;
@@ -426,7 +426,7 @@ int NS(csg_intersect)(const csg *c, const prim *prims, const ray *r, num tmax,
         e[0] = &s[i].a;
         e[1] = &s[i].b;
         for (k = 0; k < 2; k++) {
-            if (e[k]->t <= NUM_ZERO || e[k]->face == FACE_NONE)
+            if (e[k]->t <= NUM_ZERO || e[k]->face == GEOM_FACE_NONE)
                 continue;
             if (e[k]->t > tmax) {
                 i = n;

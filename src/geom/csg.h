@@ -49,6 +49,6 @@ size_t NS(csg_arena_bytes)(const csg *c);
 
 /* Nearest surface crossing with 0 < t <= tmax. Returns 1 and *hit, or 0.
  * Temporaries come from ar (released before returning); counters go to st. */
-int NS(csg_intersect)(const csg *c, const prim *prims, const ray *r, num tmax,
+int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
                       arena *ar, geom_stats *st, csg_hit *hit);
 #endif

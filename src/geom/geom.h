@@ -16,13 +16,13 @@
 #define GEOM_TBIG  16384
 #define GEOM_LIGHT_MAX 1024.0   /* lights farther from the centre are pulled in */
 
-enum { FACE_NONE = -1 };
-enum { FACE_SPHERE_SURFACE = 0 };
-enum { FACE_CYL_SIDE = 0, FACE_CYL_TOP = 1, FACE_CYL_BOTTOM = 2 };
-enum { FACE_CONE_SIDE = 0, FACE_CONE_TOP = 1, FACE_CONE_BOTTOM = 2 };
-enum { FACE_BLOCK_XMIN = 0, FACE_BLOCK_XMAX, FACE_BLOCK_YMIN, FACE_BLOCK_YMAX,
-       FACE_BLOCK_ZMIN, FACE_BLOCK_ZMAX };
-enum { FACE_HALFSPACE_PLANE = 0 };
+enum { GEOM_FACE_NONE = -1 };
+enum { GEOM_FACE_SPHERE_SURFACE = 0 };
+enum { GEOM_FACE_CYL_SIDE = 0, GEOM_FACE_CYL_TOP = 1, GEOM_FACE_CYL_BOTTOM = 2 };
+enum { GEOM_FACE_CONE_SIDE = 0, GEOM_FACE_CONE_TOP = 1, GEOM_FACE_CONE_BOTTOM = 2 };
+enum { GEOM_FACE_BLOCK_XMIN = 0, GEOM_FACE_BLOCK_XMAX, GEOM_FACE_BLOCK_YMIN, GEOM_FACE_BLOCK_YMAX,
+       GEOM_FACE_BLOCK_ZMIN, GEOM_FACE_BLOCK_ZMAX };
+enum { GEOM_FACE_HALFSPACE_PLANE = 0 };
 
 /* Number of faces of a primitive kind, and a face's name ("SIDE", "XMIN",
  * ...; NULL when out of range). */

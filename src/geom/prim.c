@@ -91,12 +91,12 @@ static int prim_fail(diag *err, const char *file, const scene_prim *sp, const ch
 typedef struct prim_cplane { double n[3], p[3]; int face; } prim_cplane;
 
 static const prim_cplane prim_block_planes[6] = {
-    {{-1, 0, 0}, {0, 0, 0}, FACE_BLOCK_XMIN}, {{1, 0, 0}, {1, 0, 0}, FACE_BLOCK_XMAX},
-    {{0, -1, 0}, {0, 0, 0}, FACE_BLOCK_YMIN}, {{0, 1, 0}, {0, 1, 0}, FACE_BLOCK_YMAX},
-    {{0, 0, -1}, {0, 0, 0}, FACE_BLOCK_ZMIN}, {{0, 0, 1}, {0, 0, 1}, FACE_BLOCK_ZMAX}};
+    {{-1, 0, 0}, {0, 0, 0}, GEOM_FACE_BLOCK_XMIN}, {{1, 0, 0}, {1, 0, 0}, GEOM_FACE_BLOCK_XMAX},
+    {{0, -1, 0}, {0, 0, 0}, GEOM_FACE_BLOCK_YMIN}, {{0, 1, 0}, {0, 1, 0}, GEOM_FACE_BLOCK_YMAX},
+    {{0, 0, -1}, {0, 0, 0}, GEOM_FACE_BLOCK_ZMIN}, {{0, 0, 1}, {0, 0, 1}, GEOM_FACE_BLOCK_ZMAX}};
 static const prim_cplane prim_cap_planes[2] = {
-    {{0, 0, 1}, {0, 0, 1}, FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, FACE_CYL_BOTTOM}};
-static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, FACE_HALFSPACE_PLANE}};
+    {{0, 0, 1}, {0, 0, 1}, GEOM_FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, GEOM_FACE_CYL_BOTTOM}};
+static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, GEOM_FACE_HALFSPACE_PLANE}};
 
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
                      const char *file, diag *err)
@@ -239,7 +239,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
 /* ---- intersection (num) -------------------------------------------- */
 
 /* Intersects the span s with the half-spaces of p's planes. 0 if empty. */
-static int prim_clip_planes(const prim *p, const ray *r, span *s)
+static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
 {
     const num big = num_from_i(GEOM_TBIG);
     int k;
@@ -272,14 +272,14 @@ typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
  * parameter of the ray point closest to the bounding-sphere centre; the
  * origin is moved there first and then to the point closest to the
  * canonical centre, so every squared quantity is O(1) (docs/numerics.md). */
-static int prim_side(const prim *p, const ray *r, num tc, span *s)
+static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
 {
     vec3 o1 = vec3_madd(r->o, tc, r->d);
     vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->inv_smin);
     vec3 du, cl, rel;
     num L, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];
-    int npc = 1, k, side = p->kind == PRIM_SPHERE ? FACE_SPHERE_SURFACE : FACE_CYL_SIDE;
+    int npc = 1, k, side = p->kind == PRIM_SPHERE ? GEOM_FACE_SPHERE_SURFACE : GEOM_FACE_CYL_SIDE;
 
     if (vec3_normalize(mat3_mul(&p->minv_s, r->d), &du, &L))
         return 0;
@@ -371,8 +371,8 @@ static int prim_side(const prim *p, const ray *r, num tc, span *s)
         span w = *s;
         num t0 = num_add(tc, num_mul(num_add(sh, pc[k].s0), ratio));
         num t1 = num_add(tc, num_mul(num_add(sh, pc[k].s1), ratio));
-        if (t0 > w.a.t) { w.a.t = t0; w.a.face = pc[k].f0 ? side : FACE_NONE; }
-        if (t1 < w.b.t) { w.b.t = t1; w.b.face = pc[k].f1 ? side : FACE_NONE; }
+        if (t0 > w.a.t) { w.a.t = t0; w.a.face = pc[k].f0 ? side : GEOM_FACE_NONE; }
+        if (t1 < w.b.t) { w.b.t = t1; w.b.face = pc[k].f1 ? side : GEOM_FACE_NONE; }
         if (w.a.t < w.b.t) {
             *s = w;
             return 1;
@@ -381,7 +381,7 @@ static int prim_side(const prim *p, const ray *r, num tc, span *s)
     return 0;
 }
 
-int NS(prim_intersect)(const prim *p, const ray *r, num tmin, num tmax, span *out)
+int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out)
 {
     const num big = num_from_i(GEOM_TBIG);
     span s;
@@ -389,7 +389,7 @@ int NS(prim_intersect)(const prim *p, const ray *r, num tmin, num tmax, span *ou
     s.a.t = num_neg(big);
     s.b.t = big;
     s.a.prim = s.b.prim = p->id;
-    s.a.face = s.b.face = FACE_NONE;
+    s.a.face = s.b.face = GEOM_FACE_NONE;
     if (p->bounded) {
         /* The bound only rejects: span ends always come from faces, so a
          * rounding difference between bound and face cannot hide a face. */
@@ -444,7 +444,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
     case PRIM_CONE: {
         double a = num_to_d(p->cone_a), k = num_to_d(p->cone_k), rf;
         if (p->kind == PRIM_CYLINDER) { a = 1; k = 0; }
-        if (face == FACE_CYL_SIDE) {
+        if (face == GEOM_FACE_CYL_SIDE) {
             planar = 0;
             u = th / (2 * PRIM_PI);
             v = l[2];
@@ -452,26 +452,26 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
             du[0] = -2 * PRIM_PI * l[1]; du[1] = 2 * PRIM_PI * l[0];
             dv[0] = k * cos(th); dv[1] = k * sin(th); dv[2] = 1;
         } else {
-            rf = face == FACE_CYL_TOP ? a + k : a;
+            rf = face == GEOM_FACE_CYL_TOP ? a + k : a;
             if (rf <= 0) {
                 u = v = 0.5;
-            } else if (face == FACE_CYL_TOP) {
+            } else if (face == GEOM_FACE_CYL_TOP) {
                 u = (l[0] / rf + 1) / 2; v = (l[1] / rf + 1) / 2;
             } else {
                 u = (1 - l[0] / rf) / 2; v = (l[1] / rf + 1) / 2;
             }
-            du[0] = face == FACE_CYL_TOP ? 2 * rf : -2 * rf;
+            du[0] = face == GEOM_FACE_CYL_TOP ? 2 * rf : -2 * rf;
             dv[1] = 2 * rf;
         }
         break;
     }
     case PRIM_BLOCK:
         switch (face) {
-        case FACE_BLOCK_XMIN: u = 1 - l[1]; v = l[2]; du[1] = -1; dv[2] = 1; break;
-        case FACE_BLOCK_XMAX: u = l[1]; v = l[2]; du[1] = 1; dv[2] = 1; break;
-        case FACE_BLOCK_YMIN: u = l[0]; v = l[2]; du[0] = 1; dv[2] = 1; break;
-        case FACE_BLOCK_YMAX: u = 1 - l[0]; v = l[2]; du[0] = -1; dv[2] = 1; break;
-        case FACE_BLOCK_ZMIN: u = 1 - l[0]; v = l[1]; du[0] = -1; dv[1] = 1; break;
+        case GEOM_FACE_BLOCK_XMIN: u = 1 - l[1]; v = l[2]; du[1] = -1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_XMAX: u = l[1]; v = l[2]; du[1] = 1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_YMIN: u = l[0]; v = l[2]; du[0] = 1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_YMAX: u = 1 - l[0]; v = l[2]; du[0] = -1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_ZMIN: u = 1 - l[0]; v = l[1]; du[0] = -1; dv[1] = 1; break;
         default:              u = l[0]; v = l[1]; du[0] = 1; dv[1] = 1; break;
         }
         break;

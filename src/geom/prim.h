@@ -24,7 +24,7 @@ typedef struct ray {
     vec3 o, d;
     int excl_prim;
     int excl_enter;
-} ray;
+} prim_ray;
 
 typedef struct prim_plane {
     vec3 n;            /* outward unit normal, world */
@@ -57,8 +57,8 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
 /* Intersects r with p; the bounding test rejects p when it lies wholly
  * outside the parameters [tmin, tmax] (the span itself is not clipped).
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
- * and carry FACE_NONE) or 0 when the ray misses. */
-int NS(prim_intersect)(const prim *p, const ray *r, num tmin, num tmax, span *out);
+ * and carry GEOM_FACE_NONE) or 0 when the ray misses. */
+int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
 
 /* Surface data of face `face` of p at world point pt (a hit point). */
 void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out);

@@ -12,7 +12,7 @@
 typedef struct span_end {
     num t;
     int prim;          /* primitive index, -1 for an unbounded end */
-    int face;          /* face id (geom.h), FACE_NONE for an unbounded end */
+    int face;          /* face id (geom.h), GEOM_FACE_NONE for an unbounded end */
 } span_end;
 
 typedef struct span {

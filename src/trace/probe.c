@@ -40,7 +40,7 @@ static void probe_free(void *v)
 }
 
 /* Deck ray -> normalised-world ray in num; -1 for a zero direction. */
-static int probe_ray(const cscene *cs, const double *o, const double *d, ray *r)
+static int probe_ray(const cscene *cs, const double *o, const double *d, prim_ray *r)
 {
     double w[3];
     NS(cscene_to_world)(cs, o, w);
@@ -61,7 +61,7 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
 {
     const probe_cs *p = v;
     const cscene *cs = p->cs;
-    ray r;
+    prim_ray r;
     span s;
     if (pi < 0 || (size_t)pi >= cs->nprims || probe_ray(cs, o, d, &r))
         return 0;
@@ -77,7 +77,7 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
 /* Nearest hit of r; fills h (deck units) and the num hit point. The probe
  * owns one arena, so one compiled probe must not be queried from two
  * threads at once. */
-static int probe_trace(const probe_cs *pc, const ray *r, probe_hit *h, vec3 *pn)
+static int probe_trace(const probe_cs *pc, const prim_ray *r, probe_hit *h, vec3 *pn)
 {
     const cscene *cs = pc->cs;
     geom_stats gs;
@@ -107,7 +107,7 @@ static int probe_trace(const probe_cs *pc, const ray *r, probe_hit *h, vec3 *pn)
 static int probe_hit_fn(const void *v, const double *o, const double *d, probe_hit *h)
 {
     const probe_cs *p = v;
-    ray r;
+    prim_ray r;
     vec3 pn;
     if (probe_ray(p->cs, o, d, &r))
         return 0;
@@ -118,7 +118,7 @@ static int probe_respawn(const void *v, const double *o, const double *d, const 
                          probe_hit *h1, probe_hit *h2)
 {
     const probe_cs *p = v;
-    ray r, r2;
+    prim_ray r, r2;
     vec3 pn;
     double l = sqrt(d2[0] * d2[0] + d2[1] * d2[1] + d2[2] * d2[2]), u[3];
     if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || !(l > 0))

@@ -65,7 +65,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                     double sx = (2 * (x + (i + 0.5) / aa) / o->width - 1) * cs->tan_half * aspect;
                     double sy = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
                     double dd[3], rgb[3];
-                    ray r;
+                    prim_ray r;
                     int p;
                     for (k = 0; k < 3; k++)
                         dd[k] = cs->fwd[k] + sx * cs->right[k] + sy * cs->up[k];

@@ -36,7 +36,7 @@ static vec3 trace_vec_d(const double *v) { return vec3_from_d(v); }
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,
  * double) along unit direction d: the ray excludes that primitive's surface
  * and knows whether it goes into the primitive. */
-static void trace_spawn(ray *r, vec3 p, vec3 d, int pi, const double *n_prim)
+static void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_prim)
 {
     double dd[3];
     vec3_to_d(d, dd);
@@ -50,14 +50,14 @@ static void trace_spawn(ray *r, vec3 p, vec3 d, int pi, const double *n_prim)
 static int trace_shadowed(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, num dist, int pi,
                           const double *n_prim)
 {
-    ray s;
+    prim_ray s;
     csg_hit h;
     trace_spawn(&s, p, l, pi, n_prim);
     tc->rs.rays_shadow++;
     return NS(csg_intersect)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h);
 }
 
-void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
+void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
                    double weight, double rgb[3], int *pid)
 {
     const scene *sc = cs->sc;
@@ -142,7 +142,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
             /* t = eta d + (eta cosi - sqrt k) ns, in num */
             num ne = num_from_d(eta), nk = num_sub(num_mul(ne, num_from_d(cosi)), num_sqrt(num_from_d(k)));
             vec3 td;
-            ray tr;
+            prim_ray tr;
             double tc3[3];
             if (!vec3_normalize(vec3_add(vec3_scale(r->d, ne), vec3_scale(nsn, nk)), &td, NULL)) {
                 trace_spawn(&tr, p, td, h.prim, sf.n);
@@ -156,7 +156,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
     if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT) {
         /* r = d - 2 (d.ns) ns, in num */
         vec3 rd;
-        ray rr;
+        prim_ray rr;
         double rc[3];
         num two_dn = num_mul(num_from_i(2), vec3_dot(r->d, nsn));
         if (!vec3_normalize(vec3_sub(r->d, vec3_scale(nsn, two_dn)), &rd, NULL)) {

@@ -19,6 +19,6 @@ void NS(trace_ctx_free)(trace_ctx *tc);
 
 /* Shades ray r (a primary ray: depth 0, weight 1) into rgb (linear, not
  * clamped); *pid receives the primitive hit (-1 for the background). */
-void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const ray *r, int depth,
+void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
                    double weight, double rgb[3], int *pid);
 #endif
