@@ -72,6 +72,7 @@ static void bench_diff(const image *a, const image *b, double *psnr, double *pct
     *maxd = m;
 }
 
+/* 1 when an executable gnuplot is on PATH. */
 static int bench_has_gnuplot(void)
 {
     const char *path = getenv("PATH");
@@ -90,6 +91,9 @@ static int bench_has_gnuplot(void)
     return 0;
 }
 
+/* Charts seconds against max difference, one labelled point per run, by
+ * piping a script with inline data to gnuplot. The PNG is written under a
+ * temporary name and renamed when gnuplot succeeds. CLI_OK or CLI_IO. */
 static int bench_plot(const char *out, const bench_row *rows, int n)
 {
     FILE *gp;
@@ -126,6 +130,7 @@ static int bench_plot(const char *out, const bench_row *rows, int n)
     return CLI_OK;
 }
 
+/* Writes the rows as CSV with a header line, committed on close. */
 static int bench_csv(const char *path, const bench_row *rows, int n)
 {
     outfile of;

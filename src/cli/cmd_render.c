@@ -36,6 +36,7 @@ static void render_help(FILE *f)
         RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA);
 }
 
+/* Progress bar on stderr (a terminal), redrawn after every tile. */
 static void render_progress(void *ctx, long done, long total)
 {
     int width = 40, fill = (int)(done * width / total);
