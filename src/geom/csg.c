@@ -8,7 +8,7 @@
 
 /* ---- build ----------------------------------------------------------- */
 
-typedef struct csg_bound { double c[3], r; int bounded; size_t nspans, peak; } csg_bound;
+typedef struct csg_bound { double c[3], r, lo[3], hi[3]; int bounded; size_t nspans, peak; } csg_bound;
 
 typedef struct csg_ctx {
     const scene *sc;
@@ -34,6 +34,24 @@ static int csg_err(csg_ctx *x, int status, const char *what)
     return diag_at(x->err, status, x->sc->source ? x->sc->source : "", 0, 0, "%s", what);
 }
 
+/* Rounds the node's box outwards by 2^-10 (relative to the normalised
+ * scene of width 32, far above any rounding of the tests), and uses it only
+ * when its volume is under half the sphere's: elsewhere the sphere alone is
+ * cheaper. */
+static void csg_set_box(csg_node *nd, const csg_bound *b)
+{
+    double lo[3], hi[3], vbox = 1, pad = 1.0 / 1024;
+    int i;
+    for (i = 0; i < 3; i++) {
+        lo[i] = b->lo[i] - pad;
+        hi[i] = b->hi[i] + pad;
+        vbox *= hi[i] - lo[i];
+    }
+    nd->lo = vec3_from_d(lo);
+    nd->hi = vec3_from_d(hi);
+    nd->use_box = vbox < 0.5 * 4.18879 * b->r * b->r * b->r;
+}
+
 /* Appends a compiled node; its bound follows from the children. Returns the
  * node index or -1 (error recorded). */
 static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
@@ -57,6 +75,8 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         b->bounded = p->bounded;
         vec3_to_d(p->bc, b->c);
         b->r = num_to_d(p->br);
+        memcpy(b->lo, p->box_d, sizeof b->lo);
+        memcpy(b->hi, p->box_d + 3, sizeof b->hi);
         b->nspans = 1;
         b->peak = 1;
     } else {
@@ -65,12 +85,24 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         b->nspans = bl->nspans + br->nspans;
         b->peak = a > c ? (a > e ? a : e) : (c > e ? c : e);
         if (op == CSG_DIFF) {
-            b->bounded = bl->bounded;
-            memcpy(b->c, bl->c, sizeof b->c);
-            b->r = bl->r;
+            size_t ns = b->nspans, pk = b->peak;
+            *b = *bl;
+            b->nspans = ns;
+            b->peak = pk;
         } else if (op == CSG_INTER) {
             const csg_bound *s = !bl->bounded ? br : !br->bounded ? bl : bl->r <= br->r ? bl : br;
-            *b = (csg_bound){{s->c[0], s->c[1], s->c[2]}, s->r, s->bounded, b->nspans, b->peak};
+            size_t ns = b->nspans, pk = b->peak;
+            int i;
+            *b = *s;
+            b->nspans = ns;
+            b->peak = pk;
+            if (bl->bounded && br->bounded)         /* the boxes intersect */
+                for (i = 0; i < 3; i++) {
+                    b->lo[i] = bl->lo[i] > br->lo[i] ? bl->lo[i] : br->lo[i];
+                    b->hi[i] = bl->hi[i] < br->hi[i] ? bl->hi[i] : br->hi[i];
+                    if (b->hi[i] < b->lo[i])
+                        b->hi[i] = b->lo[i];
+                }
         } else if (bl->bounded && br->bounded) {
             double d[3], dist, R;
             int i;
@@ -78,6 +110,10 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
                 d[i] = br->c[i] - bl->c[i];
             dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             b->bounded = 1;
+            for (i = 0; i < 3; i++) {
+                b->lo[i] = bl->lo[i] < br->lo[i] ? bl->lo[i] : br->lo[i];
+                b->hi[i] = bl->hi[i] > br->hi[i] ? bl->hi[i] : br->hi[i];
+            }
             if (dist + br->r <= bl->r) {
                 memcpy(b->c, bl->c, sizeof b->c); b->r = bl->r;
             } else if (dist + bl->r <= br->r) {
@@ -99,6 +135,8 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         nd->bc = x->prims[pi].bc;
         nd->br = x->prims[pi].br;
     }
+    if (b->bounded)
+        csg_set_box(nd, b);
     return x->n++;
 }
 
@@ -347,6 +385,15 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
     span *l = NULL, *r = NULL, *tmp, *dst;
     int nl, nr, n;
     num tc, rlo = lo, rhi = hi;
+    if (nd->use_box) {
+        /* leaves test their own sphere in prim_intersect; tc comes from here */
+        q->st->bound_tests++;
+        if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)
+            || vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, tc, lo, hi)) {
+            q->st->pruned++;
+            return 0;
+        }
+    }
     if (nd->op == CSG_LEAF) {
         span s;
         q->st->prim_tests++;
@@ -360,7 +407,7 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
         *out = dst;
         return 1;
     }
-    if (nd->bounded) {
+    if (nd->bounded && !nd->use_box) {
         q->st->bound_tests++;
         if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)) {
             q->st->pruned++;

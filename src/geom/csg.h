@@ -4,8 +4,9 @@
  * At compile time chains of the same operator are flattened and rebuilt as
  * balanced trees over their operands, ordered by position (a bounding-volume
  * hierarchy), and a difference chain a - b - c - ... becomes a - (b u c u ...).
- * Every bounded node carries a bounding sphere; a ray that misses it skips
- * the whole subtree, so a slab minus N cylinders costs O(log N) per ray, not
+ * Every bounded node carries a bounding sphere (a division-free test) and,
+ * where it is much tighter, a bounding box; a ray that misses them skips the
+ * whole subtree, so a slab minus N cylinders costs O(log N) per ray, not
  * O(N). The rendered objects (scene roots) form one more union.
  * Modal: compiled per numeric mode. */
 #ifndef GEOM_CSG_H
@@ -22,6 +23,8 @@ typedef struct csg_node {
     int bounded;
     vec3 bc;                 /* bounding sphere (world) */
     num br;
+    int use_box;             /* the box is much tighter than the sphere */
+    vec3 lo, hi;             /* bounding box (world), inside the sphere */
 } csg_node;
 
 typedef struct csg {

@@ -81,6 +81,39 @@ static double m3d_spectral_norm(const double *m)
  * in every numeric mode. */
 static double prim_snap(double x) { return nearbyint(x * 1099511627776.0) / 1099511627776.0; }
 
+/* Exact bounding box of a bounded primitive in the normalised world:
+ * ellipsoid extents for the sphere, the two end discs for cylinder and
+ * cone, the corners for the block. */
+static void prim_box(prim *p, int kind)
+{
+    const double *a = p->a_d;
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        if (kind == PRIM_SPHERE) {
+            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]);
+            lo = -h;
+            hi = h;
+        } else if (kind == PRIM_BLOCK) {
+            for (k = 0; k < 8; k++) {
+                double v = (k & 1 ? a[3 * i] : 0) + (k & 2 ? a[3 * i + 1] : 0) + (k & 4 ? a[3 * i + 2] : 0);
+                if (v < lo) lo = v;
+                if (v > hi) hi = v;
+            }
+        } else {
+            double ra = kind == PRIM_CONE ? num_to_d(p->cone_a) : 1;
+            double rb = kind == PRIM_CONE ? ra + num_to_d(p->cone_k) : 1;
+            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1]);
+            lo = -ra * h;
+            hi = ra * h;
+            if (a[3 * i + 2] - rb * h < lo) lo = a[3 * i + 2] - rb * h;
+            if (a[3 * i + 2] + rb * h > hi) hi = a[3 * i + 2] + rb * h;
+        }
+        p->box_d[i] = p->org_d[i] + lo;
+        p->box_d[3 + i] = p->org_d[i] + hi;
+    }
+}
+
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
 {
     return diag_at(err, DIAG_INPUT, file, sp->loc.line, sp->loc.col,
@@ -208,6 +241,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         }
     }
     if (p.bounded) {
+        prim_box(&p, sp->kind);
         for (i = 0; i < 3; i++)
             if (fabs(bc[i]) + r > 4 * GEOM_W)
                 return prim_fail(err, file, sp, "outside the normalised scene (internal)");

@@ -37,6 +37,7 @@ typedef struct prim {
     int bounded;       /* 0 for the half-space */
     vec3 bc;           /* bounding sphere centre and radius (world) */
     num br;
+    double box_d[6];   /* bounding box (world): lo[3], hi[3] */
     int nplanes;
     prim_plane pl[6];
     vec3 org;          /* canonical origin in the world */

@@ -84,6 +84,35 @@ static inline num num_div_clamp(num a, num b, num lim)
     }
 }
 
+/* Clips the relative ray interval [*a, *b] (parameters measured from o) to
+ * the slab lo <= o + t d <= hi of one axis, with the same clamped quotient
+ * as plane faces. 1 when the interval becomes empty. */
+static inline int vec3_slab_miss(num lo, num hi, num o, num d, num *a, num *b)
+{
+    num t0, t1, big = num_from_i(16384);
+    if (d == NUM_ZERO)
+        return o < lo || o > hi;
+    t0 = num_div_clamp(num_sub(lo, o), d, big);
+    t1 = num_div_clamp(num_sub(hi, o), d, big);
+    if (d < NUM_ZERO) { num t = t0; t0 = t1; t1 = t; }
+    if (t0 > *a) *a = t0;
+    if (t1 < *b) *b = t1;
+    return *a > *b;
+}
+
+/* Bounding-box rejection, after a bounding-sphere test passed with closest
+ * parameter tc: 1 when the ray misses the box [lo, hi] for every t in
+ * [tmin, tmax]. The origin is first moved to o + tc d, inside the sphere
+ * that contains the box, so every difference is at most the sphere's
+ * diameter. */
+static inline int vec3_box_miss(vec3 lo, vec3 hi, vec3 o, vec3 d, num tc, num tmin, num tmax)
+{
+    vec3 o1 = vec3_madd(o, tc, d);
+    num a = num_sub(tmin, tc), b = num_sub(tmax, tc);
+    return vec3_slab_miss(lo.x, hi.x, o1.x, d.x, &a, &b) || vec3_slab_miss(lo.y, hi.y, o1.y, d.y, &a, &b)
+        || vec3_slab_miss(lo.z, hi.z, o1.z, d.z, &a, &b);
+}
+
 /* Bounding-sphere rejection: 1 when the ray o + t d (d unit) misses the
  * sphere (c, r) for every t in [tmin, tmax]; else 0 and *tc = the parameter of
  * the ray point closest to c. Division-free; the only squares are of
