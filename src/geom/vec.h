@@ -5,6 +5,7 @@
 #ifndef GEOM_VEC_H
 #define GEOM_VEC_H
 #include "num/num.h"
+#include "geom/geom.h"
 
 typedef struct vec3 { num x, y, z; } vec3;
 typedef struct mat3 { num m[9]; } mat3;      /* row-major */
@@ -89,7 +90,7 @@ static inline num num_div_clamp(num a, num b, num lim)
  * as plane faces. 1 when the interval becomes empty. */
 static inline int vec3_slab_miss(num lo, num hi, num o, num d, num *a, num *b)
 {
-    num t0, t1, big = num_from_i(16384);
+    num t0, t1, big = num_from_i(GEOM_TBIG);
     if (d == NUM_ZERO)
         return o < lo || o > hi;
     t0 = num_div_clamp(num_sub(lo, o), d, big);
