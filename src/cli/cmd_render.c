@@ -25,7 +25,7 @@ static void render_help(FILE *f)
         "                        deck's SIZE)\n"
         "  --threads N           worker threads, 1..%d (default: OpenMP's count, %d here)\n"
         "  --aa N                N x N samples per pixel, 1..%d (default 1)\n"
-        "  --stats               print key=value counters to stdout: rays.primary\n"
+        "  --stats               print key=value lines to stdout: numeric rays.primary\n"
         "                        rays.shadow rays.reflected rays.refracted pds.lookups\n"
         "                        fx.overflows tests.prim tests.bound csg.pruned\n"
         "                        time.compile_s time.render_s\n"
