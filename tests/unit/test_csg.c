@@ -2,7 +2,8 @@
  * empty, A u A = A, A n B lies in both), the exactly coincident
  * block-minus-cylinder case pixel-exact in q16 and f64 (head-on render and
  * oblique rays), normals flipped where a difference exposes the subtracted
- * solid, sublinear cost for a slab minus N cylinders, malformed trees. */
+ * solid, random trees against a brute-force point classification,
+ * sublinear cost for a slab minus N cylinders, malformed trees. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -101,6 +102,161 @@ static void test_csg_identities(void **state)
                            ops->name, a, bad_diff, bad_union, bad_inter);
                 assert_int_equal(bad_diff + bad_union + bad_inter, 0);
             }
+}
+
+/* Random CSG trees of 3 to 6 primitives with random operators: the nearest
+ * hit of every mode must match a brute-force march along the ray that
+ * classifies points with the independent signed-distance test and the
+ * tree's boolean formula. */
+typedef struct csg_rtree { int n, op[8], l[8], r[8]; } csg_rtree;   /* node k: op(l, r) */
+
+/* Membership of a point: leaves 0..np-1 are primitives, nodes np+k. */
+static int csg_rtree_in(const csg_rtree *t, int np, int node, const int *inp)
+{
+    int a, b, k;
+    if (node < np)
+        return inp[node];
+    k = node - np;
+    a = csg_rtree_in(t, np, t->l[k], inp);
+    b = csg_rtree_in(t, np, t->r[k], inp);
+    return t->op[k] == 0 ? (a || b) : t->op[k] == 1 ? (a && b) : (a && !b);
+}
+
+/* Membership at o + tt d; *margin is the smallest |signed distance|. The
+ * primitive of leaf Pi is found by name (the parser numbers primitives in
+ * the order the rendered tree uses them). */
+static int csg_rtree_at(const scene *sc, const csg_rtree *t, int np, const double *o, const double *d,
+                        double tt, double *margin)
+{
+    int in[8], i;
+    double p[3], q[3];
+    *margin = HUGE_VAL;
+    for (i = 0; i < 3; i++)
+        p[i] = o[i] + tt * d[i];
+    for (i = 0; i < np; i++) {
+        char nm[8];
+        const scene_prim *sp;
+        double sd;
+        snprintf(nm, sizeof nm, "P%d", i);
+        sp = &sc->prims[csg_find_prim(sc, nm)];
+        tt_to_object(sp, p, q);
+        sd = tt_sdf(sp, q);
+        in[i] = sd < 0;
+        if (fabs(sd) < *margin)
+            *margin = fabs(sd);
+    }
+    return csg_rtree_in(t, np, np + t->n - 1, in);
+}
+
+#define CSG_TREES 16
+#define CSG_TREE_RAYS 80
+
+typedef struct csg_rcase { double o[3], d[3], tb; int s0, skip; } csg_rcase;
+
+static void test_csg_random_trees_match_classification(void **state)
+{
+    static const char *const opname[3] = {"UNION", "INTER", "DIFF"};
+    static csg_rcase rc[CSG_TREES][CSG_TREE_RAYS];
+    static scene *sc[CSG_TREES];
+    static csg_rtree t[CSG_TREES];
+    static int npr[CSG_TREES];
+    uint64_t s = test_seed("test_csg_random_trees_match_classification");
+    int m, n, k, i;
+    (void)state;
+    /* trees, rays and the brute-force first crossing, shared by all modes */
+    for (n = 0; n < CSG_TREES; n++) {
+        char deck[4096], tail[256], name[64], *p = deck;
+        int np = npr[n] = 3 + (int)(test_rand(&s) % 4), pool[16], npool = np;
+        p += sprintf(p, VIEW);
+        for (i = 0; i < np; i++) {
+            char nm[8];
+            snprintf(nm, sizeof nm, "P%d", i);
+            tt_random_tail(&s, tail, sizeof tail);
+            snprintf(name, sizeof name, csg_solids[test_rand(&s) % 4], nm);
+            p += sprintf(p, "%s %s\n", name, tail);
+        }
+        /* a random binary tree: combine random pairs from a pool */
+        t[n].n = np - 1;
+        for (i = 0; i < np; i++)
+            pool[i] = i;
+        for (k = 0; k < t[n].n; k++) {
+            int a = (int)(test_rand(&s) % (uint64_t)npool), b, la = pool[a];
+            pool[a] = pool[--npool];
+            b = (int)(test_rand(&s) % (uint64_t)npool);
+            t[n].l[k] = la;
+            t[n].r[k] = pool[b];
+            t[n].op[k] = (int)(test_rand(&s) % 3);
+            pool[b] = np + k;
+            p += sprintf(p, "%s N%d %s%d %s%d\n", opname[t[n].op[k]], k, la < np ? "P" : "N",
+                         la < np ? la : la - np, t[n].r[k] < np ? "P" : "N",
+                         t[n].r[k] < np ? t[n].r[k] : t[n].r[k] - np);
+        }
+        sprintf(p, "OBJECT N%d\n", t[n].n - 1);
+        sc[n] = tt_parse(deck);
+        assert_non_null(sc[n]);
+        for (k = 0; k < CSG_TREE_RAYS; k++) {
+            csg_rcase *c = &rc[n][k];
+            double step = 0.01, mg, tt;
+            csg_random_ray(&s, c->o, c->d);
+            c->s0 = csg_rtree_at(sc[n], &t[n], np, c->o, c->d, 1e-9, &mg);
+            c->skip = mg < 1e-3;
+            c->tb = -1;
+            /* march to the first change of membership, then bisect */
+            for (tt = step; tt < 20 && !c->skip; tt += step)
+                if (csg_rtree_at(sc[n], &t[n], np, c->o, c->d, tt, &mg) != c->s0) {
+                    double a = tt - step, b = tt;
+                    for (i = 0; i < 50; i++) {
+                        double mid = (a + b) / 2;
+                        if (csg_rtree_at(sc[n], &t[n], np, c->o, c->d, mid, &mg) != c->s0) b = mid; else a = mid;
+                    }
+                    c->tb = b;
+                    break;
+                }
+        }
+    }
+    for (m = 0; m < 4; m++) {
+        const probe_ops *ops = tt_mode(m);
+        long compared = 0, bad = 0;
+        for (n = 0; n < CSG_TREES; n++) {
+            void *cs;
+            diag err;
+            diag_init(&err);
+            assert_int_equal(ops->compile(sc[n], &cs, &err), 0);
+            for (k = 0; k < CSG_TREE_RAYS; k++) {
+                const csg_rcase *c = &rc[n][k];
+                probe_hit h;
+                double mg;
+                int found, ok = 1;
+                if (c->skip)
+                    continue;
+                found = ops->hit(cs, c->o, c->d, &h);
+                if (found && h.t >= 20)
+                    found = 0;
+                if (found && (c->tb < 0 || fabs(h.t - c->tb) > 2e-3 * (1 + c->tb / 10))) {
+                    /* the march may step over a sliver: accept an earlier
+                     * hit where membership really changes just past it */
+                    double e;
+                    ok = 0;
+                    for (e = 5e-4; e < 1e-2 && !ok; e += 5e-4)
+                        ok = csg_rtree_at(sc[n], &t[n], npr[n], c->o, c->d, h.t + e, &mg) != c->s0;
+                    ok = ok && (c->tb < 0 || h.t < c->tb);
+                } else if (!found && c->tb >= 0) {
+                    ok = 0;
+                }
+                if (!ok && bad++ < 3)
+                    printf("# %s tree %d ray %d (o %.17g %.17g %.17g d %.17g %.17g %.17g): probe %s t=%.6f,"
+                           " march t=%.6f\n", ops->name, n, k, c->o[0], c->o[1], c->o[2], c->d[0], c->d[1],
+                           c->d[2], found ? "hit" : "miss", found ? h.t : 0, c->tb);
+                compared++;
+            }
+            ops->free(cs);
+        }
+        printf("# %s: %ld rays through random trees, %ld mismatches\n", ops->name, compared, bad);
+        assert_true(compared > 1000);
+        assert_int_equal(bad, 0);
+    }
+    for (n = 0; n < CSG_TREES; n++)
+        scene_free(sc[n]);
 }
 
 /* Head-on view down the axis of a block minus a cylinder whose caps lie
@@ -302,6 +458,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_csg_identities),
+        cmocka_unit_test(test_csg_random_trees_match_classification),
         cmocka_unit_test(test_csg_coincident_head_on_pixel_exact),
         cmocka_unit_test(test_csg_coincident_oblique_rays),
         cmocka_unit_test(test_csg_slab_cost_sublinear),
