@@ -134,7 +134,7 @@ static int csg_rtree_at(const scene *sc, const csg_rtree *t, int np, const doubl
     for (i = 0; i < 3; i++)
         p[i] = o[i] + tt * d[i];
     for (i = 0; i < np; i++) {
-        char nm[8];
+        char nm[16];
         const scene_prim *sp;
         double sd;
         snprintf(nm, sizeof nm, "P%d", i);
@@ -169,7 +169,7 @@ static void test_csg_random_trees_match_classification(void **state)
         int np = npr[n] = 3 + (int)(test_rand(&s) % 4), pool[16], npool = np;
         p += sprintf(p, VIEW);
         for (i = 0; i < np; i++) {
-            char nm[8];
+            char nm[16];
             snprintf(nm, sizeof nm, "P%d", i);
             tt_random_tail(&s, tail, sizeof tail);
             snprintf(name, sizeof name, csg_solids[test_rand(&s) % 4], nm);
