@@ -1,0 +1,14 @@
+# The Fortran REAL(16) geometry oracle used by test_oracle (tests/oracle/).
+# make's built-in FC is f77; prefer gfortran unless FC was set by the user.
+ifeq ($(origin FC),default)
+FC := gfortran
+endif
+FFLAGS ?= -O2
+# Fragments are read before the Makefile's first rule: keep `all` the default.
+.DEFAULT_GOAL := all
+ORACLE := $(BUILD)/oracle/geom_oracle
+TEST_EXTRA += $(ORACLE)
+
+$(ORACLE): tests/oracle/geom_oracle.f90
+	@mkdir -p $(@D)
+	$(FC) $(FFLAGS) -J $(@D) -o $@ $<

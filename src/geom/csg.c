@@ -1,0 +1,492 @@
+/* csg — tree compilation (flatten, balance, bound) and span-list
+ * classification along a ray (see csg.h). */
+#include "geom/csg.h"
+#include "util/mem.h"
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- build ----------------------------------------------------------- */
+
+typedef struct csg_bound { double c[3], r, lo[3], hi[3]; int bounded; size_t nspans, peak; } csg_bound;
+
+typedef struct csg_ctx {
+    const scene *sc;
+    const prim *prims;
+    csg_node *nodes;
+    csg_bound *bd;           /* double bounds per compiled node */
+    int n, cap;
+    diag *err;
+} csg_ctx;
+
+typedef struct csg_key { double key; int idx; } csg_key;
+
+static int csg_key_cmp(const void *a, const void *b)
+{
+    double x = ((const csg_key *)a)->key, y = ((const csg_key *)b)->key;
+    if (x < y) return -1;
+    if (x > y) return 1;
+    return ((const csg_key *)a)->idx - ((const csg_key *)b)->idx;
+}
+
+static int csg_err(csg_ctx *x, int status, const char *what)
+{
+    return diag_at(x->err, status, x->sc->source ? x->sc->source : "", 0, 0, "%s", what);
+}
+
+/* Rounds the node's box outwards by 2^-10 (relative to the normalised
+ * scene of width 32, far above any rounding of the tests), and uses it only
+ * when its volume is under half the sphere's: elsewhere the sphere alone is
+ * cheaper. */
+static void csg_set_box(csg_node *nd, const csg_bound *b)
+{
+    double lo[3], hi[3], vbox = 1, pad = 1.0 / 1024;
+    int i;
+    for (i = 0; i < 3; i++) {
+        lo[i] = b->lo[i] - pad;
+        hi[i] = b->hi[i] + pad;
+        vbox *= hi[i] - lo[i];
+    }
+    nd->lo = vec3_from_d(lo);
+    nd->hi = vec3_from_d(hi);
+    nd->use_box = vbox < 0.5 * 4.18879 * b->r * b->r * b->r;
+}
+
+/* Appends a compiled node; its bound follows from the children. Returns the
+ * node index or -1 (error recorded). */
+static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
+{
+    csg_node *nd;
+    csg_bound *b;
+    if (x->n >= x->cap) {
+        csg_err(x, DIAG_INPUT, "CSG tree has a cycle or shares subtrees too often");
+        return -1;
+    }
+    nd = &x->nodes[x->n];
+    b = &x->bd[x->n];
+    memset(nd, 0, sizeof *nd);
+    memset(b, 0, sizeof *b);
+    nd->op = op;
+    nd->left = l;
+    nd->right = r;
+    nd->prim = pi;
+    if (op == CSG_LEAF) {
+        const prim *p = &x->prims[pi];
+        b->bounded = p->bounded;
+        vec3_to_d(p->bc, b->c);
+        b->r = num_to_d(p->br);
+        memcpy(b->lo, p->box_d, sizeof b->lo);
+        memcpy(b->hi, p->box_d + 3, sizeof b->hi);
+        b->nspans = 1;
+        b->peak = 1;
+    } else {
+        const csg_bound *bl = &x->bd[l], *br = &x->bd[r];
+        size_t a = bl->peak, c = bl->nspans + br->peak, e = 2 * (bl->nspans + br->nspans);
+        b->nspans = bl->nspans + br->nspans;
+        b->peak = a > c ? (a > e ? a : e) : (c > e ? c : e);
+        if (op == CSG_DIFF) {
+            size_t ns = b->nspans, pk = b->peak;
+            *b = *bl;
+            b->nspans = ns;
+            b->peak = pk;
+        } else if (op == CSG_INTER) {
+            const csg_bound *s = !bl->bounded ? br : !br->bounded ? bl : bl->r <= br->r ? bl : br;
+            size_t ns = b->nspans, pk = b->peak;
+            int i;
+            *b = *s;
+            b->nspans = ns;
+            b->peak = pk;
+            if (bl->bounded && br->bounded)         /* the boxes intersect */
+                for (i = 0; i < 3; i++) {
+                    b->lo[i] = bl->lo[i] > br->lo[i] ? bl->lo[i] : br->lo[i];
+                    b->hi[i] = bl->hi[i] < br->hi[i] ? bl->hi[i] : br->hi[i];
+                    if (b->hi[i] < b->lo[i])
+                        b->hi[i] = b->lo[i];
+                }
+        } else if (bl->bounded && br->bounded) {
+            double d[3], dist, R;
+            int i;
+            for (i = 0; i < 3; i++)
+                d[i] = br->c[i] - bl->c[i];
+            dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            b->bounded = 1;
+            for (i = 0; i < 3; i++) {
+                b->lo[i] = bl->lo[i] < br->lo[i] ? bl->lo[i] : br->lo[i];
+                b->hi[i] = bl->hi[i] > br->hi[i] ? bl->hi[i] : br->hi[i];
+            }
+            if (dist + br->r <= bl->r) {
+                memcpy(b->c, bl->c, sizeof b->c); b->r = bl->r;
+            } else if (dist + bl->r <= br->r) {
+                memcpy(b->c, br->c, sizeof b->c); b->r = br->r;
+            } else {
+                R = (dist + bl->r + br->r) / 2;
+                for (i = 0; i < 3; i++)
+                    b->c[i] = bl->c[i] + (R - bl->r) / dist * d[i];
+                b->r = R * (1 + 1e-9);
+            }
+        }
+        if (b->bounded) {
+            nd->bc = vec3_from_d(b->c);
+            nd->br = num_from_d(b->r * (1 + 1e-6) + 1.0 / 16384);
+        }
+    }
+    nd->bounded = b->bounded;
+    if (op == CSG_LEAF) {
+        nd->bc = x->prims[pi].bc;
+        nd->br = x->prims[pi].br;
+    }
+    if (b->bounded)
+        csg_set_box(nd, b);
+    return x->n++;
+}
+
+/* Balanced tree of operator op over the compiled nodes items[0..n-1]:
+ * bounded operands are split at the median of their centres along the axis
+ * of largest spread; unbounded ones are chained on top. */
+static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
+{
+    int nb = 0, i, j, l, r, axis = 0;
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    if (n == 1)
+        return items[0];
+    for (i = 0; i < n; i++)
+        if (x->bd[items[i]].bounded) {
+            int t = items[nb]; items[nb] = items[i]; items[i] = t; nb++;
+        }
+    if (nb < n) {
+        int acc = nb ? csg_balance(x, items, nb, op, keys) : items[0];
+        for (i = nb ? nb : 1; i < n && acc >= 0; i++)
+            acc = csg_add(x, op, acc, items[i], -1);
+        return acc;
+    }
+    for (i = 0; i < n; i++)
+        for (j = 0; j < 3; j++) {
+            double c = x->bd[items[i]].c[j];
+            if (c < lo[j]) lo[j] = c;
+            if (c > hi[j]) hi[j] = c;
+        }
+    for (j = 1; j < 3; j++)
+        if (hi[j] - lo[j] > hi[axis] - lo[axis])
+            axis = j;
+    for (i = 0; i < n; i++) {
+        keys[i].key = x->bd[items[i]].c[axis];
+        keys[i].idx = items[i];
+    }
+    qsort(keys, (size_t)n, sizeof *keys, csg_key_cmp);
+    for (i = 0; i < n; i++)
+        items[i] = keys[i].idx;
+    l = csg_balance(x, items, n / 2, op, keys);
+    if (l < 0)
+        return -1;
+    r = csg_balance(x, items + n / 2, n - n / 2, op, keys);
+    if (r < 0)
+        return -1;
+    return csg_add(x, op, l, r, -1);
+}
+
+static int csg_compile_node(csg_ctx *x, int sn, int depth);
+
+/* Collects the operands of a chain of op (scene node sn) into *list
+ * (scene node indices), following only nodes with the same op. */
+static int csg_gather(csg_ctx *x, int sn, int op, int **list, int *n, size_t *cap)
+{
+    int *stack = NULL, top = 0;
+    size_t scap = 0;
+    int status = 0;
+    if (mem_grow((void **)&stack, &scap, 1, sizeof *stack))
+        return csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
+    stack[top++] = sn;
+    while (top > 0 && !status) {
+        int k = stack[--top];
+        const scene_node *nd;
+        if (k < 0 || (size_t)k >= x->sc->nnodes) {
+            status = csg_err(x, DIAG_INPUT, "CSG node index out of range");
+            break;
+        }
+        nd = &x->sc->nodes[k];
+        if ((int)nd->op == op && op != CSG_LEAF) {
+            if (*n + top + 2 > x->cap) {
+                status = csg_err(x, DIAG_INPUT, "CSG tree has a cycle or shares subtrees too often");
+                break;
+            }
+            if (mem_grow((void **)&stack, &scap, (size_t)top + 2, sizeof *stack)) {
+                status = csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
+                break;
+            }
+            stack[top++] = nd->right;
+            stack[top++] = nd->left;
+        } else {
+            if (mem_grow((void **)list, cap, (size_t)*n + 1, sizeof **list)) {
+                status = csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
+                break;
+            }
+            (*list)[(*n)++] = k;
+        }
+    }
+    mem_free(stack);
+    return status;
+}
+
+/* Compiles the operands (scene nodes) in list and balances them under op. */
+static int csg_compile_list(csg_ctx *x, int *list, int n, int op, int depth)
+{
+    int i, res = -1;
+    csg_key *keys = mem_calloc((size_t)n, sizeof *keys);
+    if (!keys) {
+        csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        list[i] = csg_compile_node(x, list[i], depth + 1);
+        if (list[i] < 0)
+            break;
+    }
+    if (i == n)
+        res = csg_balance(x, list, n, op, keys);
+    mem_free(keys);
+    return res;
+}
+
+/* Compiles scene node sn; returns the compiled index or -1 (error set). */
+static int csg_compile_node(csg_ctx *x, int sn, int depth)
+{
+    const scene_node *nd;
+    int *list = NULL, n = 0, res = -1;
+    size_t cap = 0;
+    if (sn < 0 || (size_t)sn >= x->sc->nnodes) {
+        csg_err(x, DIAG_INPUT, "CSG node index out of range");
+        return -1;
+    }
+    if (depth > CSG_MAX_NEST) {
+        csg_err(x, DIAG_INPUT, "CSG operators nested too deeply");
+        return -1;
+    }
+    nd = &x->sc->nodes[sn];
+    switch (nd->op) {
+    case CSG_LEAF:
+        if (nd->prim < 0 || (size_t)nd->prim >= x->sc->nprims) {
+            csg_err(x, DIAG_INPUT, "CSG leaf names a primitive out of range");
+            return -1;
+        }
+        return csg_add(x, CSG_LEAF, -1, -1, nd->prim);
+    case CSG_UNION:
+    case CSG_INTER:
+        if (!csg_gather(x, sn, nd->op, &list, &n, &cap))
+            res = csg_compile_list(x, list, n, nd->op, depth);
+        break;
+    case CSG_DIFF: {
+        int base = sn, steps = 0, b;
+        /* a - b - c ... = a - (b u c u ...) */
+        while (base >= 0 && (size_t)base < x->sc->nnodes && x->sc->nodes[base].op == CSG_DIFF) {
+            if (++steps > x->cap) {
+                csg_err(x, DIAG_INPUT, "CSG tree has a cycle or shares subtrees too often");
+                break;
+            }
+            if (csg_gather(x, x->sc->nodes[base].right, CSG_UNION, &list, &n, &cap))
+                break;
+            base = x->sc->nodes[base].left;
+        }
+        if (x->err->status)
+            break;
+        b = csg_compile_node(x, base, depth + 1);
+        if (b < 0)
+            break;
+        res = csg_compile_list(x, list, n, CSG_UNION, depth);
+        if (res >= 0)
+            res = csg_add(x, CSG_DIFF, b, res, -1);
+        break;
+    }
+    default:
+        csg_err(x, DIAG_INPUT, "CSG node has an unknown operator");
+        break;
+    }
+    mem_free(list);
+    return res;
+}
+
+int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
+{
+    csg_ctx x;
+    int *roots = NULL, i, root = -1;
+    size_t cap;
+    memset(&x, 0, sizeof x);
+    x.sc = sc;
+    x.prims = prims;
+    x.err = err;
+    /* Every scene node yields at most one compiled leaf or operator per
+     * operand, so 2 * (nodes + roots) + 2 bounds a tree; more means sharing
+     * or a cycle. */
+    cap = 2 * (sc->nnodes + sc->nroots) + 2;
+    if (cap > (size_t)1 << 26)
+        return csg_err(&x, DIAG_INPUT, "CSG tree too large");
+    x.cap = (int)cap;
+    x.nodes = mem_calloc(cap, sizeof *x.nodes);
+    x.bd = mem_calloc(cap, sizeof *x.bd);
+    if (sc->nroots)
+        roots = mem_calloc(sc->nroots, sizeof *roots);
+    if (!x.nodes || !x.bd || (sc->nroots && !roots)) {
+        csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
+        goto fail;
+    }
+    for (i = 0; (size_t)i < sc->nroots; i++)
+        roots[i] = sc->roots[i];
+    if (sc->nroots)
+        root = csg_compile_list(&x, roots, (int)sc->nroots, CSG_UNION, 0);
+    if (sc->nroots && root < 0)
+        goto fail;
+    out->nodes = x.nodes;
+    out->nnodes = x.n;
+    out->root = root;
+    out->peak_spans = root >= 0 ? x.bd[root].peak : 0;
+    mem_free(x.bd);
+    mem_free(roots);
+    return 0;
+fail:
+    mem_free(x.nodes);
+    mem_free(x.bd);
+    mem_free(roots);
+    return err->status ? err->status : DIAG_IO;
+}
+
+void NS(csg_free)(csg *c)
+{
+    mem_free(c->nodes);
+    c->nodes = NULL;
+    c->nnodes = 0;
+    c->root = -1;
+}
+
+size_t NS(csg_arena_bytes)(const csg *c)
+{
+    /* each live list may waste up to ARENA_ALIGN bytes of padding */
+    return c->peak_spans * (sizeof(span) + ARENA_ALIGN) + 4 * ARENA_ALIGN;
+}
+
+/* ---- classification ------------------------------------------------ */
+
+typedef struct csg_query {
+    const csg *c;
+    const prim *prims;
+    const prim_ray *r;
+    num tmax;
+    arena *ar;
+    geom_stats *st;
+} csg_query;
+
+/* Span list of compiled node ni along the ray, placed at the arena top on
+ * entry (nothing is left allocated when it returns 0). Only parameters in
+ * [lo, hi] can matter to the caller, so subtrees whose bounds lie outside
+ * are skipped; the right operand of a difference or intersection only
+ * matters where the left one has spans, which narrows [lo, hi] further. */
+static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
+{
+    const csg_node *nd = &q->c->nodes[ni];
+    size_t mark = arena_mark(q->ar);
+    span *l = NULL, *r = NULL, *tmp, *dst;
+    int nl, nr, n;
+    num tc, rlo = lo, rhi = hi;
+    if (nd->use_box) {
+        /* leaves test their own sphere in prim_intersect; tc comes from here */
+        q->st->bound_tests++;
+        if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)
+            || vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, tc, lo, hi)) {
+            q->st->pruned++;
+            return 0;
+        }
+    }
+    if (nd->op == CSG_LEAF) {
+        span s;
+        q->st->prim_tests++;
+        if (!NS(prim_intersect)(&q->prims[nd->prim], q->r, lo, hi, &s))
+            return 0;
+        if (!(dst = arena_alloc(q->ar, sizeof s))) {
+            q->st->arena_full++;
+            return 0;
+        }
+        *dst = s;
+        *out = dst;
+        return 1;
+    }
+    if (nd->bounded && !nd->use_box) {
+        q->st->bound_tests++;
+        if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)) {
+            q->st->pruned++;
+            return 0;
+        }
+    }
+    nl = csg_eval(q, nd->left, lo, hi, &l);
+    if (nl == 0 && nd->op != CSG_UNION) {
+        q->st->pruned++;          /* the right operand cannot matter */
+        return 0;
+    }
+    if (nd->op != CSG_UNION) {
+        rlo = num_max(lo, l[0].a.t);
+        rhi = num_min(hi, l[nl - 1].b.t);
+    }
+    nr = csg_eval(q, nd->right, rlo, rhi, &r);
+    if (nr == 0) {
+        if (nd->op == CSG_INTER) {
+            arena_release(q->ar, mark);
+            return 0;
+        }
+        *out = l;                 /* union or difference with nothing */
+        return nl;
+    }
+    if (nl == 0) {                /* union */
+        *out = r;
+        return nr;
+    }
+    if (!(tmp = arena_alloc(q->ar, (size_t)(nl + nr) * sizeof *tmp))) {
+        q->st->arena_full++;
+        arena_release(q->ar, mark);
+        return 0;
+    }
+    n = NS(span_merge)(nd->op, l, nl, r, nr, tmp);
+    arena_release(q->ar, mark);
+    if (n == 0)
+        return 0;
+    dst = arena_alloc(q->ar, (size_t)n * sizeof *dst);   /* at mark: dst <= tmp */
+    memmove(dst, tmp, (size_t)n * sizeof *dst);
+    *out = dst;
+    return n;
+}
+
+int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
+                      arena *ar, geom_stats *st, csg_hit *hit)
+{
+    csg_query q;
+    span *s = NULL;
+    size_t mark = arena_mark(ar);
+    int n, i, found = 0;
+    if (c->root < 0)
+        return 0;
+    q.c = c;
+    q.prims = prims;
+    q.r = r;
+    q.tmax = tmax;
+    q.ar = ar;
+    q.st = st;
+    n = csg_eval(&q, c->root, NUM_ZERO, tmax, &s);
+    for (i = 0; i < n && !found; i++) {
+        const span_end *e[2];
+        int k;
+        e[0] = &s[i].a;
+        e[1] = &s[i].b;
+        for (k = 0; k < 2; k++) {
+            if (e[k]->t <= NUM_ZERO || e[k]->face == GEOM_FACE_NONE)
+                continue;
+            if (e[k]->t > tmax) {
+                i = n;
+                break;
+            }
+            hit->t = e[k]->t;
+            hit->prim = e[k]->prim;
+            hit->face = e[k]->face;
+            hit->entering = k == 0;
+            found = 1;
+            break;
+        }
+    }
+    arena_release(ar, mark);
+    return found;
+}

@@ -1,0 +1,533 @@
+/* prim — compile, intersect and evaluate the five primitives (see prim.h,
+ * docs/primitives.md for the face mappings, docs/numerics.md for ranges). */
+#include "geom/prim.h"
+#include <math.h>
+#include <string.h>
+
+#define PRIM_PI 3.14159265358979323846
+
+/* ---- compile (double precision) ------------------------------------- */
+
+static void m3d_mul_v(const double *m, const double *v, double *out)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        out[i] = m[3 * i] * v[0] + m[3 * i + 1] * v[1] + m[3 * i + 2] * v[2];
+}
+
+static void m3d_tmul_v(const double *m, const double *v, double *out)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        out[i] = m[i] * v[0] + m[3 + i] * v[1] + m[6 + i] * v[2];
+}
+
+static double v3d_len(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/* Inverse of a 3x3 matrix by cofactors; -1 when it is singular relative to
+ * its own scale (|det| tiny against the product of its row norms). */
+static int m3d_inverse(const double *m, double *inv)
+{
+    double c[9], det, scale = 1.0;
+    int i;
+    c[0] = m[4] * m[8] - m[5] * m[7];
+    c[1] = m[2] * m[7] - m[1] * m[8];
+    c[2] = m[1] * m[5] - m[2] * m[4];
+    c[3] = m[5] * m[6] - m[3] * m[8];
+    c[4] = m[0] * m[8] - m[2] * m[6];
+    c[5] = m[2] * m[3] - m[0] * m[5];
+    c[6] = m[3] * m[7] - m[4] * m[6];
+    c[7] = m[1] * m[6] - m[0] * m[7];
+    c[8] = m[0] * m[4] - m[1] * m[3];
+    det = m[0] * c[0] + m[1] * c[3] + m[2] * c[6];
+    for (i = 0; i < 3; i++)
+        scale *= v3d_len(m + 3 * i);
+    if (!(fabs(det) > 1e-12 * scale) || !isfinite(det))
+        return -1;
+    for (i = 0; i < 9; i++)
+        inv[i] = c[i] / det;
+    return 0;
+}
+
+/* Largest singular value of m: square root of the largest eigenvalue of the
+ * symmetric m^T m, by the closed-form (trigonometric) 3x3 eigen solution. */
+static double m3d_spectral_norm(const double *m)
+{
+    double b[9], q, p1, p2, p, bm[9], r, phi, det;
+    int i, j, k;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++) {
+            b[3 * i + j] = 0;
+            for (k = 0; k < 3; k++)
+                b[3 * i + j] += m[3 * k + i] * m[3 * k + j];
+        }
+    p1 = b[1] * b[1] + b[2] * b[2] + b[5] * b[5];
+    q = (b[0] + b[4] + b[8]) / 3;
+    p2 = (b[0] - q) * (b[0] - q) + (b[4] - q) * (b[4] - q) + (b[8] - q) * (b[8] - q) + 2 * p1;
+    p = sqrt(p2 / 6);
+    if (p == 0)
+        return sqrt(q);
+    for (i = 0; i < 9; i++)
+        bm[i] = (b[i] - (i % 4 == 0 ? q : 0)) / p;
+    det = bm[0] * (bm[4] * bm[8] - bm[5] * bm[7]) - bm[1] * (bm[3] * bm[8] - bm[5] * bm[6])
+        + bm[2] * (bm[3] * bm[7] - bm[4] * bm[6]);
+    r = det / 2;
+    phi = r <= -1 ? PRIM_PI / 3 : r >= 1 ? 0 : acos(r) / 3;
+    return sqrt(q + 2 * p * cos(phi));
+}
+
+/* Rounds a plane coefficient to a 2^-40 grid so that planes computed along
+ * different transform paths, equal up to double rounding, become identical
+ * in every numeric mode. */
+static double prim_snap(double x) { return nearbyint(x * 1099511627776.0) / 1099511627776.0; }
+
+/* Exact bounding box of a bounded primitive in the normalised world:
+ * ellipsoid extents for the sphere, the two end discs for cylinder and
+ * cone, the corners for the block. */
+static void prim_box(prim *p, int kind)
+{
+    const double *a = p->a_d;
+    int i, k;
+    for (i = 0; i < 3; i++) {
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        if (kind == PRIM_SPHERE) {
+            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]);
+            lo = -h;
+            hi = h;
+        } else if (kind == PRIM_BLOCK) {
+            for (k = 0; k < 8; k++) {
+                double v = (k & 1 ? a[3 * i] : 0) + (k & 2 ? a[3 * i + 1] : 0) + (k & 4 ? a[3 * i + 2] : 0);
+                if (v < lo) lo = v;
+                if (v > hi) hi = v;
+            }
+        } else {
+            double ra = kind == PRIM_CONE ? num_to_d(p->cone_a) : 1;
+            double rb = kind == PRIM_CONE ? ra + num_to_d(p->cone_k) : 1;
+            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1]);
+            lo = -ra * h;
+            hi = ra * h;
+            if (a[3 * i + 2] - rb * h < lo) lo = a[3 * i + 2] - rb * h;
+            if (a[3 * i + 2] + rb * h > hi) hi = a[3 * i + 2] + rb * h;
+        }
+        p->box_d[i] = p->org_d[i] + lo;
+        p->box_d[3 + i] = p->org_d[i] + hi;
+    }
+}
+
+static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
+{
+    return diag_at(err, DIAG_INPUT, file, sp->loc.line, sp->loc.col,
+                   "primitive '%s': %s", sp->name, what);
+}
+
+/* Canonical planes per kind: outward normal, a point, face id. */
+typedef struct prim_cplane { double n[3], p[3]; int face; } prim_cplane;
+
+static const prim_cplane prim_block_planes[6] = {
+    {{-1, 0, 0}, {0, 0, 0}, GEOM_FACE_BLOCK_XMIN}, {{1, 0, 0}, {1, 0, 0}, GEOM_FACE_BLOCK_XMAX},
+    {{0, -1, 0}, {0, 0, 0}, GEOM_FACE_BLOCK_YMIN}, {{0, 1, 0}, {0, 1, 0}, GEOM_FACE_BLOCK_YMAX},
+    {{0, 0, -1}, {0, 0, 0}, GEOM_FACE_BLOCK_ZMIN}, {{0, 0, 1}, {0, 0, 1}, GEOM_FACE_BLOCK_ZMAX}};
+static const prim_cplane prim_cap_planes[2] = {
+    {{0, 0, 1}, {0, 0, 1}, GEOM_FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, GEOM_FACE_CYL_BOTTOM}};
+static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, GEOM_FACE_HALFSPACE_PLANE}};
+
+int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
+                     const char *file, diag *err)
+{
+    prim p;
+    double c[3] = {1, 1, 1}, cc[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    double frob = 0, r = 0, bc[3];
+    const prim_cplane *cp = NULL;
+    int i, j, ncp = 0;
+    const double *d = sp->dim, *m = sp->world_from_object;
+
+    memset(&p, 0, sizeof p);
+    for (i = 0; i < 16; i++)
+        if (!isfinite(m[i]))
+            return prim_fail(err, file, sp, "transform is not finite");
+    for (i = 0; i < 3; i++)
+        if (!isfinite(d[i]))
+            return prim_fail(err, file, sp, "dimension is not finite");
+    p.kind = sp->kind;
+    p.id = id;
+    p.attr = sp->attr;
+    p.bounded = 1;
+    switch (sp->kind) {
+    case PRIM_SPHERE:
+        if (!(d[0] > 0)) return prim_fail(err, file, sp, "sphere radius must be positive");
+        c[0] = c[1] = c[2] = d[0];
+        lo[0] = lo[1] = lo[2] = -1;
+        break;
+    case PRIM_CYLINDER:
+        if (!(d[0] > 0) || !(d[1] > 0))
+            return prim_fail(err, file, sp, "cylinder radius and height must be positive");
+        c[0] = c[1] = d[0];
+        c[2] = d[1];
+        lo[0] = lo[1] = -1;
+        cc[2] = 0.5;
+        cp = prim_cap_planes;
+        ncp = 2;
+        break;
+    case PRIM_BLOCK:
+        if (!(d[0] > 0) || !(d[1] > 0) || !(d[2] > 0))
+            return prim_fail(err, file, sp, "block sizes must be positive");
+        c[0] = d[0];
+        c[1] = d[1];
+        c[2] = d[2];
+        cc[0] = cc[1] = cc[2] = 0.5;
+        cp = prim_block_planes;
+        ncp = 6;
+        break;
+    case PRIM_CONE: {
+        double rm = d[0] > d[1] ? d[0] : d[1];
+        if (!(d[0] >= 0) || !(d[1] >= 0) || !(rm > 0) || !(d[2] > 0))
+            return prim_fail(err, file, sp, "cone radii must be >= 0 (one > 0) and height > 0");
+        c[0] = c[1] = rm;
+        c[2] = d[2];
+        lo[0] = lo[1] = -1;
+        cc[2] = 0.5;
+        p.cone_a = num_from_d(d[0] / rm);
+        p.cone_k = num_from_d(d[1] / rm - d[0] / rm);
+        cp = prim_cap_planes;
+        ncp = 2;
+        break;
+    }
+    case PRIM_HALFSPACE:
+        p.bounded = 0;
+        cp = prim_half_plane;
+        ncp = 1;
+        break;
+    default:
+        return prim_fail(err, file, sp, "unknown primitive kind");
+    }
+    /* canonical -> normalised world: A = scale * M3 * diag(c), org likewise */
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) {
+            p.a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
+            frob += p.a_d[3 * i + j] * p.a_d[3 * i + j];
+        }
+        p.org_d[i] = nm->scale * m[4 * i + 3] + nm->off[i];
+    }
+    if (m3d_inverse(p.a_d, p.ainv_d))
+        return prim_fail(err, file, sp, "transform is singular");
+    frob = 0;
+    for (i = 0; i < 9; i++)
+        frob += p.ainv_d[i] * p.ainv_d[i];
+    frob = sqrt(frob);
+    for (i = 0; i < 9; i++)
+        p.minv_s.m[i] = num_from_d(p.ainv_d[i] / frob);
+    p.smin = num_from_d(1.0 / frob);
+    p.inv_smin = num_from_d(frob);
+    p.org = vec3_from_d(p.org_d);
+    if (p.bounded && (p.smin == NUM_ZERO || num_to_d(p.inv_smin) < frob * (1 - 1e-3)))
+        return prim_fail(err, file, sp, "too small for the numeric range");
+
+    /* bounding sphere */
+    m3d_mul_v(p.a_d, cc, bc);
+    for (i = 0; i < 3; i++)
+        bc[i] += p.org_d[i];
+    if (sp->kind == PRIM_SPHERE) {
+        r = m3d_spectral_norm(p.a_d);
+    } else if (p.bounded) {
+        int k;
+        for (k = 0; k < 8; k++) {
+            double corner[3], w[3], len;
+            for (i = 0; i < 3; i++)
+                corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
+            m3d_mul_v(p.a_d, corner, w);
+            len = v3d_len(w);
+            if (len > r)
+                r = len;
+        }
+    }
+    if (p.bounded) {
+        prim_box(&p, sp->kind);
+        for (i = 0; i < 3; i++)
+            if (fabs(bc[i]) + r > 4 * GEOM_W)
+                return prim_fail(err, file, sp, "outside the normalised scene (internal)");
+        p.bc = vec3_from_d(bc);
+        p.br = num_from_d(r * (1 + 1e-6) + 1.0 / 16384);
+    }
+
+    /* planar faces as world planes rounded once */
+    p.nplanes = ncp;
+    for (i = 0; i < ncp; i++) {
+        double n[3], pt[3], len, dd;
+        m3d_tmul_v(p.ainv_d, cp[i].n, n);
+        len = v3d_len(n);
+        for (j = 0; j < 3; j++)
+            n[j] = prim_snap(n[j] / len);
+        m3d_mul_v(p.a_d, cp[i].p, pt);
+        for (j = 0; j < 3; j++)
+            pt[j] += p.org_d[j];
+        dd = prim_snap(n[0] * pt[0] + n[1] * pt[1] + n[2] * pt[2]);
+        p.pl[i].n = vec3_from_d(n);
+        p.pl[i].d = num_from_d(dd);
+        p.pl[i].face = cp[i].face;
+        memcpy(p.pn_d[cp[i].face], n, sizeof n);
+    }
+    *out = p;
+    return 0;
+}
+
+/* ---- intersection (num) -------------------------------------------- */
+
+/* Intersects the span s with the half-spaces of p's planes. 0 if empty. */
+static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
+{
+    const num big = num_from_i(GEOM_TBIG);
+    int k;
+    for (k = 0; k < p->nplanes; k++) {
+        const prim_plane *pl = &p->pl[k];
+        num den = vec3_dot(pl->n, r->d);
+        num nm = num_sub(pl->d, vec3_dot(pl->n, r->o));
+        num t;
+        if (den == NUM_ZERO) {
+            if (nm < NUM_ZERO)
+                return 0;
+            continue;
+        }
+        t = num_div_clamp(nm, den, big);
+        if (den < NUM_ZERO) {
+            if (t > s->a.t) { s->a.t = t; s->a.face = pl->face; }
+        } else {
+            if (t < s->b.t) { s->b.t = t; s->b.face = pl->face; }
+        }
+    }
+    return s->a.t < s->b.t;
+}
+
+/* Local interval [s0,s1] of the curved face, with flags saying whether each
+ * end is a real surface point (1) or the clamp (0). Up to two pieces. */
+typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
+
+/* Solves the curved face of a sphere, cylinder or cone in the canonical
+ * frame and intersects the result with s (world parameters). tc is the
+ * parameter of the ray point closest to the bounding-sphere centre; the
+ * origin is moved there first and then to the point closest to the
+ * canonical centre, so every squared quantity is O(1) (docs/numerics.md). */
+static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
+{
+    vec3 o1 = vec3_madd(r->o, tc, r->d);
+    vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->inv_smin);
+    vec3 du, cl, rel;
+    num L, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
+    prim_piece pc[2];
+    int npc = 1, k, side = p->kind == PRIM_SPHERE ? GEOM_FACE_SPHERE_SURFACE : GEOM_FACE_CYL_SIDE;
+
+    if (vec3_normalize(mat3_mul(&p->minv_s, r->d), &du, &L))
+        return 0;
+    ratio = num_div(p->smin, L);
+    cl = vec3_make(NUM_ZERO, NUM_ZERO, p->kind == PRIM_SPHERE ? NUM_ZERO : NUM_HALF);
+    sh = vec3_dot(vec3_sub(cl, ol), du);
+    rel = vec3_sub(vec3_madd(ol, sh, du), cl);
+    if (vec3_maxabs(rel) > two)
+        return 0;
+    lim = num_add(num_div_clamp(p->br, ratio, num_from_i(GEOM_TBIG)), num_abs(sh));
+    if (lim < one)
+        lim = one;
+    pc[0].f0 = pc[0].f1 = 1;
+
+    if (p->kind == PRIM_SPHERE) {
+        num disc = num_sub(one, vec3_dot(rel, rel)), h;
+        if (disc < NUM_ZERO)
+            return 0;
+        h = num_sqrt(disc);
+        pc[0].s0 = num_neg(h);
+        pc[0].s1 = h;
+    } else if (p->kind == PRIM_CYLINDER) {
+        vec3 e, r2 = vec3_make(rel.x, rel.y, NUM_ZERO), perp;
+        num a, b2, disc, h;
+        if (vec3_normalize(vec3_make(du.x, du.y, NUM_ZERO), &e, &a)) {
+            if (num_add(num_mul(rel.x, rel.x), num_mul(rel.y, rel.y)) > one)
+                return 0;
+            pc[0].s0 = num_neg(lim);
+            pc[0].s1 = lim;
+            pc[0].f0 = pc[0].f1 = 0;
+        } else {
+            b2 = vec3_dot(r2, e);
+            perp = vec3_madd(r2, num_neg(b2), e);
+            if (vec3_maxabs(perp) > one)
+                return 0;
+            disc = num_sub(one, vec3_dot(perp, perp));
+            if (disc < NUM_ZERO)
+                return 0;
+            h = num_sqrt(disc);
+            pc[0].s0 = num_div_clamp(num_sub(num_neg(b2), h), a, lim);
+            pc[0].s1 = num_div_clamp(num_add(num_neg(b2), h), a, lim);
+        }
+    } else {
+        /* cone: x^2 + y^2 = R^2, R = a + k z; with X = rel + s du (about the
+         * centre z = 1/2): f(s) = A s^2 + 2 B s + C, inside where f <= 0. */
+        num kd = num_mul(p->cone_k, du.z);
+        num r0 = num_add(p->cone_a, num_mul(p->cone_k, num_add(NUM_HALF, rel.z)));
+        num A = num_sub(num_add(num_mul(du.x, du.x), num_mul(du.y, du.y)), num_mul(kd, kd));
+        num B = num_sub(num_add(num_mul(rel.x, du.x), num_mul(rel.y, du.y)), num_mul(r0, kd));
+        num C = num_sub(num_add(num_mul(rel.x, rel.x), num_mul(rel.y, rel.y)), num_mul(r0, r0));
+        num disc, h, q, x0, x1;
+        if (A == NUM_ZERO) {
+            if (B == NUM_ZERO) {
+                if (C > NUM_ZERO)
+                    return 0;
+                pc[0].s0 = num_neg(lim); pc[0].s1 = lim; pc[0].f0 = pc[0].f1 = 0;
+            } else {
+                num sr = num_div_clamp(num_neg(C), num_add(B, B), lim);
+                if (B > NUM_ZERO) { pc[0].s0 = num_neg(lim); pc[0].f0 = 0; pc[0].s1 = sr; }
+                else { pc[0].s0 = sr; pc[0].s1 = lim; pc[0].f1 = 0; }
+            }
+        } else {
+            disc = num_sub(num_mul(B, B), num_mul(A, C));
+            if (disc < NUM_ZERO) {
+                if (A > NUM_ZERO)
+                    return 0;
+                pc[0].s0 = num_neg(lim); pc[0].s1 = lim; pc[0].f0 = pc[0].f1 = 0;
+            } else {
+                h = num_sqrt(disc);
+                q = B >= NUM_ZERO ? num_neg(num_add(B, h)) : num_sub(h, B);
+                if (q == NUM_ZERO) {
+                    x0 = x1 = NUM_ZERO;
+                } else {
+                    x0 = num_div_clamp(q, A, lim);
+                    x1 = num_div_clamp(C, q, lim);
+                }
+                if (x0 > x1) { num t = x0; x0 = x1; x1 = t; }
+                if (A > NUM_ZERO) {
+                    pc[0].s0 = x0; pc[0].s1 = x1;
+                } else {
+                    pc[0].s0 = num_neg(lim); pc[0].f0 = 0; pc[0].s1 = x0;
+                    pc[1].s0 = x1; pc[1].s1 = lim; pc[1].f0 = 1; pc[1].f1 = 0;
+                    npc = 2;
+                }
+            }
+        }
+    }
+    for (k = 0; k < npc; k++) {
+        span w = *s;
+        num t0 = num_add(tc, num_mul(num_add(sh, pc[k].s0), ratio));
+        num t1 = num_add(tc, num_mul(num_add(sh, pc[k].s1), ratio));
+        if (t0 > w.a.t) { w.a.t = t0; w.a.face = pc[k].f0 ? side : GEOM_FACE_NONE; }
+        if (t1 < w.b.t) { w.b.t = t1; w.b.face = pc[k].f1 ? side : GEOM_FACE_NONE; }
+        if (w.a.t < w.b.t) {
+            *s = w;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out)
+{
+    const num big = num_from_i(GEOM_TBIG);
+    span s;
+    num tc = NUM_ZERO;
+    s.a.t = num_neg(big);
+    s.b.t = big;
+    s.a.prim = s.b.prim = p->id;
+    s.a.face = s.b.face = GEOM_FACE_NONE;
+    if (p->bounded) {
+        /* The bound only rejects: span ends always come from faces, so a
+         * rounding difference between bound and face cannot hide a face. */
+        if (vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmin, tmax, &tc))
+            return 0;
+    }
+    if (!prim_clip_planes(p, r, &s))
+        return 0;
+    if ((p->kind == PRIM_SPHERE || p->kind == PRIM_CYLINDER || p->kind == PRIM_CONE)
+        && !prim_side(p, r, tc, &s))
+        return 0;
+    if (r->excl_prim == p->id) {
+        /* The ray starts on this convex primitive's surface: leaving it, the
+         * primitive is behind; entering it, the span starts at the origin. */
+        if (!r->excl_enter || s.b.t <= NUM_ZERO)
+            return 0;
+        s.a.t = NUM_ZERO;
+    }
+    *out = s;
+    return 1;
+}
+
+/* ---- surface evaluation (double) ----------------------------------- */
+
+static double prim_clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
+
+void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
+{
+    double w[3], l[3], nl[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
+    double u = 0, v = 0, rho, th, len;
+    int i, planar = 1;
+    vec3_to_d(pt, w);
+    for (i = 0; i < 3; i++)
+        out->p[i] = w[i];
+    for (i = 0; i < 3; i++)
+        w[i] -= p->org_d[i];
+    m3d_mul_v(p->ainv_d, w, l);
+    rho = sqrt(l[0] * l[0] + l[1] * l[1]);
+    th = atan2(l[1], l[0]);
+    if (th < 0)
+        th += 2 * PRIM_PI;
+    switch (p->kind) {
+    case PRIM_SPHERE:
+        planar = 0;
+        u = th / (2 * PRIM_PI);
+        v = 0.5 + atan2(l[2], rho) / PRIM_PI;
+        nl[0] = l[0]; nl[1] = l[1]; nl[2] = l[2];
+        du[0] = -2 * PRIM_PI * l[1]; du[1] = 2 * PRIM_PI * l[0];
+        dv[0] = -PRIM_PI * l[2] * cos(th); dv[1] = -PRIM_PI * l[2] * sin(th); dv[2] = PRIM_PI * rho;
+        break;
+    case PRIM_CYLINDER:
+    case PRIM_CONE: {
+        double a = num_to_d(p->cone_a), k = num_to_d(p->cone_k), rf;
+        if (p->kind == PRIM_CYLINDER) { a = 1; k = 0; }
+        if (face == GEOM_FACE_CYL_SIDE) {
+            planar = 0;
+            u = th / (2 * PRIM_PI);
+            v = l[2];
+            nl[0] = cos(th); nl[1] = sin(th); nl[2] = -k;
+            du[0] = -2 * PRIM_PI * l[1]; du[1] = 2 * PRIM_PI * l[0];
+            dv[0] = k * cos(th); dv[1] = k * sin(th); dv[2] = 1;
+        } else {
+            rf = face == GEOM_FACE_CYL_TOP ? a + k : a;
+            if (rf <= 0) {
+                u = v = 0.5;
+            } else if (face == GEOM_FACE_CYL_TOP) {
+                u = (l[0] / rf + 1) / 2; v = (l[1] / rf + 1) / 2;
+            } else {
+                u = (1 - l[0] / rf) / 2; v = (l[1] / rf + 1) / 2;
+            }
+            du[0] = face == GEOM_FACE_CYL_TOP ? 2 * rf : -2 * rf;
+            dv[1] = 2 * rf;
+        }
+        break;
+    }
+    case PRIM_BLOCK:
+        switch (face) {
+        case GEOM_FACE_BLOCK_XMIN: u = 1 - l[1]; v = l[2]; du[1] = -1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_XMAX: u = l[1]; v = l[2]; du[1] = 1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_YMIN: u = l[0]; v = l[2]; du[0] = 1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_YMAX: u = 1 - l[0]; v = l[2]; du[0] = -1; dv[2] = 1; break;
+        case GEOM_FACE_BLOCK_ZMIN: u = 1 - l[0]; v = l[1]; du[0] = -1; dv[1] = 1; break;
+        default:              u = l[0]; v = l[1]; du[0] = 1; dv[1] = 1; break;
+        }
+        break;
+    default: /* half-space: unit tiles of the object frame */
+        u = l[0] - floor(l[0]);
+        v = l[1] - floor(l[1]);
+        du[0] = 1; dv[1] = 1;
+        break;
+    }
+    out->u = prim_clamp01(u);
+    out->v = prim_clamp01(v);
+    m3d_mul_v(p->a_d, du, out->dpdu);
+    m3d_mul_v(p->a_d, dv, out->dpdv);
+    if (planar) {
+        int f = face >= 0 && face < 6 ? face : 0;
+        for (i = 0; i < 3; i++)
+            out->n[i] = p->pn_d[f][i];
+    } else {
+        m3d_tmul_v(p->ainv_d, nl, out->n);
+        len = v3d_len(out->n);
+        if (len > 0)
+            for (i = 0; i < 3; i++)
+                out->n[i] /= len;
+    }
+}

@@ -1,0 +1,66 @@
+/* prim — the five primitives compiled for one numeric mode, and their
+ * ray intersection (one entry/exit span per ray: all five are convex) and
+ * surface evaluation (normal, (u,v), dP/du, dP/dv per face).
+ *
+ * Every primitive is stored as a canonical unit solid (sphere radius 1;
+ * cylinder radius 1, z in [0,1]; block [0,1]^3; cone radius a at z=0 and
+ * a+k at z=1 with max radius 1; half-space z <= 0) placed by an affine map
+ * into the normalised world. Planar faces are world-space planes rounded to
+ * `num` once, so coincident faces of different primitives give bit-identical
+ * ray parameters. Curved faces are solved in the canonical frame after the
+ * ray origin has been moved next to the primitive (docs/numerics.md).
+ * Modal: compiled per numeric mode. */
+#ifndef GEOM_PRIM_H
+#define GEOM_PRIM_H
+#include "geom/geom.h"
+#include "geom/span.h"
+#include "geom/vec.h"
+
+/* A ray in the normalised world. d is a unit vector. A ray spawned from a
+ * surface names the primitive it left (excl_prim, -1 for none) and whether it
+ * went into that primitive (excl_enter): that primitive's surface at the
+ * origin is then never reported again (no epsilon offsets). */
+typedef struct ray {
+    vec3 o, d;
+    int excl_prim;
+    int excl_enter;
+} prim_ray;
+
+typedef struct prim_plane {
+    vec3 n;            /* outward unit normal, world */
+    num d;             /* plane n.p = d; inside n.p <= d */
+    int face;
+} prim_plane;
+
+typedef struct prim {
+    int kind, id, attr;
+    int bounded;       /* 0 for the half-space */
+    vec3 bc;           /* bounding sphere centre and radius (world) */
+    num br;
+    double box_d[6];   /* bounding box (world): lo[3], hi[3] */
+    int nplanes;
+    prim_plane pl[6];
+    vec3 org;          /* canonical origin in the world */
+    mat3 minv_s;       /* canonical_from_world (linear part) times smin */
+    num smin;          /* 1 / frobenius norm of canonical_from_world */
+    num inv_smin;      /* its reciprocal (the frobenius norm) */
+    num cone_a, cone_k;/* cone radius at canonical z: a + k z */
+    /* double copies for surface evaluation */
+    double a_d[9], ainv_d[9], org_d[3], pn_d[6][3];
+} prim;
+
+/* Compiles scene primitive sp (index id) under the normalisation nm.
+ * 0 on success; DIAG_INPUT (located at sp->loc in file) for bad dimensions,
+ * non-finite or singular transforms, or a primitive outside the range. */
+int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
+                     const char *file, diag *err);
+
+/* Intersects r with p; the bounding test rejects p when it lies wholly
+ * outside the parameters [tmin, tmax] (the span itself is not clipped).
+ * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
+ * and carry GEOM_FACE_NONE) or 0 when the ray misses. */
+int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
+
+/* Surface data of face `face` of p at world point pt (a hit point). */
+void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out);
+#endif

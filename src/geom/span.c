@@ -1,0 +1,71 @@
+/* span — set operations on span lists by a sweep over boundaries (see span.h). */
+#include "geom/span.h"
+
+/* Result membership for the operator given operand memberships. */
+static int span_op(int op, int ina, int inb)
+{
+    switch (op) {
+    case CSG_UNION: return ina || inb;
+    case CSG_INTER: return ina && inb;
+    default:        return ina && !inb;
+    }
+}
+
+/* Parameter of the next boundary of list l at cursor i with state in. */
+static num span_next_t(const span *l, int i, int in)
+{
+    return in ? l[i].b.t : l[i].a.t;
+}
+
+/* Consumes every boundary of list l at parameter t, updating the cursor and
+ * state; returns the last consumed end (NULL if none). Lists are
+ * non-touching, so at most one boundary per list normally matches; the loop
+ * keeps the sweep correct even if a caller passes touching spans. */
+static const span_end *span_take(const span *l, int n, int *i, int *in, num t)
+{
+    const span_end *e = NULL;
+    while (*i < n && span_next_t(l, *i, *in) == t) {
+        if (*in) {
+            e = &l[*i].b;
+            *in = 0;
+            (*i)++;
+        } else {
+            e = &l[*i].a;
+            *in = 1;
+        }
+    }
+    return e;
+}
+
+int NS(span_merge)(int op, const span *a, int na, const span *b, int nb, span *out)
+{
+    int i = 0, j = 0, ina = 0, inb = 0, inr = 0, n = 0;
+    while (i < na || j < nb) {
+        num t;
+        const span_end *ea, *eb, *e;
+        int now;
+        if (i >= na)
+            t = span_next_t(b, j, inb);
+        else if (j >= nb)
+            t = span_next_t(a, i, ina);
+        else
+            t = num_min(span_next_t(a, i, ina), span_next_t(b, j, inb));
+        ea = span_take(a, na, &i, &ina, t);
+        eb = span_take(b, nb, &j, &inb, t);
+        now = span_op(op, ina, inb);
+        if (now == inr)
+            continue;
+        /* Coincident boundaries: keep the lower primitive id (deterministic,
+         * independent of operand order); unbounded ends lose. */
+        if (ea && eb)
+            e = (eb->prim >= 0 && (ea->prim < 0 || eb->prim < ea->prim)) ? eb : ea;
+        else
+            e = ea ? ea : eb;
+        if (now)
+            out[n].a = *e;
+        else
+            out[n++].b = *e;
+        inr = now;
+    }
+    return n;
+}

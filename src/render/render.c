@@ -1,0 +1,143 @@
+/* render — ops lookup, tiles over OpenMP threads, counter sums (see render.h). */
+#include "render/render.h"
+#include "num/fx.h"
+#include "util/mem.h"
+#include <omp.h>
+#include <string.h>
+
+const render_ops *render_ops_find(const char *name)
+{
+    static const render_ops *const all[] = {&q16_render_ops, &q32_render_ops,
+                                            &f32_render_ops, &f64_render_ops};
+    size_t i;
+    for (i = 0; name && i < sizeof all / sizeof all[0]; i++)
+        if (!strcmp(all[i]->name, name))
+            return all[i];
+    return NULL;
+}
+
+void render_fb_free(render_fb *fb)
+{
+    image_free(&fb->img);
+    mem_free(fb->pid);
+    fb->pid = NULL;
+}
+
+static void render_stats_add(render_stats *a, const render_stats *b)
+{
+    a->rays_primary += b->rays_primary;
+    a->rays_shadow += b->rays_shadow;
+    a->rays_reflected += b->rays_reflected;
+    a->rays_refracted += b->rays_refracted;
+    a->pds_lookups += b->pds_lookups;
+    a->fx_overflows += b->fx_overflows;
+    a->prim_tests += b->prim_tests;
+    a->bound_tests += b->bound_tests;
+    a->csg_pruned += b->csg_pruned;
+    a->arena_full += b->arena_full;
+}
+
+void render_stats_print(FILE *f, const render_stats *st)
+{
+    fprintf(f, "rays.primary=%llu\nrays.shadow=%llu\nrays.reflected=%llu\nrays.refracted=%llu\n"
+               "pds.lookups=%llu\nfx.overflows=%llu\ntests.prim=%llu\ntests.bound=%llu\n"
+               "csg.pruned=%llu\ntime.compile_s=%.6f\ntime.render_s=%.6f\n",
+            st->rays_primary, st->rays_shadow, st->rays_reflected, st->rays_refracted,
+            st->pds_lookups, st->fx_overflows, st->prim_tests, st->bound_tests,
+            st->csg_pruned, st->time_compile_s, st->time_render_s);
+    if (st->arena_full)
+        fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
+}
+
+int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
+                 render_fb *fb, render_stats *st, diag *err)
+{
+    render_opts opt = *o;
+    render_fb out;
+    render_stats total;
+    void *cs = NULL, **tcs = NULL;
+    unsigned long ov0;
+    double t0;
+    long ntx, nty, ntiles, done = 0;
+    int i, status = 0, nthreads;
+
+    memset(&total, 0, sizeof total);
+    memset(&out, 0, sizeof out);
+    if (!opt.width || !opt.height) {
+        opt.width = sc->view.width;
+        opt.height = sc->view.height;
+    }
+    if (opt.width < 1 || opt.height < 1 || opt.width > IMAGE_MAX_SIDE || opt.height > IMAGE_MAX_SIDE)
+        return diag_at(err, DIAG_INPUT, sc->source ? sc->source : "", 0, 0,
+                       "image size %dx%d out of range", opt.width, opt.height);
+    if (opt.aa < 1 || opt.aa > RENDER_MAX_AA || opt.threads < 1 || opt.threads > RENDER_MAX_THREADS)
+        return diag_at(err, DIAG_USAGE, "", 0, 0, "bad anti-aliasing or thread count");
+    nthreads = opt.threads;
+
+    ov0 = fx_overflows;
+    t0 = omp_get_wtime();
+    if ((status = ops->compile(sc, &cs, err)) != 0)
+        return status;
+    total.time_compile_s = omp_get_wtime() - t0;
+    if ((status = image_alloc(&out.img, opt.width, opt.height, 3, "render", err)) != 0)
+        goto done;
+    out.pid = mem_calloc((size_t)opt.width * (size_t)opt.height, sizeof *out.pid);
+    tcs = mem_calloc((size_t)nthreads, sizeof *tcs);
+    if (!out.pid || !tcs) {
+        status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for the framebuffer");
+        goto done;
+    }
+    for (i = 0; i < nthreads; i++)
+        if (ops->thread_new(cs, &tcs[i])) {
+            status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for thread contexts");
+            goto done;
+        }
+    total.fx_overflows += fx_overflows - ov0;
+
+    ntx = (opt.width + RENDER_TILE - 1) / RENDER_TILE;
+    nty = (opt.height + RENDER_TILE - 1) / RENDER_TILE;
+    ntiles = ntx * nty;
+    t0 = omp_get_wtime();
+#pragma omp parallel num_threads(nthreads)
+    {
+        render_stats mine;
+        unsigned long before = fx_overflows;
+        int me = omp_get_thread_num();
+        long k;
+        memset(&mine, 0, sizeof mine);
+#pragma omp for schedule(dynamic, 1)
+        for (k = 0; k < ntiles; k++) {
+            int x0 = (int)(k % ntx) * RENDER_TILE, y0 = (int)(k / ntx) * RENDER_TILE;
+            int x1 = x0 + RENDER_TILE > opt.width ? opt.width : x0 + RENDER_TILE;
+            int y1 = y0 + RENDER_TILE > opt.height ? opt.height : y0 + RENDER_TILE;
+            ops->render_tile(cs, tcs[me], &opt, x0, y0, x1, y1, &out, &mine);
+            if (opt.progress) {
+#pragma omp critical(render_progress)
+                {
+                    done++;
+                    opt.progress(opt.progress_ctx, done, ntiles);
+                }
+            }
+        }
+        mine.fx_overflows += fx_overflows - before;
+#pragma omp critical(render_sum)
+        render_stats_add(&total, &mine);
+    }
+    total.time_render_s = omp_get_wtime() - t0;
+
+done:
+    if (tcs) {
+        for (i = 0; i < nthreads; i++)
+            if (tcs[i])
+                ops->thread_free(tcs[i]);
+        mem_free(tcs);
+    }
+    ops->free(cs);
+    if (status) {
+        render_fb_free(&out);
+        return status;
+    }
+    *fb = out;
+    *st = total;
+    return 0;
+}

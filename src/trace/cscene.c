@@ -1,0 +1,202 @@
+/* cscene — scene analysis and per-mode compilation (see cscene.h). */
+#include "trace/cscene.h"
+#include "util/mem.h"
+#include <math.h>
+#include <string.h>
+
+#define CSCENE_PI 3.14159265358979323846
+
+static const char *cscene_file(const scene *sc) { return sc->source ? sc->source : ""; }
+
+/* Grows the box lo/hi by the deck-space corners of primitive sp's canonical
+ * bounding box (bounded kinds only). */
+static void cscene_grow_box(const scene_prim *sp, double *lo, double *hi)
+{
+    double c[3], l[3], h[3];
+    int k, i;
+    const double *m = sp->world_from_object, *d = sp->dim;
+    switch (sp->kind) {
+    case PRIM_SPHERE:   c[0] = c[1] = c[2] = d[0]; l[0] = l[1] = l[2] = -1; break;
+    case PRIM_CYLINDER: c[0] = c[1] = d[0]; c[2] = d[1]; l[0] = l[1] = -1; l[2] = 0; break;
+    case PRIM_CONE:     c[0] = c[1] = d[0] > d[1] ? d[0] : d[1]; c[2] = d[2];
+                        l[0] = l[1] = -1; l[2] = 0; break;
+    case PRIM_BLOCK:    c[0] = d[0]; c[1] = d[1]; c[2] = d[2]; l[0] = l[1] = l[2] = 0; break;
+    default: return;
+    }
+    h[0] = h[1] = h[2] = 1;
+    for (k = 0; k < 8; k++) {
+        double p[3], w;
+        for (i = 0; i < 3; i++)
+            p[i] = ((k >> i) & 1 ? h[i] : l[i]) * c[i];
+        for (i = 0; i < 3; i++) {
+            w = m[4 * i] * p[0] + m[4 * i + 1] * p[1] + m[4 * i + 2] * p[2] + m[4 * i + 3];
+            if (w < lo[i]) lo[i] = w;
+            if (w > hi[i]) hi[i] = w;
+        }
+    }
+}
+
+static int cscene_finite3(const double *v) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
+
+static int cscene_unit(const double *v, double *out)
+{
+    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(l > 0) || !isfinite(l))
+        return -1;
+    out[0] = v[0] / l; out[1] = v[1] / l; out[2] = v[2] / l;
+    return 0;
+}
+
+void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        world[i] = cs->nm.scale * deck[i] + cs->nm.off[i];
+}
+
+/* Normalisation: the bounded primitives and the eye are mapped into the cube
+ * [-GEOM_W, GEOM_W]^3 by one uniform scale and a translation (docs/numerics.md).
+ * Only half-spaces: the eye and the look point set the box. */
+static int cscene_normalise(const scene *sc, geom_norm *nm, diag *err)
+{
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    double half = 0;
+    size_t i;
+    int j, any = 0;
+    for (i = 0; i < sc->nprims; i++)
+        if (sc->prims[i].kind != PRIM_HALFSPACE) {
+            cscene_grow_box(&sc->prims[i], lo, hi);
+            any = 1;
+        }
+    for (j = 0; j < 3; j++) {
+        if (sc->view.eye[j] < lo[j]) lo[j] = sc->view.eye[j];
+        if (sc->view.eye[j] > hi[j]) hi[j] = sc->view.eye[j];
+        if (!any) {
+            if (sc->view.look[j] < lo[j]) lo[j] = sc->view.look[j];
+            if (sc->view.look[j] > hi[j]) hi[j] = sc->view.look[j];
+        }
+    }
+    for (j = 0; j < 3; j++) {
+        if (!isfinite(lo[j]) || !isfinite(hi[j]) || !isfinite(hi[j] - lo[j]))
+            return diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0,
+                           "scene extent is not finite");
+        if ((hi[j] - lo[j]) / 2 > half)
+            half = (hi[j] - lo[j]) / 2;
+    }
+    if (!(half > 0) || !isfinite(GEOM_W / half)) {
+        double m = 0;
+        for (j = 0; j < 3; j++)
+            if (fabs(lo[j]) > m) m = fabs(lo[j]);
+        half = m > 0 ? m * 1e-6 : 1.0;
+    }
+    nm->scale = GEOM_W / half;
+    for (j = 0; j < 3; j++)
+        nm->off[j] = -nm->scale * (lo[j] + hi[j]) / 2;
+    return 0;
+}
+
+int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
+{
+    cscene *cs;
+    const scene_view *v = &sc->view;
+    double fwd[3], d[3];
+    size_t i;
+    int status = DIAG_IO;
+
+    if (!cscene_finite3(v->eye) || !cscene_finite3(v->look) || !cscene_finite3(v->up)
+        || !(v->fov_deg > 0 && v->fov_deg < 180))
+        return diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0,
+                       "view: eye, look and up must be finite and fov in (0,180) degrees");
+    cs = mem_calloc(1, sizeof *cs);
+    if (!cs)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    cs->sc = sc;
+    cs->tree.root = -1;
+    if ((status = cscene_normalise(sc, &cs->nm, err)) != 0)
+        goto fail;
+    status = DIAG_INPUT;
+    for (i = 0; i < 3; i++)
+        d[i] = v->look[i] - v->eye[i];
+    if (cscene_unit(d, fwd)) {
+        diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0, "view: eye and look coincide");
+        goto fail;
+    }
+    memcpy(cs->fwd, fwd, sizeof fwd);
+    d[0] = fwd[1] * v->up[2] - fwd[2] * v->up[1];
+    d[1] = fwd[2] * v->up[0] - fwd[0] * v->up[2];
+    d[2] = fwd[0] * v->up[1] - fwd[1] * v->up[0];
+    if (cscene_unit(d, cs->right)) {
+        diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0, "view: up is parallel to the view direction");
+        goto fail;
+    }
+    cs->up[0] = cs->right[1] * fwd[2] - cs->right[2] * fwd[1];
+    cs->up[1] = cs->right[2] * fwd[0] - cs->right[0] * fwd[2];
+    cs->up[2] = cs->right[0] * fwd[1] - cs->right[1] * fwd[0];
+    cs->tan_half = tan(v->fov_deg * CSCENE_PI / 360.0);
+    NS(cscene_to_world)(cs, v->eye, cs->eye);
+    cs->eye_n = vec3_from_d(cs->eye);
+    cs->max_depth = sc->max_depth < 0 ? 0 : sc->max_depth > CSCENE_MAX_DEPTH ? CSCENE_MAX_DEPTH
+                                                                          : sc->max_depth;
+    status = DIAG_IO;
+    if (sc->nprims) {
+        cs->prims = mem_calloc(sc->nprims, sizeof *cs->prims);
+        if (!cs->prims) {
+            diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+            goto fail;
+        }
+    }
+    cs->nprims = sc->nprims;
+    for (i = 0; i < sc->nprims; i++) {
+        const scene_prim *sp = &sc->prims[i];
+        if (sp->attr < 0 || (size_t)sp->attr >= sc->nattrs) {
+            status = diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
+                             "primitive '%s': attribute index out of range", sp->name);
+            goto fail;
+        }
+        if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, &cs->prims[i], cscene_file(sc), err)))
+            goto fail;
+    }
+    if (sc->nlights) {
+        cs->lights = mem_calloc(sc->nlights, sizeof *cs->lights);
+        if (!cs->lights) {
+            status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+            goto fail;
+        }
+    }
+    cs->nlights = sc->nlights;
+    for (i = 0; i < sc->nlights; i++) {
+        const scene_light *l = &sc->lights[i];
+        double w[3], len;
+        int j;
+        if (!cscene_finite3(l->pos) || !cscene_finite3(l->color) || !isfinite(l->intensity)) {
+            status = diag_at(err, DIAG_INPUT, cscene_file(sc), l->loc.line, l->loc.col,
+                             "light is not finite");
+            goto fail;
+        }
+        NS(cscene_to_world)(cs, l->pos, w);
+        len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        if (len > GEOM_LIGHT_MAX)           /* far lights keep their direction */
+            for (j = 0; j < 3; j++)
+                w[j] *= GEOM_LIGHT_MAX / len;
+        cs->lights[i].pos = vec3_from_d(w);
+        for (j = 0; j < 3; j++)
+            cs->lights[i].rgb[j] = l->color[j] * l->intensity;
+    }
+    if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)))
+        goto fail;
+    *out = cs;
+    return 0;
+fail:
+    NS(cscene_free)(cs);
+    return status ? status : DIAG_IO;
+}
+
+void NS(cscene_free)(cscene *cs)
+{
+    if (!cs)
+        return;
+    NS(csg_free)(&cs->tree);
+    mem_free(cs->prims);
+    mem_free(cs->lights);
+    mem_free(cs);
+}

@@ -1,0 +1,36 @@
+/* cscene — a scene compiled for one numeric mode: the normalisation into the
+ * fixed-point range, compiled primitives, the CSG tree, lights and camera.
+ * Built from the double-precision scene model, which must outlive it (the
+ * attributes are read from it). Modal: compiled per numeric mode. */
+#ifndef TRACE_CSCENE_H
+#define TRACE_CSCENE_H
+#include "geom/csg.h"
+
+#define CSCENE_MAX_DEPTH 32   /* recursion limit applied to scene max_depth */
+
+typedef struct cscene_light {
+    vec3 pos;                 /* normalised world */
+    double rgb[3];            /* colour times intensity */
+} cscene_light;
+
+typedef struct cscene {
+    const scene *sc;
+    geom_norm nm;
+    prim *prims;
+    size_t nprims;
+    csg tree;
+    cscene_light *lights;
+    size_t nlights;
+    double eye[3], fwd[3], right[3], up[3], tan_half;   /* camera, normalised */
+    vec3 eye_n;
+    int max_depth;
+} cscene;
+
+/* Compiles sc. 0 and *out (free with cscene_free), or a diag status:
+ * DIAG_INPUT with the location of the offending definition, DIAG_IO when
+ * memory runs out. */
+int NS(cscene_compile)(const scene *sc, cscene **out, diag *err);
+void NS(cscene_free)(cscene *cs);
+/* Maps a deck point to the normalised world (double). */
+void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world);
+#endif

@@ -1,0 +1,136 @@
+/* probe — geometry queries in deck units for one numeric mode (probe.h). */
+#include "trace/probe.h"
+#include "trace/cscene.h"
+#include "util/mem.h"
+#include <math.h>
+#include <string.h>
+
+typedef struct probe_cs {
+    cscene *cs;
+    arena ar;
+} probe_cs;
+
+static int probe_compile(const scene *sc, void **out, diag *err)
+{
+    probe_cs *p = mem_calloc(1, sizeof *p);
+    int st;
+    if (!p)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
+    if ((st = NS(cscene_compile)(sc, &p->cs, err)) != 0) {
+        mem_free(p);
+        return st;
+    }
+    if (arena_init(&p->ar, NS(csg_arena_bytes)(&p->cs->tree))) {
+        NS(cscene_free)(p->cs);
+        mem_free(p);
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
+    }
+    *out = p;
+    return 0;
+}
+
+static void probe_free(void *v)
+{
+    probe_cs *p = v;
+    if (!p)
+        return;
+    arena_free(&p->ar);
+    NS(cscene_free)(p->cs);
+    mem_free(p);
+}
+
+/* Deck ray -> normalised-world ray in num; -1 for a zero direction. */
+static int probe_ray(const cscene *cs, const double *o, const double *d, prim_ray *r)
+{
+    double w[3];
+    NS(cscene_to_world)(cs, o, w);
+    r->o = vec3_from_d(w);
+    r->excl_prim = -1;
+    r->excl_enter = 0;
+    {
+        double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), u[3];
+        if (!(l > 0))
+            return -1;
+        u[0] = d[0] / l; u[1] = d[1] / l; u[2] = d[2] / l;
+        return vec3_normalize(vec3_from_d(u), &r->d, NULL);
+    }
+}
+
+static int probe_prim_span(const void *v, int pi, const double *o, const double *d,
+                           double *t, int *face)
+{
+    const probe_cs *p = v;
+    const cscene *cs = p->cs;
+    prim_ray r;
+    span s;
+    if (pi < 0 || (size_t)pi >= cs->nprims || probe_ray(cs, o, d, &r))
+        return 0;
+    if (!NS(prim_intersect)(&cs->prims[pi], &r, num_neg(num_from_i(GEOM_TBIG)), num_from_i(GEOM_TMAX), &s))
+        return 0;
+    t[0] = num_to_d(s.a.t) / cs->nm.scale;
+    t[1] = num_to_d(s.b.t) / cs->nm.scale;
+    face[0] = s.a.face;
+    face[1] = s.b.face;
+    return 1;
+}
+
+/* Nearest hit of r; fills h (deck units) and the num hit point. The probe
+ * owns one arena, so one compiled probe must not be queried from two
+ * threads at once. */
+static int probe_trace(const probe_cs *pc, const prim_ray *r, probe_hit *h, vec3 *pn)
+{
+    const cscene *cs = pc->cs;
+    geom_stats gs;
+    csg_hit ch;
+    double dd[3], dn;
+    int i;
+    memset(&gs, 0, sizeof gs);
+    if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX),
+                           (arena *)&pc->ar, &gs, &ch))
+        return 0;
+    *pn = vec3_madd(r->o, ch.t, r->d);
+    NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, &h->sf);
+    h->t = num_to_d(ch.t) / cs->nm.scale;
+    h->prim = ch.prim;
+    h->face = ch.face;
+    h->entering = ch.entering;
+    vec3_to_d(r->d, dd);
+    dn = dd[0] * h->sf.n[0] + dd[1] * h->sf.n[1] + dd[2] * h->sf.n[2];
+    for (i = 0; i < 3; i++) {
+        h->p[i] = (h->sf.p[i] - cs->nm.off[i]) / cs->nm.scale;
+        /* entering: the outward normal faces the ray (dn < 0) */
+        h->n_solid[i] = (ch.entering ? dn > 0 : dn < 0) ? -h->sf.n[i] : h->sf.n[i];
+    }
+    return 1;
+}
+
+static int probe_hit_fn(const void *v, const double *o, const double *d, probe_hit *h)
+{
+    const probe_cs *p = v;
+    prim_ray r;
+    vec3 pn;
+    if (probe_ray(p->cs, o, d, &r))
+        return 0;
+    return probe_trace(p, &r, h, &pn);
+}
+
+static int probe_respawn(const void *v, const double *o, const double *d, const double *d2,
+                         probe_hit *h1, probe_hit *h2)
+{
+    const probe_cs *p = v;
+    prim_ray r, r2;
+    vec3 pn;
+    double l = sqrt(d2[0] * d2[0] + d2[1] * d2[1] + d2[2] * d2[2]), u[3];
+    if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || !(l > 0))
+        return -1;
+    u[0] = d2[0] / l; u[1] = d2[1] / l; u[2] = d2[2] / l;
+    r2.o = pn;
+    if (vec3_normalize(vec3_from_d(u), &r2.d, NULL))
+        return -1;
+    r2.excl_prim = h1->prim;
+    r2.excl_enter = u[0] * h1->sf.n[0] + u[1] * h1->sf.n[1] + u[2] * h1->sf.n[2] < 0;
+    return probe_trace(p, &r2, h2, &pn);
+}
+
+const probe_ops NS(probe_ops) = {
+    NUM_NAME, probe_compile, probe_free, probe_prim_span, probe_hit_fn, probe_respawn};

@@ -1,0 +1,36 @@
+/* probe — a mode-independent window on one mode's geometry, in deck units
+ * and doubles, for tests, the Fortran oracle comparison and diagnostics.
+ * Rays are given in the deck's coordinates; ray parameters come back in deck
+ * units along the unit direction. Each mode provides NS(probe_ops). */
+#ifndef TRACE_PROBE_H
+#define TRACE_PROBE_H
+#include "geom/geom.h"
+
+typedef struct probe_hit {
+    double t;                 /* deck units along the unit direction */
+    int prim, face;
+    int entering;             /* the ray enters the solid at the hit */
+    double p[3];              /* hit point, deck coordinates */
+    double n_solid[3];        /* outward normal of the CSG solid (flipped where a
+                                 difference exposes a subtracted solid) */
+    geom_surface sf;          /* normalised-world surface record */
+} probe_hit;
+
+typedef struct probe_ops {
+    const char *name;
+    int (*compile)(const scene *sc, void **cs, diag *err);
+    void (*free)(void *cs);
+    /* Span of primitive pi along o + t d: 1 and t[2], face[2], or 0 (miss). */
+    int (*prim_span)(const void *cs, int pi, const double *o, const double *d,
+                     double *t, int *face);
+    /* Nearest hit of the whole scene: 1 and *h, or 0. */
+    int (*hit)(const void *cs, const double *o, const double *d, probe_hit *h);
+    /* Hits along d from o, then spawns a ray from that hit point (kept in the
+     * mode's numbers) along d2, as shading does; 1 and *h2 for its nearest
+     * hit, 0 when it hits nothing, -1 when the first ray missed. */
+    int (*respawn)(const void *cs, const double *o, const double *d, const double *d2,
+                   probe_hit *h1, probe_hit *h2);
+} probe_ops;
+
+extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops;
+#endif

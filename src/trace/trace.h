@@ -1,0 +1,24 @@
+/* trace — Algorithm 1 of the paper for one ray: nearest hit, (u,v) of the
+ * face, attribute lookup, shadows, shading, and recursion for mirror
+ * reflection and refraction. Modal: compiled per numeric mode. */
+#ifndef TRACE_TRACE_H
+#define TRACE_TRACE_H
+#include "trace/cscene.h"
+#include "render/render.h"
+
+/* Per-thread state: span arena and counters. */
+typedef struct trace_ctx {
+    arena ar;
+    geom_stats gs;
+    render_stats rs;
+} trace_ctx;
+
+/* 0, or -1 when memory runs out. */
+int NS(trace_ctx_init)(const cscene *cs, trace_ctx *tc);
+void NS(trace_ctx_free)(trace_ctx *tc);
+
+/* Shades ray r (a primary ray: depth 0, weight 1) into rgb (linear, not
+ * clamped); *pid receives the primitive hit (-1 for the background). */
+void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
+                   double weight, double rgb[3], int *pid);
+#endif

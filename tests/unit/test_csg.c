@@ -1,0 +1,468 @@
+/* test_csg — CSG by span lists in every numeric mode: identities (A-A is
+ * empty, A u A = A, A n B lies in both), the exactly coincident
+ * block-minus-cylinder case pixel-exact in q16 and f64 (head-on render and
+ * oblique rays), normals flipped where a difference exposes the subtracted
+ * solid, random trees against a brute-force point classification,
+ * sublinear cost for a slab minus N cylinders, malformed trees. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <stdlib.h>
+#include "tracer_test.h"
+#include "geom/geom.h"
+#include "util/mem.h"
+
+#define VIEW "EYE 9 -9 7\nLOOKAT 0 0 0\nLIGHT 0 0 20\n"
+static const char *const csg_solids[] = {
+    "SPHERE %s 1.3", "CYLINDER %s 0.9 2.1", "BLOCK %s 1.7 1.1 2.3", "CONE %s 1.2 0.4 1.9"};
+
+static int csg_find_prim(const scene *sc, const char *name)
+{
+    size_t i;
+    for (i = 0; i < sc->nprims; i++)
+        if (!strcmp(sc->prims[i].name, name))
+            return (int)i;
+    return -1;
+}
+
+static void csg_random_ray(uint64_t *s, double *o, double *d)
+{
+    double l = 0;
+    int i;
+    for (i = 0; i < 3; i++) {
+        o[i] = test_uniform(s, -7, 7);
+        d[i] = test_uniform(s, -2.5, 2.5) - o[i];
+        l += d[i] * d[i];
+    }
+    l = sqrt(l);
+    for (i = 0; i < 3; i++)
+        d[i] /= l;
+}
+
+static void test_csg_identities(void **state)
+{
+    static const char *const roots[3] = {"D", "U", "I"};
+    uint64_t s = test_seed("test_csg_identities");
+    int m, k, n, j;
+    (void)state;
+    for (m = 0; m < 4; m++)
+        for (k = 0; k < 4; k++)
+            for (n = 0; n < 4; n++) {
+                char tail[256], tail2[256], a[64], b[64];
+                long bad_diff = 0, bad_union = 0, bad_inter = 0;
+                const probe_ops *ops = tt_mode(m);
+                tt_random_tail(&s, tail, sizeof tail);
+                tt_random_tail(&s, tail2, sizeof tail2);
+                snprintf(a, sizeof a, csg_solids[k], "A");
+                snprintf(b, sizeof b, csg_solids[(k + 1) % 4], "B");
+                for (j = 0; j < 3; j++) {
+                    char deck[2048];
+                    scene *sc;
+                    void *cs;
+                    diag err;
+                    size_t r;
+                    /* primitives: A is 0, B is 1 */
+                    snprintf(deck, sizeof deck, VIEW "%s %s\n%s %s\nDIFF D A A\nUNION U A A\n"
+                             "INTER I A B\nOBJECT %s\n", a, tail, b, tail2, roots[j]);
+                    sc = tt_parse(deck);
+                    assert_non_null(sc);
+                    diag_init(&err);
+                    assert_int_equal(ops->compile(sc, &cs, &err), 0);
+                    for (r = 0; r < 150; r++) {
+                        double o[3], d[3], t[2];
+                        int face[2];
+                        probe_hit h;
+                        csg_random_ray(&s, o, d);
+                        if (j == 0 && ops->hit(cs, o, d, &h))
+                            bad_diff++;
+                        if (j == 1) {
+                            /* the union must give exactly A's nearest crossing */
+                            int sa = ops->prim_span(cs, 0, o, d, t, face), hb = ops->hit(cs, o, d, &h);
+                            int want_hit = sa && t[1] > 0;
+                            double want = t[0] > 0 ? t[0] : t[1];
+                            if (want_hit != hb || (hb && (h.t != want || h.prim != 0)))
+                                bad_union++;
+                        }
+                        if (j == 2 && ops->hit(cs, o, d, &h)) {
+                            double q[3];
+                            int p;
+                            for (p = 0; p < 2; p++) {
+                                tt_to_object(&sc->prims[p], h.p, q);
+                                if (tt_sdf(&sc->prims[p], q) > 2e-3 * (1 + h.t / 10))
+                                    bad_inter++;
+                            }
+                        }
+                    }
+                    ops->free(cs);
+                    scene_free(sc);
+                }
+                if (bad_diff || bad_union || bad_inter)
+                    printf("# %s %s: A-A hits %ld, AuA mismatches %ld, AnB outside %ld\n",
+                           ops->name, a, bad_diff, bad_union, bad_inter);
+                assert_int_equal(bad_diff + bad_union + bad_inter, 0);
+            }
+}
+
+/* Random CSG trees of 3 to 6 primitives with random operators: the nearest
+ * hit of every mode must match a brute-force march along the ray that
+ * classifies points with the independent signed-distance test and the
+ * tree's boolean formula. */
+typedef struct csg_rtree { int n, op[8], l[8], r[8]; } csg_rtree;   /* node k: op(l, r) */
+
+/* Membership of a point: leaves 0..np-1 are primitives, nodes np+k. */
+static int csg_rtree_in(const csg_rtree *t, int np, int node, const int *inp)
+{
+    int a, b, k;
+    if (node < np)
+        return inp[node];
+    k = node - np;
+    a = csg_rtree_in(t, np, t->l[k], inp);
+    b = csg_rtree_in(t, np, t->r[k], inp);
+    return t->op[k] == 0 ? (a || b) : t->op[k] == 1 ? (a && b) : (a && !b);
+}
+
+/* Membership at o + tt d; *margin is the smallest |signed distance|. The
+ * primitive of leaf Pi is found by name (the parser numbers primitives in
+ * the order the rendered tree uses them). */
+static int csg_rtree_at(const scene *sc, const csg_rtree *t, int np, const double *o, const double *d,
+                        double tt, double *margin)
+{
+    int in[8], i;
+    double p[3], q[3];
+    *margin = HUGE_VAL;
+    for (i = 0; i < 3; i++)
+        p[i] = o[i] + tt * d[i];
+    for (i = 0; i < np; i++) {
+        char nm[16];
+        const scene_prim *sp;
+        double sd;
+        snprintf(nm, sizeof nm, "P%d", i);
+        sp = &sc->prims[csg_find_prim(sc, nm)];
+        tt_to_object(sp, p, q);
+        sd = tt_sdf(sp, q);
+        in[i] = sd < 0;
+        if (fabs(sd) < *margin)
+            *margin = fabs(sd);
+    }
+    return csg_rtree_in(t, np, np + t->n - 1, in);
+}
+
+#define CSG_TREES 16
+#define CSG_TREE_RAYS 80
+
+typedef struct csg_rcase { double o[3], d[3], tb; int s0, skip; } csg_rcase;
+
+static void test_csg_random_trees_match_classification(void **state)
+{
+    static const char *const opname[3] = {"UNION", "INTER", "DIFF"};
+    static csg_rcase rc[CSG_TREES][CSG_TREE_RAYS];
+    static scene *sc[CSG_TREES];
+    static csg_rtree t[CSG_TREES];
+    static int npr[CSG_TREES];
+    uint64_t s = test_seed("test_csg_random_trees_match_classification");
+    int m, n, k, i;
+    (void)state;
+    /* trees, rays and the brute-force first crossing, shared by all modes */
+    for (n = 0; n < CSG_TREES; n++) {
+        char deck[4096], tail[256], name[64], *p = deck;
+        int np = npr[n] = 3 + (int)(test_rand(&s) % 4), pool[16], npool = np;
+        p += sprintf(p, VIEW);
+        for (i = 0; i < np; i++) {
+            char nm[16];
+            snprintf(nm, sizeof nm, "P%d", i);
+            tt_random_tail(&s, tail, sizeof tail);
+            snprintf(name, sizeof name, csg_solids[test_rand(&s) % 4], nm);
+            p += sprintf(p, "%s %s\n", name, tail);
+        }
+        /* a random binary tree: combine random pairs from a pool */
+        t[n].n = np - 1;
+        for (i = 0; i < np; i++)
+            pool[i] = i;
+        for (k = 0; k < t[n].n; k++) {
+            int a = (int)(test_rand(&s) % (uint64_t)npool), b, la = pool[a];
+            pool[a] = pool[--npool];
+            b = (int)(test_rand(&s) % (uint64_t)npool);
+            t[n].l[k] = la;
+            t[n].r[k] = pool[b];
+            t[n].op[k] = (int)(test_rand(&s) % 3);
+            pool[b] = np + k;
+            p += sprintf(p, "%s N%d %s%d %s%d\n", opname[t[n].op[k]], k, la < np ? "P" : "N",
+                         la < np ? la : la - np, t[n].r[k] < np ? "P" : "N",
+                         t[n].r[k] < np ? t[n].r[k] : t[n].r[k] - np);
+        }
+        sprintf(p, "OBJECT N%d\n", t[n].n - 1);
+        sc[n] = tt_parse(deck);
+        assert_non_null(sc[n]);
+        for (k = 0; k < CSG_TREE_RAYS; k++) {
+            csg_rcase *c = &rc[n][k];
+            double step = 0.01, mg, tt;
+            csg_random_ray(&s, c->o, c->d);
+            c->s0 = csg_rtree_at(sc[n], &t[n], np, c->o, c->d, 1e-9, &mg);
+            c->skip = mg < 1e-3;
+            c->tb = -1;
+            /* march to the first change of membership, then bisect */
+            for (tt = step; tt < 20 && !c->skip; tt += step)
+                if (csg_rtree_at(sc[n], &t[n], np, c->o, c->d, tt, &mg) != c->s0) {
+                    double a = tt - step, b = tt;
+                    for (i = 0; i < 50; i++) {
+                        double mid = (a + b) / 2;
+                        if (csg_rtree_at(sc[n], &t[n], np, c->o, c->d, mid, &mg) != c->s0) b = mid; else a = mid;
+                    }
+                    c->tb = b;
+                    break;
+                }
+        }
+    }
+    for (m = 0; m < 4; m++) {
+        const probe_ops *ops = tt_mode(m);
+        long compared = 0, bad = 0;
+        for (n = 0; n < CSG_TREES; n++) {
+            void *cs;
+            diag err;
+            diag_init(&err);
+            assert_int_equal(ops->compile(sc[n], &cs, &err), 0);
+            for (k = 0; k < CSG_TREE_RAYS; k++) {
+                const csg_rcase *c = &rc[n][k];
+                probe_hit h;
+                double mg;
+                int found, ok = 1;
+                if (c->skip)
+                    continue;
+                found = ops->hit(cs, c->o, c->d, &h);
+                if (found && h.t >= 20)
+                    found = 0;
+                if (found && (c->tb < 0 || fabs(h.t - c->tb) > 2e-3 * (1 + c->tb / 10))) {
+                    /* the march may step over a sliver: accept an earlier
+                     * hit where membership really changes just past it */
+                    double e;
+                    ok = 0;
+                    for (e = 5e-4; e < 1e-2 && !ok; e += 5e-4)
+                        ok = csg_rtree_at(sc[n], &t[n], npr[n], c->o, c->d, h.t + e, &mg) != c->s0;
+                    ok = ok && (c->tb < 0 || h.t < c->tb);
+                } else if (!found && c->tb >= 0) {
+                    ok = 0;
+                }
+                if (!ok && bad++ < 3)
+                    printf("# %s tree %d ray %d (o %.17g %.17g %.17g d %.17g %.17g %.17g): probe %s t=%.6f,"
+                           " march t=%.6f\n", ops->name, n, k, c->o[0], c->o[1], c->o[2], c->d[0], c->d[1],
+                           c->d[2], found ? "hit" : "miss", found ? h.t : 0, c->tb);
+                compared++;
+            }
+            ops->free(cs);
+        }
+        printf("# %s: %ld rays through random trees, %ld mismatches\n", ops->name, compared, bad);
+        assert_true(compared > 1000);
+        assert_int_equal(bad, 0);
+    }
+    for (n = 0; n < CSG_TREES; n++)
+        scene_free(sc[n]);
+}
+
+/* Head-on view down the axis of a block minus a cylinder whose caps lie
+ * exactly on the block's faces: every pixel is classified from the pixel's
+ * ray in double (hole, wall, plate), away from the rims by less than a
+ * pixel, and compared with the rendered PID. */
+static long csg_coincident_wrong(const render_ops *mode, long *counted)
+{
+    static const char deck[] =
+        "EYE 1 1 12\nLOOKAT 1 1 0\nUP 0 1 0\nFOV 20\nLIGHT 3 -4 8\n"
+        "BLOCK PLATE 2 2 1\nCYLINDER PLUG 0.45 1 TRANSLATE 1 1 0\n"
+        "DIFF HOLED PLATE PLUG\nHALFSPACE GROUND TRANSLATE 0 0 -0.5\n"
+        "OBJECT HOLED\nOBJECT GROUND\n";
+    scene *sc = tt_parse(deck);
+    render_opts o;
+    render_fb fb;
+    render_stats st;
+    diag err;
+    int W = 160, x, y, plate, plug, ground;
+    long wrong = 0;
+    double th = tan(10 * 3.14159265358979323846 / 180), m = 0.01;
+    assert_non_null(sc);
+    plate = csg_find_prim(sc, "PLATE");
+    plug = csg_find_prim(sc, "PLUG");
+    ground = csg_find_prim(sc, "GROUND");
+    memset(&o, 0, sizeof o);
+    o.width = o.height = W;
+    o.threads = 1;
+    o.aa = 1;
+    diag_init(&err);
+    assert_int_equal(render_scene(sc, mode, &o, &fb, &st, &err), 0);
+    *counted = 0;
+    for (y = 0; y < W; y++)
+        for (x = 0; x < W; x++) {
+            /* camera: forward -z, right = fwd x up = +x, up +y */
+            double sx = (2 * (x + 0.5) / W - 1) * th, sy = (1 - 2 * (y + 0.5) / W) * th;
+            double x1 = 1 + 11 * sx, y1 = 1 + 11 * sy, r1 = hypot(x1 - 1, y1 - 1);
+            double r0 = r1 * 12 / 11;     /* radius where the ray reaches z = 0 */
+            int pid = fb.pid[y * W + x], want = -2;
+            if (r1 > 0.45 + m && fabs(x1 - 1) < 1 - m && fabs(y1 - 1) < 1 - m)
+                want = plate;
+            else if (r1 < 0.45 - m && r0 < 0.45 - m)
+                want = ground;
+            else if (r1 < 0.45 - m && r0 > 0.45 + m)
+                want = plug;              /* the hole's wall */
+            if (want == -2)
+                continue;
+            (*counted)++;
+            if (pid != want)
+                wrong++;
+        }
+    render_fb_free(&fb);
+    scene_free(sc);
+    return wrong;
+}
+
+static void test_csg_coincident_head_on_pixel_exact(void **state)
+{
+    long n16, n64, w16, w64;
+    (void)state;
+    w16 = csg_coincident_wrong(&q16_render_ops, &n16);
+    w64 = csg_coincident_wrong(&f64_render_ops, &n64);
+    printf("# coincident head-on: q16 %ld of %ld pixels wrong, f64 %ld of %ld\n", w16, n16, w64, n64);
+    assert_true(n16 > 5000 && n64 == n16);
+    assert_int_equal(w16, 0);
+    assert_int_equal(w64, 0);
+}
+
+/* Oblique rays from the shipped deck's eye into the hole: the block's top
+ * face and the cylinder's caps must never be hit inside the hole. */
+static void test_csg_coincident_oblique_rays(void **state)
+{
+    uint64_t s = test_seed("test_csg_coincident_oblique_rays");
+    static const char deck[] =
+        "EYE 4.0 -3.0 3.2\nLOOKAT 1 1 0.3\nLIGHT 5 -4 8\n"
+        "BLOCK PLATE 2 2 1\nCYLINDER PLUG 0.45 1 TRANSLATE 1 1 0\n"
+        "DIFF HOLED PLATE PLUG\nHALFSPACE GROUND TRANSLATE 0 0 -0.5\n"
+        "OBJECT HOLED\nOBJECT GROUND\n";
+    scene *sc = tt_parse(deck);
+    int m, k, plate, plug;
+    (void)state;
+    assert_non_null(sc);
+    plate = csg_find_prim(sc, "PLATE");
+    plug = csg_find_prim(sc, "PLUG");
+    for (m = 0; m < 4; m++) {
+        const probe_ops *ops = tt_mode(m);
+        void *cs;
+        diag err;
+        long wrong = 0, flip_bad = 0, walls = 0;
+        diag_init(&err);
+        assert_int_equal(ops->compile(sc, &cs, &err), 0);
+        for (k = 0; k < 4000; k++) {
+            double a = test_uniform(&s, 0, 6.283185307179586), r = 0.44 * sqrt(test_uniform(&s, 0, 1));
+            double z = k % 2 ? 1.0 : 0.0;     /* aim at the top or bottom disc */
+            double tgt[3] = {1 + r * cos(a), 1 + r * sin(a), z}, o[3] = {4.0, -3.0, 3.2}, d[3];
+            probe_hit h;
+            int i;
+            for (i = 0; i < 3; i++)
+                d[i] = tgt[i] - o[i];
+            if (!ops->hit(cs, o, d, &h))
+                continue;
+            if ((h.prim == plate && h.face == GEOM_FACE_BLOCK_ZMAX && z == 1.0)
+                || (h.prim == plug && h.face != GEOM_FACE_CYL_SIDE))
+                wrong++;
+            if (h.prim == plug) {
+                /* the wall is seen from inside the cylinder: normal flipped */
+                double dn = h.n_solid[0] * d[0] + h.n_solid[1] * d[1] + h.n_solid[2] * d[2];
+                walls++;
+                if (!(dn < 0) || !(h.n_solid[0] == -h.sf.n[0] && h.n_solid[2] == -h.sf.n[2]))
+                    flip_bad++;
+            }
+        }
+        printf("# %s oblique: %ld wrong hits, %ld wall hits, %ld bad normals\n", ops->name, wrong, walls, flip_bad);
+        assert_int_equal(wrong, 0);
+        assert_true(walls > 100);
+        assert_int_equal(flip_bad, 0);
+        ops->free(cs);
+    }
+    scene_free(sc);
+}
+
+/* A slab minus N cylinders: primitive tests per primary ray grow far slower
+ * than N thanks to the balanced union of subtrahends and bounding spheres. */
+static double csg_slab_tests_per_ray(int n)
+{
+    char *deck = mem_alloc(200 + (size_t)n * 64), *p;
+    scene *sc;
+    render_opts o;
+    render_fb fb;
+    render_stats st;
+    diag err;
+    int i, side = 1;
+    while (side * side < n)
+        side++;
+    p = deck;
+    p += sprintf(p, "EYE 0 -6 12\nLOOKAT 0 0 0\nLIGHT 3 -4 20\nBLOCK SLAB 8 8 0.5 TRANSLATE -4 -4 0\n"
+                    "CYLINDER C 0.1 1 TRANSLATE 0 0 -0.25\n");
+    /* groups of 8 translated copies (a statement holds at most 512 items) */
+    for (i = 0; i < n; i++) {
+        if (i % 8 == 0)
+            p += sprintf(p, "UNION G%d", i / 8);
+        p += sprintf(p, " C TRANSLATE %.4f %.4f 0 %s\n", -3.5 + 7.0 * (i % side) / side,
+                     -3.5 + 7.0 * (i / side) / side, i % 8 == 7 ? "" : "-");
+    }
+    p += sprintf(p, "DIFF HOLES SLAB -\n");
+    for (i = 0; i < n / 8; i++)
+        p += sprintf(p, " G%d %s\n", i, i + 1 < n / 8 ? "-" : "");
+    sprintf(p, "OBJECT HOLES\n");
+    sc = tt_parse(deck);
+    mem_free(deck);
+    assert_non_null(sc);
+    memset(&o, 0, sizeof o);
+    o.width = o.height = 64;
+    o.threads = 1;
+    o.aa = 1;
+    diag_init(&err);
+    assert_int_equal(render_scene(sc, &q16_render_ops, &o, &fb, &st, &err), 0);
+    render_fb_free(&fb);
+    scene_free(sc);
+    return (double)st.prim_tests / (double)(st.rays_primary + st.rays_shadow);
+}
+
+static void test_csg_slab_cost_sublinear(void **state)
+{
+    double t8, t256;
+    (void)state;
+    t8 = csg_slab_tests_per_ray(8);
+    t256 = csg_slab_tests_per_ray(256);
+    printf("# slab minus N cylinders: %.2f primitive tests per ray at N=8, %.2f at N=256\n", t8, t256);
+    assert_true(t256 < 3 * t8);
+    assert_true(t256 < 256 / 8.0);
+}
+
+static void test_csg_rejects_malformed_tree(void **state)
+{
+    scene *sc = tt_parse(VIEW "SPHERE A 1\nSPHERE B 1 TRANSLATE 1 0 0\nUNION U A B\nOBJECT U\n");
+    void *cs;
+    diag err;
+    char buf[256];
+    int saved;
+    (void)state;
+    assert_non_null(sc);
+    saved = sc->nodes[sc->roots[0]].left;
+    sc->nodes[sc->roots[0]].left = 99;
+    diag_init(&err);
+    assert_int_equal(q16_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "test.scene: error: CSG node index out of range");
+    sc->nodes[sc->roots[0]].left = sc->roots[0];     /* a cycle */
+    diag_init(&err);
+    assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "test.scene: error: CSG tree has a cycle or shares subtrees too often");
+    sc->nodes[sc->roots[0]].left = saved;
+    scene_free(sc);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_csg_identities),
+        cmocka_unit_test(test_csg_random_trees_match_classification),
+        cmocka_unit_test(test_csg_coincident_head_on_pixel_exact),
+        cmocka_unit_test(test_csg_coincident_oblique_rays),
+        cmocka_unit_test(test_csg_slab_cost_sublinear),
+        cmocka_unit_test(test_csg_rejects_malformed_tree),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

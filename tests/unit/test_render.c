@@ -1,0 +1,259 @@
+/* test_render — the render driver and Algorithm 1 end to end: golden
+ * images, ray counts, thread-count independence, scale independence of the
+ * normalised scene, mode lookup and an allocation-failure sweep. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <stdlib.h>
+#include "tracer_test.h"
+#include "util/mem.h"
+#include "util/outfile.h"
+
+static scene *render_load(const char *path)
+{
+    size_t len;
+    char *text = test_read_file(path, &len), *z;
+    scene *sc;
+    assert_non_null(text);
+    z = mem_alloc(len + 1);
+    assert_non_null(z);
+    memcpy(z, text, len);
+    z[len] = 0;
+    mem_free(text);
+    sc = tt_parse(z);
+    mem_free(z);
+    assert_non_null(sc);
+    return sc;
+}
+
+static render_opts render_default(int w, int h, int threads)
+{
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.width = w;
+    o.height = h;
+    o.threads = threads;
+    o.aa = 1;
+    return o;
+}
+
+/* Pixels where some channel differs by more than tol. */
+static long render_diff(const image *a, const image *b, int tol)
+{
+    long n = 0;
+    size_t i, k;
+    assert_int_equal(a->width, b->width);
+    assert_int_equal(a->height, b->height);
+    for (i = 0; i < (size_t)a->width * (size_t)a->height; i++) {
+        int big = 0;
+        for (k = 0; k < 3; k++)
+            if (abs((int)a->px[3 * i + k] - (int)b->px[3 * i + k]) > tol)
+                big = 1;
+        n += big;
+    }
+    return n;
+}
+
+static void test_render_goldens(void **state)
+{
+    static const char *const scenes[] = {"fig1", "csg", "coincident"};
+    static const char *const modes[] = {"q16", "f64"};
+    size_t s, m;
+    (void)state;
+    for (s = 0; s < 3; s++)
+        for (m = 0; m < 2; m++) {
+            char path[256];
+            scene *sc;
+            image gold;
+            render_fb fb;
+            render_stats st;
+            render_opts o = render_default(128, 128, 1);
+            diag err;
+            long bad;
+            snprintf(path, sizeof path, "scenes/%s.scene", scenes[s]);
+            sc = render_load(path);
+            diag_init(&err);
+            snprintf(path, sizeof path, "tests/golden/%s-%s.png", scenes[s], modes[m]);
+            assert_int_equal(image_read_png(path, 3, &gold, &err), 0);
+            assert_int_equal(render_scene(sc, render_ops_find(modes[m]), &o, &fb, &st, &err), 0);
+            bad = render_diff(&fb.img, &gold, 2);
+            printf("# %s: %ld of %d pixels differ by more than 2/255\n", path, bad, 128 * 128);
+            assert_true(bad <= 128 * 128 / 200);
+            image_free(&gold);
+            render_fb_free(&fb);
+            scene_free(sc);
+        }
+}
+
+static void test_render_counts_and_threads(void **state)
+{
+    scene *sc = render_load("scenes/fig1.scene");
+    render_fb a, b;
+    render_stats sa, sb;
+    render_opts o = render_default(70, 50, 1);
+    diag err;
+    int i;
+    (void)state;
+    diag_init(&err);
+    o.aa = 3;
+    assert_int_equal(render_scene(sc, &q16_render_ops, &o, &a, &sa, &err), 0);
+    o.threads = 2;
+    assert_int_equal(render_scene(sc, &q16_render_ops, &o, &b, &sb, &err), 0);
+    assert_true(sa.rays_primary == 70ull * 50 * 9);
+    assert_true(sa.rays_shadow > 0 && sa.rays_reflected > 0);
+    assert_true(sa.rays_shadow == sb.rays_shadow && sa.rays_reflected == sb.rays_reflected);
+    assert_true(sa.fx_overflows == 0);
+    assert_int_equal(render_diff(&a.img, &b.img, 0), 0);
+    for (i = 0; i < 70 * 50; i++) {
+        assert_int_equal(a.pid[i], b.pid[i]);
+        assert_true(a.pid[i] >= -1 && a.pid[i] < (int)sc->nprims);
+    }
+    render_fb_free(&a);
+    render_fb_free(&b);
+    scene_free(sc);
+}
+
+/* Scales every position of the scene model by f (a scene built in C). */
+static void render_scale_scene(scene *sc, double f)
+{
+    size_t i;
+    int k;
+    for (i = 0; i < sc->nprims; i++)
+        for (k = 0; k < 12; k++)
+            sc->prims[i].world_from_object[k] *= f;
+    for (k = 0; k < 3; k++) {
+        sc->view.eye[k] *= f;
+        sc->view.look[k] *= f;
+    }
+    for (i = 0; i < sc->nlights; i++)
+        for (k = 0; k < 3; k++)
+            sc->lights[i].pos[k] *= f;
+}
+
+/* Uniform scales 1e-4 .. 1e6 of the whole scene change at most 0.1% of the
+ * pixels by more than 8/255 (anchor target; no absolute epsilons). */
+static void test_render_scale_independent(void **state)
+{
+    static const double scales[] = {1e-4, 1e-2, 1e3, 1e6};
+    const render_ops *modes[2] = {&q16_render_ops, &f64_render_ops};
+    size_t i, m;
+    (void)state;
+    for (m = 0; m < 2; m++) {
+        scene *sc = render_load("scenes/csg.scene");
+        render_fb ref;
+        render_stats st;
+        render_opts o = render_default(96, 96, 1);
+        diag err;
+        diag_init(&err);
+        assert_int_equal(render_scene(sc, modes[m], &o, &ref, &st, &err), 0);
+        scene_free(sc);
+        for (i = 0; i < sizeof scales / sizeof scales[0]; i++) {
+            render_fb fb;
+            long bad;
+            sc = render_load("scenes/csg.scene");
+            render_scale_scene(sc, scales[i]);
+            assert_int_equal(render_scene(sc, modes[m], &o, &fb, &st, &err), 0);
+            bad = render_diff(&fb.img, &ref.img, 8);
+            printf("# %s scale %g: %ld pixels differ by more than 8/255\n", modes[m]->name, scales[i], bad);
+            assert_true(bad <= 96 * 96 / 1000);
+            render_fb_free(&fb);
+            scene_free(sc);
+        }
+        render_fb_free(&ref);
+    }
+}
+
+/* Refraction and mirror recursion: q16 and f64 agree on a glass scene. */
+static void test_render_glass_modes_agree(void **state)
+{
+    scene *sc = render_load("bench/glass.scene");
+    render_fb a, b;
+    render_stats sa, sb;
+    render_opts o = render_default(96, 72, 1);
+    diag err;
+    long bad;
+    (void)state;
+    diag_init(&err);
+    assert_int_equal(render_scene(sc, &q16_render_ops, &o, &a, &sa, &err), 0);
+    assert_int_equal(render_scene(sc, &f64_render_ops, &o, &b, &sb, &err), 0);
+    bad = render_diff(&a.img, &b.img, 8);
+    printf("# glass: %llu refracted, %llu reflected rays; %ld pixels differ by more than 8/255\n",
+           sa.rays_refracted, sa.rays_reflected, bad);
+    assert_true(sa.rays_refracted > 1000 && sb.rays_refracted > 1000);
+    assert_true(bad <= 96 * 72 / 100);
+    assert_true(sa.fx_overflows == 0);
+    render_fb_free(&a);
+    render_fb_free(&b);
+    scene_free(sc);
+}
+
+static void test_render_mode_lookup(void **state)
+{
+    (void)state;
+    assert_ptr_equal(render_ops_find("q16"), &q16_render_ops);
+    assert_ptr_equal(render_ops_find("f64"), &f64_render_ops);
+    assert_string_equal(render_ops_find("q32")->name, "q32");
+    assert_string_equal(render_ops_find("f32")->name, "f32");
+    assert_null(render_ops_find("f16"));
+    assert_null(render_ops_find(NULL));
+}
+
+static void test_render_bad_view(void **state)
+{
+    scene *sc = render_load("scenes/fig1.scene");
+    render_fb fb;
+    render_stats st;
+    render_opts o = render_default(8, 8, 1);
+    diag err;
+    char buf[256];
+    (void)state;
+    memcpy(sc->view.look, sc->view.eye, sizeof sc->view.eye);
+    diag_init(&err);
+    assert_int_equal(render_scene(sc, &f32_render_ops, &o, &fb, &st, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "test.scene: error: view: eye and look coincide");
+    scene_free(sc);
+}
+
+/* Fails each allocation of compile and render setup in turn: each must end
+ * in a clean DIAG_IO (leaks show under make asan-test). */
+static void test_render_oom_sweep(void **state)
+{
+    scene *sc = render_load("scenes/csg.scene");
+    render_opts o = render_default(40, 30, 2);
+    long n;
+    (void)state;
+    for (n = 0; n < 1000; n++) {
+        render_fb fb;
+        render_stats st;
+        diag err;
+        int rc;
+        diag_init(&err);
+        mem_fail_after(n);
+        rc = render_scene(sc, &q16_render_ops, &o, &fb, &st, &err);
+        mem_fail_after(-1);
+        if (rc == 0) {
+            render_fb_free(&fb);
+            break;
+        }
+        assert_int_equal(rc, DIAG_IO);
+    }
+    printf("# render setup: %ld allocations failed in turn\n", n);
+    assert_true(n > 5 && n < 1000);
+    scene_free(sc);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_render_goldens),
+        cmocka_unit_test(test_render_counts_and_threads),
+        cmocka_unit_test(test_render_scale_independent),
+        cmocka_unit_test(test_render_glass_modes_agree),
+        cmocka_unit_test(test_render_mode_lookup),
+        cmocka_unit_test(test_render_bad_view),
+        cmocka_unit_test(test_render_oom_sweep),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
