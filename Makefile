@@ -30,6 +30,8 @@ TEST_BIN    := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
 
 MODULE_CFLAGS :=
 MODULE_LIBS   :=
+# Fragments may define rules; `all` stays the default goal.
+.DEFAULT_GOAL := all
 -include mk/*.mk
 
 .PHONY: all test demo bench install uninstall clean deps unit-tests asan-test fuzz-smoke

@@ -4,8 +4,6 @@ ifeq ($(origin FC),default)
 FC := gfortran
 endif
 FFLAGS ?= -O2
-# Fragments are read before the Makefile's first rule: keep `all` the default.
-.DEFAULT_GOAL := all
 ORACLE := $(BUILD)/oracle/geom_oracle
 TEST_EXTRA += $(ORACLE)
 

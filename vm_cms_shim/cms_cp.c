@@ -128,3 +128,14 @@ size_t cms_cp_encode(const cms_cp *cp, const char *in, size_t n, unsigned char *
     }
     return o;
 }
+
+int cms_cp_parse(const char *s, cms_cp_id *id)
+{
+    if (!strcmp(s, "037") || !strcmp(s, "37"))
+        *id = CMS_CP_037;
+    else if (!strcmp(s, "1047"))
+        *id = CMS_CP_1047;
+    else
+        return 0;
+    return 1;
+}

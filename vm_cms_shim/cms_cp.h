@@ -21,6 +21,9 @@ typedef struct cms_cp {
     unsigned char from_latin1[256];   /* inverse */
 } cms_cp;
 
+/* Parses "037" (or "37") and "1047"; 1 and *id on success, else 0. */
+int cms_cp_parse(const char *s, cms_cp_id *id);
+
 /* The tables for page id (037 or 1047), built through iconv on first use.
  * Returns 0 and sets *cp (static storage), or DIAG_IO if iconv lacks the page
  * or does not give a permutation of Latin-1. Not thread-safe on first call. */

@@ -57,7 +57,7 @@ int cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, i
 {
     const char *x = strchr(s, 'x');
     char buf[32];
-    long lw, lh;
+    long lw = 0, lh = 0;
     size_t n;
     if (!x)
         x = strchr(s, 'X');

@@ -1,13 +1,36 @@
-/* cli_scene — reads and parses a scene deck for the render and bench
- * subcommands. Today SCENE is a host path read whole and split into lines;
- * the CMS shim (fileids, --disk mappings, EBCDIC decks) replaces the reading
- * here, at this one place. */
+/* cli_scene — how the CLI names its files and reads scene decks. Every file
+ * argument may be a host path or a CMS fileid ('FIG1 SCENE A'), resolved
+ * through the disk map of --disk L=DIR options and MAPRT_DISK_L variables;
+ * decks are read through the CMS shim in any form it knows (ASCII lines,
+ * EBCDIC cards, V streams, punch decks). */
 #ifndef CLI_SCENE_H
 #define CLI_SCENE_H
 #include "scene/scene.h"
+#include "vm_cms_shim/cms_disk.h"
+#include "vm_cms_shim/cms_recs.h"
 
-#define CLI_SCENE_MAX_BYTES ((size_t)64 << 20)   /* larger decks are refused */
+typedef struct cli_files {
+    cms_disks disks;
+    cms_decode_opts decode;      /* --read-as, --cp */
+} cli_files;
 
-/* 0 and *out (scene_free it), or a diag status with err filled. */
-int cli_scene_load(const char *path, scene **out, diag *err);
+/* Initialises the disk map from the environment; DIAG_INPUT on a bad
+ * MAPRT_DISK_L value (err says which). Release with cli_files_free. */
+int cli_files_init(cli_files *f, diag *err);
+void cli_files_free(cli_files *f);
+
+/* If argv[*i] is one of the shared file options (--disk L=DIR, --read-as
+ * FORM, --cp 037|1047), consumes it and its value and returns 1; a bad value
+ * prints a usage error and sets *status to CLI_USAGE. Returns 0 otherwise. */
+int cli_files_option(cli_files *f, const char *cmd, int argc, char **argv, int *i, int *status);
+
+/* The help text lines for the shared options. */
+extern const char cli_files_help[];
+
+/* Reads and parses the deck `name`. 0 and *out (scene_free it), or a diag
+ * status with err naming the file or fileid and record. */
+int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err);
+
+/* Resolves an output name to a host path: *path (mem_free it). */
+int cli_output_path(const cli_files *f, const char *name, char **path, diag *err);
 #endif

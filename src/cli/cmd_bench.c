@@ -244,9 +244,14 @@ int cmd_bench(int argc, char **argv)
         scene *sc = NULL;
         render_fb ref, fb;
         render_stats st;
+        cli_files files;
         diag err;
         diag_init(&err);
-        if ((status = cli_scene_load(scenes[s], &sc, &err)) != 0
+        status = cli_files_init(&files, &err);
+        if (!status)
+            status = cli_scene_load(&files, scenes[s], &sc, &err);
+        cli_files_free(&files);
+        if (status != 0
             || (status = render_scene(sc, &f64_render_ops, &o, &ref, &st, &err)) != 0) {
             diag_print(stderr, &err);
             scene_free(sc);

@@ -90,11 +90,7 @@ static int cli_fail(const diag *d)
 
 static int parse_cp(const char *opt, const char *v, cms_cp_id *cp)
 {
-    if (!strcmp(v, "037") || !strcmp(v, "37"))
-        *cp = CMS_CP_037;
-    else if (!strcmp(v, "1047"))
-        *cp = CMS_CP_1047;
-    else
+    if (!cms_cp_parse(v, cp))
         return cli_usage_error("cms", "%s: '%s' is not a code page (037 or 1047)", opt, v);
     return 0;
 }

@@ -35,25 +35,19 @@ fx16 fx16_div(fx16 a, fx16 b)
     return fx16_sat(q);
 }
 
-/* floor(sqrt(v)) for v < 2^64, bit by bit. */
-static uint64_t isqrt64(uint64_t v)
-{
-    uint64_t res = 0, bit = (uint64_t)1 << 62;
-    while (bit > v) bit >>= 2;
-    while (bit) {
-        if (v >= res + bit) { v -= res + bit; res = (res >> 1) + bit; }
-        else res >>= 1;
-        bit >>= 2;
-    }
-    return res;
-}
-
+/* Q16.16 square root, rounded to nearest: the integer root of a * 2^16.
+ * A binary64 square root of the exact integer (below 2^47, so exactly
+ * representable) lands within one of the floor root; the integer checks
+ * that follow make s exactly floor(sqrt(v)), so the result does not depend
+ * on the floating-point unit. */
 fx16 fx16_sqrt(fx16 a)
 {
     uint64_t v, s;
     if (a < 0) { fx_overflows++; return 0; }
     v = (uint64_t)a << 16;
-    s = isqrt64(v);
+    s = (uint64_t)sqrt((double)v);
+    while (s * s > v) s--;
+    while ((s + 1) * (s + 1) <= v) s++;
     if (v - s * s > s) s++;            /* round to nearest */
     return (fx16)s;                    /* s <= 2^23.5: fits */
 }

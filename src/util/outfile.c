@@ -99,8 +99,9 @@ int infile_read_all(const char *path, size_t max, char **data, size_t *len, diag
     FILE *f = fopen(path, "rb");
     char *buf = NULL;
     size_t n = 0, cap = 0;
-    if (!f)
-        return diag_at(err, DIAG_IO, path, 0, 0, "cannot open: %s", strerror(errno));
+    if (!f) /* a name that does not exist is bad input; anything else is I/O */
+        return diag_at(err, errno == ENOENT || errno == ENOTDIR ? DIAG_INPUT : DIAG_IO, path, 0, 0,
+                       "cannot open: %s", strerror(errno));
     for (;;) {
         size_t got;
         if (n == cap) {

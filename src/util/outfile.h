@@ -26,6 +26,7 @@ int outfile_write_all(const char *path, const void *data, size_t len, diag *err)
  * errors are remembered and reported by outfile_commit. */
 void outfile_sink(void *ctx, const void *data, size_t len);
 /* Reads a whole host file, refusing files larger than max bytes.
- * On success *data (mem_free it) and *len are set; else err names the file. */
+ * On success *data (mem_free it) and *len are set; else err names the file:
+ * DIAG_INPUT when it does not exist or is too large, DIAG_IO otherwise. */
 int infile_read_all(const char *path, size_t max, char **data, size_t *len, diag *err);
 #endif

@@ -18,7 +18,7 @@ $MAPRT dl2png a b --dac 5 2>/dev/null; [ $? -eq 2 ] || fail "dl2png --dac 5"
 $MAPRT dl2png a b --backend x11 2>/dev/null; [ $? -eq 2 ] || fail "dl2png --backend x11"
 $MAPRT dl frobnicate x 2>/dev/null; [ $? -eq 2 ] || fail "dl frobnicate"
 $MAPRT dl dump 2>/dev/null; [ $? -eq 2 ] || fail "dl dump without file"
-$MAPRT dl dump "$t/missing.dl5080" 2>/dev/null; [ $? -eq 3 ] || fail "dl dump missing file"
+$MAPRT dl dump "$t/missing.dl5080" 2>/dev/null; [ $? -eq 1 ] || fail "dl dump missing file"
 
 # A header with no end element: exit 1 naming offset 16.
 printf '\304\323\365\360\370\360\000\001\000\000\000\010\000\010\000\000' > "$t/noend.dl5080"

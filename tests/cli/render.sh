@@ -25,12 +25,24 @@ $MAPRT render -o "$tmp/x.png" 2> /dev/null; [ $? -eq 2 ] || fail "no scene shoul
 $MAPRT render scenes/fig1.scene -o "$tmp/x.png" --aa 0 2> /dev/null; [ $? -eq 2 ] || fail "--aa 0 should exit 2"
 $MAPRT render scenes/fig1.scene -o "$tmp/x.png" --bogus 2> /dev/null; [ $? -eq 2 ] || fail "unknown option should exit 2"
 
-$MAPRT render "$tmp/none.scene" -o "$tmp/x.png" 2> /dev/null; [ $? -eq 3 ] || fail "missing scene should exit 3"
+$MAPRT render "$tmp/none.scene" -o "$tmp/x.png" 2> /dev/null; [ $? -eq 1 ] || fail "missing scene should exit 1"
+$MAPRT render 'NONE SCENE A' --disk "A=$tmp" -o "$tmp/x.png" 2> "$tmp/err"; [ $? -eq 1 ] || fail "missing fileid should exit 1"
+grep -qx "maprt: NONE SCENE A1: error: file not found (RC 28)" "$tmp/err" || fail "RC 28 message: $(cat "$tmp/err")"
 printf 'EYE 0 0 0\nLOOKAT 1 0 0\nSPHERE S -1\n' > "$tmp/bad.scene"
 $MAPRT render "$tmp/bad.scene" -o "$tmp/x.png" 2> "$tmp/err"; [ $? -eq 1 ] || fail "bad scene should exit 1"
 grep -q "^maprt: $tmp/bad.scene:3:[0-9]*: error: " "$tmp/err" || fail "bad scene message: $(cat "$tmp/err")"
 [ -e "$tmp/x.png" ] && fail "output written for a failed render"
 
-$MAPRT render scenes/fig1.scene -o "$tmp/x.png" --dl "$tmp/x.dl5080" 2> "$tmp/err"; [ $? -eq 3 ] || fail "--dl should exit 3"
-grep -q "display-list output not available" "$tmp/err" || fail "--dl message"
+# Through the CMS shim: fileids in and out, and the display list with a wireframe.
+$MAPRT render 'FIG1 SCENE A' --disk A=scenes --disk "B=$tmp" -o 'FIG1 PNG B' --dl 'FIG1 DL5080 B' \
+  --wireframe --size 64x48 --stats > "$tmp/stats" || fail "render by fileid failed"
+[ -s "$tmp/fig1.png" ] && [ -s "$tmp/fig1.dl5080" ] || fail "fileid outputs missing: $(ls "$tmp")"
+grep -q '^dl.colours=' "$tmp/stats" && grep -q '^dl.bytes=' "$tmp/stats" || fail "--stats lacks dl keys"
+$MAPRT dl validate "$tmp/fig1.dl5080" > /dev/null || fail "display list does not validate"
+$MAPRT dl2png "$tmp/fig1.dl5080" "$tmp/back.png" || fail "dl2png of the render failed"
+$MAPRT render scenes/fig1.scene -o "$tmp/x.png" --dither 2> "$tmp/err"; [ $? -eq 2 ] || fail "--dither without --dl should exit 2"
+$MAPRT render scenes/fig1.scene --dl "$tmp/x.dl5080" --dac 6 2> "$tmp/err"; [ $? -eq 2 ] || fail "--dac 6 should exit 2"
+$MAPRT render scenes/fig1.scene --dl "$tmp/x.dl5080" --size 5000x10 2> "$tmp/err"; [ $? -eq 2 ] || fail "oversize --dl should exit 2"
+grep -q "at most 4096x4096" "$tmp/err" || fail "oversize message"
+ls "$tmp" | grep -q tmp- && fail "temporary file left behind"
 exit 0

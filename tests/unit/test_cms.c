@@ -591,9 +591,9 @@ static void test_cms_deck_recsrc_names_fileid(void **state)
     assert_int_equal(cms_deck_open(&dk, &src, &d, "FIG2 SCENE A", NULL, &e), DIAG_INPUT);
     assert_int_equal(e.rc, 28);
     expect_diag(&e, "FIG2 SCENE A1: error: file not found (RC 28)");
-    /* a host path goes straight to the host */
+    /* a host path goes straight to the host; missing is bad input (exit 1) */
     diag_init(&e);
-    assert_int_equal(cms_deck_open(&dk, &src, &d, "/nonexistent/fig1.scene", NULL, &e), DIAG_IO);
+    assert_int_equal(cms_deck_open(&dk, &src, &d, "/nonexistent/fig1.scene", NULL, &e), DIAG_INPUT);
     expect_diag(&e, "/nonexistent/fig1.scene: error: cannot open: No such file or directory");
     cms_disks_free(&d);
     tb_free(&b);

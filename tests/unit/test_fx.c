@@ -68,6 +68,26 @@ static void test_fx_div_sqrt_match_long_double(void **state)
     }
 }
 
+/* Every Q16.16 input below 2^20, and the neighbours of every perfect square
+ * and of every half-way point between roots, against long double. */
+static void test_fx_sqrt_exhaustive_low_and_near_squares(void **state)
+{
+    int64_t a, m;
+    (void)state;
+    for (a = 0; a < (1 << 20); a++)
+        assert_true((long double)fx16_sqrt((fx16)a) == ref_round(sqrtl((long double)a * 65536.0L)));
+    for (m = 1; m < 46341; m++) {
+        int64_t sq = m * m, d;
+        for (d = -2; d <= 2; d++) {
+            int64_t x = sq + d, h = sq + m + d;     /* m^2 + m: near (m + 1/2)^2 */
+            if (x >= 0 && x <= INT32_MAX)
+                assert_true((long double)fx16_sqrt((fx16)x) == ref_round(sqrtl((long double)x * 65536.0L)));
+            if (h >= 0 && h <= INT32_MAX)
+                assert_true((long double)fx16_sqrt((fx16)h) == ref_round(sqrtl((long double)h * 65536.0L)));
+        }
+    }
+}
+
 static void test_fx32_matches_long_double(void **state)
 {
     uint64_t s = test_seed("test_fx32_matches_long_double");
@@ -94,6 +114,7 @@ int main(void)
         cmocka_unit_test(test_fx_mul_matches_long_double),
         cmocka_unit_test(test_fx_edges),
         cmocka_unit_test(test_fx_div_sqrt_match_long_double),
+        cmocka_unit_test(test_fx_sqrt_exhaustive_low_and_near_squares),
         cmocka_unit_test(test_fx32_matches_long_double),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
