@@ -296,7 +296,7 @@ void pds_cpg_placements(const pds_def *d, double (*m)[6], int *depth)
             depth[kid] = depth[i] + 1;
         }
     }
-    }
+}
 
 /* Bounding box (u0,v0,u1,v1) of leaf `n` placed by `m`. */
 static void leaf_box(const pds_def *d, const pds_cpg_node *n, const double m[6], double box[4])
@@ -439,8 +439,13 @@ static int check_cpg(const pds_def *d, const char *file, diag *err)
             double a = m[i][0] * n->p[2], b = m[i][1] * n->p[3], cc = m[i][3] * n->p[2], dd = m[i][4] * n->p[3];
             double s2 = a * a + b * b + cc * cc + dd * dd, det = fabs(a * dd - b * cc);
             double smin = sqrt(fmax(0, (s2 - sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2));
+            double smax = sqrt((s2 + sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2);
             if (smin < PDS_MIN_FEATURE) {
                 rc = FAIL(n->loc, "ellipse is thinner than 1/8192 after its transforms");
+                goto done;
+            }
+            if (smax > 4096 * smin) {
+                rc = FAIL(n->loc, "ellipse is more than 4096 times longer than wide after its transforms");
                 goto done;
             }
         }

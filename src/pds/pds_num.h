@@ -1,0 +1,119 @@
+/* pds_num — exact predicates and grid arithmetic for the PDS lookups, for
+ * the current numeric mode (modal: include after num/num.h).
+ *
+ * Region boundaries are decided with these helpers only, so each mode
+ * classifies points exactly against the coordinates it compiled:
+ *   pds_num_cell      floor(x * n) clamped to 0..n-1 (exact in every mode)
+ *   pds_num_floordiv  floor(x / w) and the remainder in [0, w)
+ *   pds_num_cross     sign of a*b - c*d (exact in q16, q32, f32; in f64
+ *                     computed with fused multiply-adds, exact sign except
+ *                     when the two products agree to ~1e-32 relative) */
+#ifndef PDS_NUM_H
+#define PDS_NUM_H
+#include <math.h>
+#include <stdint.h>
+#include "num/num.h"
+
+static inline long pds_num_cell(num x, long n)
+{
+    long c;
+    if (!(x > NUM_ZERO))
+        return 0;                       /* also NaN in the float modes */
+    if (x >= NUM_ONE)
+        return n - 1;
+#if defined(NUM_MODE_q16)
+    c = (long)(((int64_t)x * n) >> 16);
+#elif defined(NUM_MODE_q32)
+    c = (long)(((uint64_t)x * (uint64_t)n) >> 32);   /* x < 2^32, n <= 2^15 */
+#else
+    c = (long)((double)x * (double)n);               /* exact for f32; f64 rounds once */
+#endif
+    return c >= n ? n - 1 : c;
+}
+
+static inline long pds_num_floordiv(num x, num w, num *rem)
+{
+#if NUM_IS_FIXED
+    /* Raw integer division: exact quotient and remainder. */
+    num q = x / w, r = x % w;
+    if (r < 0) {
+        r += w;
+        q -= 1;
+    }
+    *rem = r;
+    return (long)q;
+#else
+    num q = (num)floor((double)x / (double)w), r = x - q * w;
+    if (r < 0) { r += w; q -= 1; }
+    if (r >= w) { r -= w; q += 1; }
+    *rem = r;
+    return (long)q;
+#endif
+}
+
+#if defined(NUM_MODE_q32)
+/* Signed 64x64 -> 128-bit product as an order-preserving key pair
+ * (high word with its sign bit flipped, low word). */
+static inline void pds_num_mul128(int64_t a, int64_t b, uint64_t *hi, uint64_t *lo)
+{
+    uint64_t ua = a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a;
+    uint64_t ub = b < 0 ? (uint64_t)0 - (uint64_t)b : (uint64_t)b;
+    uint64_t a0 = ua & 0xffffffffu, a1 = ua >> 32, b0 = ub & 0xffffffffu, b1 = ub >> 32;
+    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
+    uint64_t mid = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
+    uint64_t l = (p00 & 0xffffffffu) | (mid << 32);
+    uint64_t h = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    if ((a < 0) != (b < 0)) {          /* two's complement negate */
+        l = ~l + 1;
+        h = ~h + (l == 0);
+    }
+    *hi = h ^ ((uint64_t)1 << 63);
+    *lo = l;
+}
+#endif
+
+static inline int pds_num_cross(num a, num b, num c, num d)
+{
+#if defined(NUM_MODE_q16)
+    int64_t l = (int64_t)a * b, r = (int64_t)c * d;   /* operands < 2^24 by the limits */
+    return (l > r) - (l < r);
+#elif defined(NUM_MODE_q32)
+    uint64_t lh, ll, rh, rl;
+    pds_num_mul128(a, b, &lh, &ll);
+    pds_num_mul128(c, d, &rh, &rl);
+    if (lh != rh)
+        return lh > rh ? 1 : -1;
+    return (ll > rl) - (ll < rl);
+#elif defined(NUM_MODE_f32)
+    double x = (double)a * b - (double)c * d;         /* products exact in double */
+    return (x > 0) - (x < 0);
+#else
+    double w = c * d, e = fma(-c, d, w);               /* e = w - c*d exactly */
+    double x = fma(a, b, -w) + e;
+    return (x > 0) - (x < 0);
+#endif
+}
+
+/* Closed point-in-box test; box = u0 v0 u1 v1. */
+static inline int pds_num_in_box(const num *box, num u, num v)
+{
+    return u >= box[0] && u <= box[2] && v >= box[1] && v <= box[3];
+}
+
+/* Edge a->b against the point p: 2 if p lies on the closed edge; 1 if the
+ * half-line from p towards +u crosses the edge (an endpoint counts as above
+ * the line when its v > p's v, so a vertex on the line is counted once);
+ * else 0. */
+static inline int pds_num_edge(num ax, num ay, num bx, num by, num px, num py)
+{
+    int s;
+    if ((py < ay && py < by) || (py > ay && py > by) || (px > ax && px > bx))
+        return 0;
+    s = pds_num_cross(num_sub(bx, ax), num_sub(py, ay), num_sub(by, ay), num_sub(px, ax));
+    if (s == 0 && (px >= ax || px >= bx))
+        return 2;
+    if ((ay > py) != (by > py))
+        return by > ay ? s > 0 : s < 0;
+    return 0;
+}
+#endif
