@@ -17,7 +17,7 @@ typedef struct mosaic {
     uint32_t *order;         /* their definition numbers, for ties */
     uint32_t *start;         /* bucket b holds seeds start[b] .. start[b+1]-1 */
     num *ring;               /* ring[r] = r * bucket size */
-    num *ring2;              /* ring[r]^2 */
+    pds_wide *ring2;         /* ring[r]^2 */
     num mortar;
     int32_t mortar_attr;
     size_t n;
@@ -73,12 +73,13 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
         m->order[at] = (uint32_t)i;
     }
     for (r = 0; r <= g + 1; r++) {
-        /* Lower the bounds by a few units of rounding: a lookup's squared
-         * distances are rounded, and a bound must never exceed the true
-         * distance of the nearest unvisited seed. */
-        double rd = (double)r / (double)g;
-        m->ring[r] = num_sub(num_from_d(rd), 4 * NUM_ULP);
-        m->ring2[r] = num_sub(num_from_d(rd * rd), 4 * NUM_ULP);
+        /* Lower bounds on the distance to seeds r + 1 or more buckets away.
+         * Bucket edges fall between representable numbers, so take off two
+         * units of the mode's resolution before squaring. */
+        double rd = (double)r / (double)g - 2 * num_to_d(NUM_ULP);
+        rd = rd > 0 ? rd : 0;
+        m->ring[r] = num_from_d(rd);
+        m->ring2[r] = pds_wide_from_d(rd * rd);
     }
     m->mortar = num_from_d(d->mortar);
     m->mortar_attr = d->mortar_attr;
@@ -112,13 +113,13 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const mosaic *m = impl;
     long cu = pds_num_cell(u, m->g), cv = pds_num_cell(v, m->g), r, reach;
-    num best = NUM_MAX, d1;
+    pds_wide best = PDS_WIDE_MAX;
+    num d1;
     uint32_t bi = 0;
     int found = 0;
     for (r = 0; r <= m->g; r++) {
         RING_FOR(m, cu, cv, r, {
-            num dx = num_sub(m->su[s_], u), dy = num_sub(m->sv[s_], v);
-            num dd = num_add(num_mul(dx, dx), num_mul(dy, dy));
+            pds_wide dd = pds_wide_sq2(num_sub(m->su[s_], u), num_sub(m->sv[s_], v));
             ++*steps;
             if (!found || dd < best || (dd == best && m->order[s_] < m->order[bi])) {
                 best = dd;
@@ -132,16 +133,16 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
     }
     if (m->mortar == NUM_ZERO)
         return m->attr[bi];
-    d1 = num_sqrt(best);
-    for (reach = 0; reach <= m->g && m->ring[reach > 0 ? reach - 1 : 0] <= num_add(d1, m->mortar); reach++) {
+    /* Any seed within d1 + mortar may own a bisector inside the band; the
+     * few units of slack cover the rounded square root. */
+    d1 = num_add(num_add(pds_wide_sqrt(best), m->mortar), 4 * NUM_ULP);
+    for (reach = 0; reach <= m->g && m->ring[reach > 0 ? reach - 1 : 0] <= d1; reach++) {
         RING_FOR(m, cu, cv, reach, {
             if (s_ != bi) {
-                num dx = num_sub(m->su[s_], u), dy = num_sub(m->sv[s_], v);
-                num ex = num_sub(m->su[s_], m->su[bi]), ey = num_sub(m->sv[s_], m->sv[bi]);
-                num dd = num_add(num_mul(dx, dx), num_mul(dy, dy));
-                num sep = num_sqrt(num_add(num_mul(ex, ex), num_mul(ey, ey)));
+                pds_wide dd = pds_wide_sq2(num_sub(m->su[s_], u), num_sub(m->sv[s_], v));
+                num sep = pds_wide_sqrt(pds_wide_sq2(num_sub(m->su[s_], m->su[bi]), num_sub(m->sv[s_], m->sv[bi])));
                 ++*steps;
-                if (num_sub(dd, best) <= num_mul(m->mortar, sep))
+                if (dd - best <= pds_wide_mul(m->mortar, sep))
                     return m->mortar_attr;
             }
         });
@@ -153,7 +154,7 @@ static size_t bytes(const void *impl)
 {
     const mosaic *m = impl;
     return sizeof *m + m->n * (2 * sizeof(num) + sizeof(int32_t) + sizeof(uint32_t)) +
-           (size_t)(m->g * m->g + 1) * sizeof(uint32_t) + (size_t)(m->g + 2) * 2 * sizeof(num);
+           (size_t)(m->g * m->g + 1) * sizeof(uint32_t) + (size_t)(m->g + 2) * (sizeof(num) + sizeof(pds_wide));
 }
 
 const NS(pds_kind_ops) NS(pds_mosaic_ops) = { "mosaic", compile, locate, bytes, release };

@@ -7,7 +7,10 @@
  *   pds_num_floordiv  floor(x / w) and the remainder in [0, w)
  *   pds_num_cross     sign of a*b - c*d (exact in q16, q32, f32; in f64
  *                     computed with fused multiply-adds, exact sign except
- *                     when the two products agree to ~1e-32 relative) */
+ *                     when the two products agree to ~1e-32 relative)
+ *   pds_wide          squared distances: in q16 the exact Q32.32 product
+ *                     (a Q16.16 square of a distance of 0.01 would keep only
+ *                     about 6 bits); in the other modes the mode's number */
 #ifndef PDS_NUM_H
 #define PDS_NUM_H
 #include <math.h>
@@ -93,6 +96,39 @@ static inline int pds_num_cross(num a, num b, num c, num d)
     return (x > 0) - (x < 0);
 #endif
 }
+
+#if defined(NUM_MODE_q16)
+typedef int64_t pds_wide;
+static inline pds_wide pds_wide_sq2(num dx, num dy) { return (int64_t)dx * dx + (int64_t)dy * dy; }
+static inline pds_wide pds_wide_mul(num a, num b) { return (int64_t)a * b; }
+static inline pds_wide pds_wide_from_d(double x) { return (int64_t)floor(x * 4294967296.0 + 0.5); }
+/* Square root of a non-negative wide value, as num: the integer square
+ * root of a Q32.32 raw value is the Q16.16 root (rounded down), so small
+ * squares keep their precision. Bitwise, no floating point. */
+static inline num pds_wide_sqrt(pds_wide x)
+{
+    uint64_t v = x > 0 ? (uint64_t)x : 0, r = 0, bit = (uint64_t)1 << 62;
+    while (bit > v)
+        bit >>= 2;
+    while (bit) {
+        if (v >= r + bit) {
+            v -= r + bit;
+            r = (r >> 1) + bit;
+        } else
+            r >>= 1;
+        bit >>= 2;
+    }
+    return fx16_sat((int64_t)r);
+}
+#define PDS_WIDE_MAX INT64_MAX
+#else
+typedef num pds_wide;
+static inline pds_wide pds_wide_sq2(num dx, num dy) { return num_add(num_mul(dx, dx), num_mul(dy, dy)); }
+static inline pds_wide pds_wide_mul(num a, num b) { return num_mul(a, b); }
+static inline pds_wide pds_wide_from_d(double x) { return num_from_d(x); }
+static inline num pds_wide_sqrt(pds_wide x) { return num_sqrt(x); }
+#define PDS_WIDE_MAX NUM_MAX
+#endif
 
 /* Closed point-in-box test; box = u0 v0 u1 v1. */
 static inline int pds_num_in_box(const num *box, num u, num v)

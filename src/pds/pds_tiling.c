@@ -22,7 +22,7 @@ typedef struct tiling {
     num shift;           /* BRICK odd-row shift */
     num half_w;          /* w / 2 */
     num hm;              /* mortar / 2, 0 = no mortar */
-    num mw;              /* HEX: mortar * w */
+    pds_wide mw;         /* HEX: mortar * w */
     num k_inv3;          /* 1/sqrt(3) */
     num k_2inv3;         /* 2/sqrt(3) */
     num k_half3;         /* sqrt(3)/2 */
@@ -63,7 +63,7 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
     t->half_w = num_from_d(d->size[0] / 2);
     t->shift = num_from_d(d->offset * d->size[0]);
     t->hm = num_from_d(d->mortar / 2);
-    t->mw = num_from_d(d->mortar * d->size[0]);
+    t->mw = pds_wide_from_d(d->mortar * d->size[0]);
     t->k_inv3 = num_from_d(1 / r3);
     t->k_2inv3 = num_from_d(2 / r3);
     t->k_half3 = num_from_d(r3 / 2);
@@ -132,15 +132,15 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
         } else {
             /* Corners of the triangle relative to lattice point (i, j):
              * (0,0) (w,0) (w/2,h) for k = 0; (w,0) (w/2,h) (3w/2,h) for k = 1. */
-            num x = num_add(su, num_mul(lv, t->k_inv3)), cx[3], cy[3], dd[3];
+            num x = num_add(su, num_mul(lv, t->k_inv3)), cx[3], cy[3];
+            pds_wide dd[3];
             long ci[3], cj[3];
             int a, best = 0, second;
             cx[0] = k ? t->w : NUM_ZERO;        cy[0] = NUM_ZERO;  ci[0] = k ? i + 1 : i; cj[0] = j;
             cx[1] = k ? t->half_w : t->w;       cy[1] = k ? t->h : NUM_ZERO; ci[1] = k ? i : i + 1; cj[1] = k ? j + 1 : j;
             cx[2] = k ? num_add(t->w, t->half_w) : t->half_w; cy[2] = t->h; ci[2] = k ? i + 1 : i; cj[2] = j + 1;
             for (a = 0; a < 3; a++) {
-                num dx = num_sub(x, cx[a]), dy = num_sub(lv, cy[a]);
-                dd[a] = num_add(num_mul(dx, dx), num_mul(dy, dy));
+                dd[a] = pds_wide_sq2(num_sub(x, cx[a]), num_sub(lv, cy[a]));
                 if (dd[a] < dd[best])
                     best = a;
             }
@@ -148,7 +148,7 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
             for (a = 0; a < 3; a++)
                 if (a != best && dd[a] < dd[second])
                     second = a;
-            if (t->hm > 0 && num_sub(dd[second], dd[best]) <= t->mw)
+            if (t->hm > 0 && dd[second] - dd[best] <= t->mw)
                 return t->mortar_attr;
             /* Lattice point (ci, cj) in axial form: row cj, column ci. */
             return cell_attr(t, ci[best], cj[best], 0);

@@ -266,8 +266,16 @@ static int check_ring(const double *pts, size_t n, const char *what, int bspline
     r = pds_curve_simple(pts, n, &ea, &eb);
     if (r < 0)
         return diag_at(err, DIAG_IO, file, loc.line, loc.col, "out of memory checking a %s", what);
-    if (r == 0 && bspline)
-        return FAIL(loc, "%s intersects itself near (%.3f, %.3f)", what, pts[2 * eb], pts[2 * eb + 1]);
+    if (r == 0 && bspline) {
+        /* Report where: the crossing of the two flattened edges (or, for
+         * overlapping edges, the start of the second). */
+        const double *a = pts + 2 * ea, *b = pts + 2 * ((ea + 1) % n);
+        const double *c = pts + 2 * eb, *e = pts + 2 * ((eb + 1) % n);
+        double den = (b[0] - a[0]) * (e[1] - c[1]) - (b[1] - a[1]) * (e[0] - c[0]);
+        double t = den != 0 ? ((c[0] - a[0]) * (e[1] - c[1]) - (c[1] - a[1]) * (e[0] - c[0])) / den : 0;
+        double x = den != 0 ? a[0] + t * (b[0] - a[0]) : c[0], y = den != 0 ? a[1] + t * (b[1] - a[1]) : c[1];
+        return FAIL(loc, "%s intersects itself near (%.3f, %.3f)", what, x, y);
+    }
     if (r == 0)
         return FAIL(loc, "%s edges %zu and %zu cross or touch (it must be simple)", what, ea + 1, eb + 1);
     return 0;
