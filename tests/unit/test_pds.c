@@ -393,10 +393,10 @@ static double mean_steps(size_t n_side, const pds_mode_ops *m, uint64_t *s)
         double u = test_uniform(s, 0, 1), v = test_uniform(s, 0, 1);
         int32_t got = m->locate_steps(p, u, v, &steps);
         double fu = u / cell - floor(u / cell), fv = v / cell - floor(v / cell);
-        int inside = fu > 0.126 && fu < 0.874 && fv > 0.126 && fv < 0.874;
+        int inside = fu > 0.135 && fu < 0.865 && fv > 0.135 && fv < 0.865;
         if (inside)
             assert_int_equal(got, (int32_t)(((size_t)(u / cell) + (size_t)(v / cell)) % 3));
-        else if (fu < 0.124 || fu > 0.876 || fv < 0.124 || fv > 0.876)
+        else if (fu < 0.115 || fu > 0.885 || fv < 0.115 || fv > 0.885)
             assert_int_equal(got, PDS_NONE);
     }
     total = (double)steps / 2000;
