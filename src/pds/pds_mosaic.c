@@ -113,7 +113,7 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const mosaic *m = impl;
     long cu = pds_num_cell(u, m->g), cv = pds_num_cell(v, m->g), r, reach;
-    pds_wide best = PDS_WIDE_MAX;
+    pds_wide best = PDS_WIDE_MAX, reach2;
     num d1;
     uint32_t bi = 0;
     int found = 0;
@@ -134,14 +134,16 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
     if (m->mortar == NUM_ZERO)
         return m->attr[bi];
     /* Any seed within d1 + mortar may own a bisector inside the band; the
-     * few units of slack cover the rounded square root. */
+     * few units of slack cover the rounded square root. Farther seeds are
+     * skipped by their squared distance before any square root is taken. */
     d1 = num_add(num_add(pds_wide_sqrt(best), m->mortar), 4 * NUM_ULP);
+    reach2 = pds_wide_sq2(d1, NUM_ZERO);
     for (reach = 0; reach <= m->g && m->ring[reach > 0 ? reach - 1 : 0] <= d1; reach++) {
         RING_FOR(m, cu, cv, reach, {
-            if (s_ != bi) {
-                pds_wide dd = pds_wide_sq2(num_sub(m->su[s_], u), num_sub(m->sv[s_], v));
+            pds_wide dd = pds_wide_sq2(num_sub(m->su[s_], u), num_sub(m->sv[s_], v));
+            ++*steps;
+            if (s_ != bi && dd <= reach2) {
                 num sep = pds_wide_sqrt(pds_wide_sq2(num_sub(m->su[s_], m->su[bi]), num_sub(m->sv[s_], m->sv[bi])));
-                ++*steps;
                 if (dd - best <= pds_wide_mul(m->mortar, sep))
                     return m->mortar_attr;
             }
