@@ -84,7 +84,9 @@ static int32_t cell_attr(const tiling *t, long i, long j, long k)
         x ^= x >> 16; x *= 0x7FEB352Du; x ^= x >> 15; x *= 0x846CA68Bu; x ^= x >> 16;
         return t->attrs[x % (uint32_t)t->n];
     }
-    return t->attrs[(mod(i, t->n) * t->step[0] + mod(j, t->n) * t->step[1] + k * t->step[2]) % t->n];
+    /* Each term is below n^2 <= 2^32: the sum fits in 64 bits. */
+    return t->attrs[((int64_t)mod(i, t->n) * t->step[0] + (int64_t)mod(j, t->n) * t->step[1] +
+                     (int64_t)k * t->step[2]) % t->n];
 }
 
 static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
