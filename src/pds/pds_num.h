@@ -5,9 +5,8 @@
  * classifies points exactly against the coordinates it compiled:
  *   pds_num_cell      floor(x * n) clamped to 0..n-1 (exact in every mode)
  *   pds_num_floordiv  floor(x / w) and the remainder in [0, w)
- *   pds_num_cross     sign of a*b - c*d (exact in q16, q32, f32; in f64
- *                     computed with fused multiply-adds, exact sign except
- *                     when the two products agree to ~1e-32 relative)
+ *   pds_num_orient    side of a line: exact in q16, q32 and f32; in f64
+ *                     exact for the double differences of the coordinates
  *   pds_wide          squared distances: in q16 the exact Q32.32 product
  *                     (a Q16.16 square of a distance of 0.01 would keep only
  *                     about 6 bits); in the other modes the mode's number */
@@ -75,24 +74,30 @@ static inline void pds_num_mul128(int64_t a, int64_t b, uint64_t *hi, uint64_t *
 }
 #endif
 
-static inline int pds_num_cross(num a, num b, num c, num d)
+/* Sign of (bx-ax)*(py-ay) - (by-ay)*(px-ax): which side of the line a->b
+ * the point p lies on (+1 left, -1 right, 0 on it). */
+static inline int pds_num_orient(num ax, num ay, num bx, num by, num px, num py)
 {
 #if defined(NUM_MODE_q16)
-    int64_t l = (int64_t)a * b, r = (int64_t)c * d;   /* operands < 2^24 by the limits */
+    /* Differences below 2^24 by the coordinate limits: products exact. */
+    int64_t l = ((int64_t)bx - ax) * ((int64_t)py - ay), r = ((int64_t)by - ay) * ((int64_t)px - ax);
     return (l > r) - (l < r);
 #elif defined(NUM_MODE_q32)
+    /* Differences below 2^40: 128-bit products. */
     uint64_t lh, ll, rh, rl;
-    pds_num_mul128(a, b, &lh, &ll);
-    pds_num_mul128(c, d, &rh, &rl);
+    pds_num_mul128(bx - ax, py - ay, &lh, &ll);
+    pds_num_mul128(by - ay, px - ax, &rh, &rl);
     if (lh != rh)
         return lh > rh ? 1 : -1;
     return (ll > rl) - (ll < rl);
-#elif defined(NUM_MODE_f32)
-    double x = (double)a * b - (double)c * d;         /* products exact in double */
-    return (x > 0) - (x < 0);
 #else
-    double w = c * d, e = fma(-c, d, w);               /* e = w - c*d exactly */
-    double x = fma(a, b, -w) + e;
+    /* Kahan's a*b - c*d with fused multiply-adds has relative error below
+     * 2 units of rounding, so its sign is the sign of the exact value of the
+     * operands. f32: the differences are formed exactly in double; f64:
+     * they are the rounded double differences. */
+    double a = (double)bx - (double)ax, b = (double)py - (double)ay;
+    double c = (double)by - (double)ay, d = (double)px - (double)ax;
+    double w = c * d, e = fma(-c, d, w), x = fma(a, b, -w) + e;
     return (x > 0) - (x < 0);
 #endif
 }
@@ -145,7 +150,7 @@ static inline int pds_num_edge(num ax, num ay, num bx, num by, num px, num py)
     int s;
     if ((py < ay && py < by) || (py > ay && py > by) || (px > ax && px > bx))
         return 0;
-    s = pds_num_cross(num_sub(bx, ax), num_sub(py, ay), num_sub(by, ay), num_sub(px, ax));
+    s = pds_num_orient(ax, ay, bx, by, px, py);
     if (s == 0 && (px >= ax || px >= bx))
         return 2;
     if ((ay > py) != (by > py))
