@@ -3,7 +3,8 @@
  * For each PDS kind and size it compiles the structure in each requested
  * numeric mode, converts a fixed set of random (u,v) points once, then times
  * repeated lookups (pds_mode_ops.locate_many) until at least --seconds have
- * passed. Output: one line per case,
+ * passed, three times, and keeps the fastest of the three (the machine may be
+ * shared). Output: one line per case,
  *     kind  size  mode  lookups_per_second  ns_per_lookup  mean_steps  bytes
  * mean_steps is the mean number of nodes / cells / edges a lookup visited.
  * Usage: pds_bench [--modes q16,f64] [--seconds S] [--quick] */
@@ -51,8 +52,8 @@ static void run(const char *kind, const char *size, const pds_def *def)
         const pds_mode_ops *m = all_modes[mi];
         void *p;
         diag err;
-        unsigned reps = 1;
-        double t0, t;
+        unsigned reps = 1, round;
+        double t0, t, best;
         unsigned long steps = 0;
         if (!use_mode[mi])
             continue;
@@ -71,6 +72,14 @@ static void run(const char *kind, const char *size, const pds_def *def)
                 break;
             reps = t <= 0 ? reps * 16 : (unsigned)(reps * fmin(16, 1.2 * min_seconds / t) + 1);
         }
+        best = t;
+        for (round = 1; round < 3; round++) {
+            t0 = now();
+            m->locate_many(p, uv, NPTS, reps, out);
+            t = now() - t0;
+            best = t < best ? t : best;
+        }
+        t = best;
         for (i = 0; i < 4096; i++)
             m->locate_steps(p, uv[2 * i], uv[2 * i + 1], &steps);
         printf("%-10s %-14s %-4s %12.0f %8.1f %8.1f %10zu\n", kind, size, m->mode,

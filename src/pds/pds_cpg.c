@@ -284,9 +284,14 @@ static int eval(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned 
             return 0;
         break;
     case K_UNION:
-        for (k = i + 1; k < n->end; k = c->nodes[k].end)
-            if (eval(c, k, u, v, attr, steps))
+        /* The operand's box is tested here, before the call: most operands
+         * of a large union are rejected by it. */
+        for (k = i + 1; k < n->end; k = c->nodes[k].end) {
+            if (!pds_num_in_box(c->nodes[k].box, u, v))
+                ++*steps;
+            else if (eval(c, k, u, v, attr, steps))
                 break;
+        }
         if (k >= n->end)
             return 0;
         if (n->attr != PDS_INHERIT)

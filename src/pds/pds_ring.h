@@ -16,7 +16,7 @@
 #include <stdint.h>
 #include "num/num.h"
 
-#define PDS_RING_LEAF 4    /* edges per leaf, tested directly */
+#define PDS_RING_LEAF 8    /* edges per leaf, tested directly */
 
 typedef struct NS(pds_ring_node) {
     num box[4];                 /* u0 v0 u1 v1 of the chain */
