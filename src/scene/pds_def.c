@@ -592,7 +592,7 @@ static int check_quadtree(const pds_def *d, const char *file, diag *err)
             depth--;
     }
     if (pending)
-        return FAIL(d->loc, "quadtree code ends %zu nodes early", pending);
+        return FAIL(d->loc, "quadtree code ends before the tree is complete (%zu more values needed)", pending);
     return 0;
 }
 

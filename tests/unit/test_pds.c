@@ -973,7 +973,7 @@ static void test_pds_errors_exact_text(void **state)
 
     pds_def_init(&d, PDS_QUADTREE, at(13, 1));
     pds_quadtree_code(&d, code_short, 3);
-    expect_error(&d, "bad.deck:13:1: error: quadtree code ends 2 nodes early");
+    expect_error(&d, "bad.deck:13:1: error: quadtree code ends before the tree is complete (2 more values needed)");
     pds_quadtree_code(&d, code_long, 3);
     expect_error(&d, "bad.deck:13:1: error: quadtree code has 2 values after the tree is complete");
     pds_def_free(&d);
