@@ -539,6 +539,94 @@ static void test_pds_quadtree_explicit_order(void **state)
     pds_def_free(&d);
 }
 
+
+/* Random explicit quadtrees against a recursive double-precision descent. */
+typedef struct qt_ref { const int32_t *code; size_t n; } qt_ref;
+
+static int32_t ref_qt_node(const int32_t *code, size_t *pos, double x0, double y0, double size, double u,
+                           double v, int32_t *hit)
+{
+    int32_t c = code[(*pos)++];
+    int k;
+    if (c != PDS_QT_SPLIT) {
+        if (u >= x0 && u < x0 + size && v >= y0 && v < y0 + size)
+            *hit = c;
+        return 0;
+    }
+    for (k = 0; k < 4; k++)
+        ref_qt_node(code, pos, x0 + (k & 1) * size / 2, y0 + (k >> 1) * size / 2, size / 2, u, v, hit);
+    return 0;
+}
+
+static int32_t ref_qt(const void *ctx, double u, double v)
+{
+    const qt_ref *q = ctx;
+    size_t pos = 0;
+    int32_t hit = -99;
+    /* Cells are half-open; u = 1 or v = 1 belong to the last cell. */
+    if (u >= 1) u = 1 - 1e-12;
+    if (v >= 1) v = 1 - 1e-12;
+    ref_qt_node(q->code, &pos, 0, 0, 1, u, v, &hit);
+    return hit;
+}
+
+static void random_code(uint64_t *s, int32_t *code, size_t *n, int depth)
+{
+    int k;
+    if (depth < 6 && test_rand(s) % 3 != 0) {
+        code[(*n)++] = PDS_QT_SPLIT;
+        for (k = 0; k < 4; k++)
+            random_code(s, code, n, depth + 1);
+    } else
+        code[(*n)++] = (int32_t)(test_rand(s) % 6) - 1;
+}
+
+static void test_pds_quadtree_explicit_matches_reference(void **state)
+{
+    uint64_t s = test_seed("test_pds_quadtree_explicit_matches_reference");
+    static int32_t code[6000];
+    int t;
+    (void)state;
+    for (t = 0; t < 10; t++) {
+        pds_def d;
+        qt_ref r;
+        size_t n = 0;
+        random_code(&s, code, &n, 0);
+        pds_def_init(&d, PDS_QUADTREE, L0);
+        assert_int_equal(pds_quadtree_code(&d, code, n), 0);
+        r.code = code;
+        r.n = n;
+        compare_all(&d, ref_qt, &r, &s, 400, "explicit quadtree");
+        pds_def_free(&d);
+    }
+}
+
+/* Exact tile edges: cells are half-open (an edge belongs to the cell above
+ * or to the right), the mortar band is closed. Dyadic values are exact in
+ * every mode. */
+static void test_pds_tiling_boundaries(void **state)
+{
+    int32_t attrs[2] = { 1, 2 };
+    pds_def d;
+    (void)state;
+    pds_def_init(&d, PDS_TILING, L0);
+    d.tiling.size[0] = d.tiling.size[1] = 0.125;
+    pds_tiling_attrs(&d, attrs, 2);     /* checkerboard: (i + j) mod 2 */
+    expect_all(&d, 0.25, 0.0625, 1, "u on a tile edge belongs to the right tile (i = 2)");
+    expect_all(&d, 0.25 - 1.0 / 65536, 0.0625, 2, "just left of the edge (i = 1)");
+    expect_all(&d, 0.0625, 0.125, 2, "v on a tile edge belongs to the tile above (j = 1)");
+    d.tiling.mortar = 1.0 / 32;
+    d.tiling.mortar_attr = 7;
+    expect_all(&d, 0.25 + 1.0 / 64, 0.0625, 7, "the inner edge of the mortar band is mortar");
+    expect_all(&d, 0.25 + 1.0 / 64 + 1.0 / 65536, 0.0625, 1, "just inside the tile");
+    expect_all(&d, 0.25 - 1.0 / 64, 0.0625, 7, "mortar on the other side of the edge");
+    d.tiling.shape = PDS_TILE_BRICK;
+    d.tiling.mortar = 0;
+    expect_all(&d, 0.0625, 0.1875, 2, "odd rows shift by half a brick: brick (0, 1) starts at u = 0.0625");
+    expect_all(&d, 0.0625 - 1.0 / 65536, 0.1875, 1, "just before it lies brick (-1, 1)");
+    pds_def_free(&d);
+}
+
 /* ---- tilings ------------------------------------------------------------ */
 
 static long lmod(long a, long n) { long r = a % n; return r < 0 ? r + n : r; }
@@ -1115,6 +1203,8 @@ int main(void)
         cmocka_unit_test(test_pds_pixels_orientation_and_edges),
         cmocka_unit_test(test_pds_quadtree_matches_pixel_array),
         cmocka_unit_test(test_pds_quadtree_explicit_order),
+        cmocka_unit_test(test_pds_quadtree_explicit_matches_reference),
+        cmocka_unit_test(test_pds_tiling_boundaries),
         cmocka_unit_test(test_pds_tiling_matches_reference),
         cmocka_unit_test(test_pds_tiling_hash_rule_agrees_across_modes),
         cmocka_unit_test(test_pds_mosaic_matches_brute_force),
