@@ -228,7 +228,15 @@ int main(int argc, char **argv)
             min_seconds = atof(argv[++i]);
         else if (!strcmp(argv[i], "--quick"))
             quick = 1;
-        else {
+        else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            printf("usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick]\n"
+                   "Lookup rates of every PDS kind on one core.\n"
+                   "  --modes LIST  numeric modes to measure (default q16,f64)\n"
+                   "  --seconds S   minimum timed run per case and round (default 0.3)\n"
+                   "  --quick       skip the largest size of each kind\n"
+                   "Each case runs three rounds and reports the fastest.\n");
+            return 0;
+        } else {
             fprintf(stderr, "usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick]\n");
             return 2;
         }

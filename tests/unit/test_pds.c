@@ -1192,6 +1192,38 @@ static void test_pds_oom_sweep(void **state)
         }
 }
 
+/* pds_image_to_pixels under failing allocations: a clean DIAG_IO and the
+ * pixel array left as it was. */
+static void test_pds_image_oom_sweep(void **state)
+{
+    uint8_t rgb[6] = { 255, 0, 0, 0, 0, 255 }, map_rgb[6] = { 0, 0, 255, 255, 0, 0 };
+    int32_t map_attr[2] = { 20, 21 };
+    image img;
+    pds_image_map map;
+    long n;
+    (void)state;
+    memset(&map, 0, sizeof map);
+    img.width = 2; img.height = 1; img.channels = 3; img.px = rgb;
+    map.rgb = map_rgb; map.rgb_attr = map_attr; map.nrgb = 2;
+    for (n = 0;; n++) {
+        pds_pixels px;
+        diag err;
+        int rc;
+        memset(&px, 0, sizeof px);
+        diag_init(&err);
+        mem_fail_after(n);
+        rc = pds_image_to_pixels(&img, &map, &px, "i.deck", L0, &err);
+        mem_fail_after(-1);
+        if (rc == 0) {
+            assert_int_equal(px.cells[0], 21);
+            mem_free(px.cells);
+            break;
+        }
+        assert_int_equal(rc, DIAG_IO);
+        assert_null(px.cells);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1215,6 +1247,7 @@ int main(void)
         cmocka_unit_test(test_pds_errors_exact_text),
         cmocka_unit_test(test_pds_image_to_pixels),
         cmocka_unit_test(test_pds_oom_sweep),
+        cmocka_unit_test(test_pds_image_oom_sweep),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
