@@ -262,13 +262,16 @@ static int ellipse_in(const ellipse *e, num u, num v)
     return num_add(num_mul(x, x), num_mul(y, y)) <= NUM_ONE;
 }
 
-/* Membership of (u,v) in the subtree at i; on success *attr is the winning
- * leaf's id (or an operator's override). Rules: docs/pds.md. */
-static int eval(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned long *steps)
+/* Membership of (u,v) in the subtree at i, whose box has already accepted
+ * the point (and been counted in *steps); on success *attr is the winning
+ * leaf's id or an operator's override. Rules: docs/pds.md. */
+static int body(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned long *steps);
+
+/* Visits node k: counts it, tests its box, then its shape or operands.
+ * Leaf shapes are tested inline: most visits end at a leaf. */
+static inline int visit(const cpg *c, uint32_t k, num u, num v, int32_t *attr, unsigned long *steps)
 {
-    const cnode *n = &c->nodes[i];
-    uint32_t k;
-    int32_t dummy;
+    const cnode *n = &c->nodes[k];
     ++*steps;
     if (!pds_num_in_box(n->box, u, v))
         return 0;
@@ -283,40 +286,41 @@ static int eval(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned 
         if (!NS(pds_ring_inside)(&c->rings[n->shape], u, v, steps))
             return 0;
         break;
-    case K_UNION:
-        /* The operand's box is tested here, before the call: most operands
-         * of a large union are rejected by it. */
-        for (k = i + 1; k < n->end; k = c->nodes[k].end) {
-            if (!pds_num_in_box(c->nodes[k].box, u, v))
-                ++*steps;
-            else if (eval(c, k, u, v, attr, steps))
-                break;
-        }
-        if (k >= n->end)
-            return 0;
-        if (n->attr != PDS_INHERIT)
-            *attr = n->attr;
-        return 1;
-    case K_INTER:
-    case K_DIFF:
-        k = i + 1;
-        if (!eval(c, k, u, v, attr, steps))
-            return 0;
-        for (k = c->nodes[k].end; k < n->end; k = c->nodes[k].end)
-            if (eval(c, k, u, v, &dummy, steps) != (n->kind == K_INTER))
-                return 0;
-        if (n->attr != PDS_INHERIT)
-            *attr = n->attr;
-        return 1;
+    default:
+        return body(c, k, u, v, attr, steps);
     }
     *attr = n->attr;
+    return 1;
+}
+
+static int body(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned long *steps)
+{
+    const cnode *n = &c->nodes[i];
+    uint32_t k;
+    int32_t dummy;
+    if (n->kind == K_UNION) {
+        for (k = i + 1; k < n->end; k = c->nodes[k].end)
+            if (visit(c, k, u, v, attr, steps))
+                break;
+        if (k >= n->end)
+            return 0;
+    } else {
+        k = i + 1;
+        if (!visit(c, k, u, v, attr, steps))
+            return 0;
+        for (k = c->nodes[k].end; k < n->end; k = c->nodes[k].end)
+            if (visit(c, k, u, v, &dummy, steps) != (n->kind == K_INTER))
+                return 0;
+    }
+    if (n->attr != PDS_INHERIT)
+        *attr = n->attr;
     return 1;
 }
 
 static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
 {
     int32_t attr = PDS_NONE;
-    return eval(impl, 0, u, v, &attr, steps) ? attr : PDS_NONE;
+    return visit(impl, 0, u, v, &attr, steps) ? attr : PDS_NONE;
 }
 
 static size_t bytes(const void *impl)
