@@ -9,7 +9,8 @@
  * half-line from (u,v) towards +u: a subtree whose box misses the line
  * contributes nothing, and one whose box lies wholly right of the point
  * contributes exactly [end vertices on opposite sides of the line], so only
- * nodes whose boxes straddle the point are opened. */
+ * nodes whose boxes straddle the point are opened. (Chord-aligned strips
+ * as in Ballard's paper were measured slower here; docs/pds.md.) */
 #ifndef PDS_RING_H
 #define PDS_RING_H
 #include <stddef.h>
