@@ -101,6 +101,7 @@ int pds_curve_simple(const double *pts, size_t n, size_t *ea, size_t *eb)
 {
     edge_key *keys;
     size_t *active, nactive = 0, k, i;
+    unsigned long budget = PDS_CURVE_PAIR_BUDGET;
     /* Adjacent edges meet at their shared vertex; they must not fold back. */
     for (i = 0; i < n; i++) {
         const double *a = pts + 2 * i, *b = pts + 2 * ((i + 1) % n), *c = pts + 2 * ((i + 2) % n);
@@ -125,6 +126,12 @@ int pds_curve_simple(const double *pts, size_t n, size_t *ea, size_t *eb)
     for (k = 0; k < n; k++) {
         size_t e = keys[k].i, j, kept = 0;
         const double *a = pts + 2 * e, *b = pts + 2 * ((e + 1) % n);
+        if (nactive > budget) {
+            mem_free(keys);
+            mem_free(active);
+            return -3;
+        }
+        budget -= nactive;
         for (j = 0; j < nactive; j++) {
             size_t f = active[j];
             const double *c = pts + 2 * f, *d = pts + 2 * ((f + 1) % n);

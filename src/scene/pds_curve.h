@@ -21,8 +21,12 @@ int pds_curve_flatten(const double *ctl, size_t n, double tol, size_t max_per_se
 /* Checks that the closed polyline pts[2*n] is simple: no two non-adjacent
  * edges touch and no two adjacent edges overlap. Returns 1 if simple, 0 if
  * not (then *ea < *eb are two offending edge indices; edge i runs from
- * vertex i to vertex i+1 mod n), -2 if out of memory. Sweep over edges
- * sorted by their smallest u, so typical curves cost O(n log n). */
+ * vertex i to vertex i+1 mod n), -2 if out of memory, -3 if it would need
+ * more than PDS_CURVE_PAIR_BUDGET edge-pair tests. Sweep over edges sorted
+ * by their smallest u, so typical curves cost O(n log n); the budget bounds
+ * the time taken by contrived ones (e.g. combs whose edges all span the
+ * same u range). */
+#define PDS_CURVE_PAIR_BUDGET 10000000UL
 int pds_curve_simple(const double *pts, size_t n, size_t *ea, size_t *eb);
 
 /* Twice the signed area of the closed polyline (positive: counter-clockwise). */

@@ -264,6 +264,9 @@ static int check_ring(const double *pts, size_t n, const char *what, int bspline
     if (pds_curve_area2(pts, n) == 0)
         return FAIL(loc, "%s encloses no area", what);
     r = pds_curve_simple(pts, n, &ea, &eb);
+    if (r == -3)
+        return FAIL(loc, "%s is too intricate to check for self-intersection (more than %lu edge pairs)",
+                    what, PDS_CURVE_PAIR_BUDGET);
     if (r < 0)
         return diag_at(err, DIAG_IO, file, loc.line, loc.col, "out of memory checking a %s", what);
     if (r == 0 && bspline) {

@@ -1075,6 +1075,31 @@ static void test_pds_errors_exact_text(void **state)
     pds_curve_add(&d, 0, bow, 4, 1, at(16, 2));
     expect_error(&d, "bad.deck:16:2: error: curve edges 1 and 3 cross or touch (it must be simple)");
     pds_def_free(&d);
+    {
+        /* A comb: every edge spans the same u range, the worst case for the
+         * sweep; refused quickly instead of taking quadratic time. */
+        static double comb[2 * 20000];
+        int i;
+        for (i = 0; i < 10000; i++) {
+            comb[4 * i] = i % 2 ? 0.9 : 0.1;
+            comb[4 * i + 1] = i / 10000.0;
+            comb[4 * i + 2] = i % 2 ? 0.1 : 0.9;
+            comb[4 * i + 3] = (i + 0.5) / 10000.0;
+        }
+        comb[0] = 0.0;
+        pds_def_init(&d, PDS_CURVES, at(14, 1));
+        pds_curve_add(&d, 0, comb, 20000, 1, at(17, 1));
+        {
+            diag err;
+            char buf[700];
+            diag_init(&err);
+            assert_int_equal(pds_def_check(&d, "bad.deck", &err), DIAG_INPUT);
+            diag_format(&err, buf, sizeof buf);
+            assert_string_equal(buf, "bad.deck:17:1: error: curve is too intricate to check for "
+                                     "self-intersection (more than 10000000 edge pairs)");
+        }
+        pds_def_free(&d);
+    }
     pds_def_init(&d, PDS_CURVES, at(14, 1));
     pds_curve_add(&d, 1, two, 2, 1, at(16, 3));
     expect_error(&d, "bad.deck:16:3: error: B-spline curve needs at least 3 points, got 2");
