@@ -181,17 +181,21 @@ static void bench_tiling(pds_tile_shape shape, const char *name)
     pds_def_free(&d);
 }
 
-static void bench_mosaic(int n)
+/* n seeds, spread uniformly or (clustered) 7 in 8 of them in a 0.05 square. */
+static void bench_mosaic(int n, int clustered)
 {
     pds_def d;
     int i;
     char size[32];
     pds_def_init(&d, PDS_MOSAIC, L0);
-    for (i = 0; i < n; i++)
-        pds_mosaic_seed(&d, uniform(), uniform(), i % 7);
+    for (i = 0; i < n; i++) {
+        int c = clustered && i % 8;
+        double u = c ? 0.4 + 0.05 * uniform() : uniform(), v = c ? 0.4 + 0.05 * uniform() : uniform();
+        pds_mosaic_seed(&d, u, v, i % 7);
+    }
     d.mosaic.mortar = 0.1 / sqrt((double)n);
     d.mosaic.mortar_attr = 0;
-    snprintf(size, sizeof size, "seeds=%d", n);
+    snprintf(size, sizeof size, "%s=%d", clustered ? "cluster" : "seeds", n);
     run("mosaic", size, &d);
     pds_def_free(&d);
 }
@@ -259,10 +263,12 @@ int main(int argc, char **argv)
     bench_tiling(PDS_TILE_BRICK, "brick");
     bench_tiling(PDS_TILE_HEX, "hex");
     bench_tiling(PDS_TILE_TRIANGLE, "triangle");
-    bench_mosaic(16);
-    bench_mosaic(1024);
-    if (!quick)
-        bench_mosaic(65536);
+    bench_mosaic(16, 0);
+    bench_mosaic(1024, 0);
+    if (!quick) {
+        bench_mosaic(65536, 0);
+        bench_mosaic(65536, 1);
+    }
     bench_curve(24, 1);
     bench_curve(1000, 0);
     if (!quick)

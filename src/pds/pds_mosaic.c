@@ -2,25 +2,32 @@
  * the nearest seed (ties: the lower seed number); it is mortar when it lies
  * within mortar/2 of the bisector with some other seed, i.e. when
  * d_i^2 - d_1^2 <= mortar * |s_i - s_1| for a seed i other than the nearest.
- * Seeds are bucketed in a G x G grid (G ~ sqrt(seeds)); a lookup scans
- * rings of buckets around the point's bucket until no farther bucket can
- * hold a nearer seed (or, with mortar, a seed within d_1 + mortar). */
+ *
+ * Seeds are kept in an implicit 2-d tree: the seed at the middle of each
+ * index range splits it (u at even depths, v at odd), smaller coordinates to
+ * the left. A lookup descends towards the point and opens the far side only
+ * when the splitting line is not farther than the best distance so far, so
+ * clustered seeds cost O(log n) as well as spread ones. The mortar test then
+ * visits the seeds within d_1 + mortar, since only they can own a bisector
+ * inside the band (d_i - d_1 <= mortar is necessary). */
 #include "pds/pds_kind.h"
 #include <math.h>
 #include "pds/pds_num.h"
 #include "util/mem.h"
 
+#define KD_LEAF 6          /* ranges this short are scanned */
+
+typedef struct seed {
+    num u, v;
+    int32_t attr;          /* region attribute id */
+    uint32_t order;        /* definition number, for ties */
+} seed;
+
 typedef struct mosaic {
-    long g;                  /* grid side */
-    num *su, *sv;            /* seeds (sorted by bucket) */
-    int32_t *attr;           /* their ids */
-    uint32_t *order;         /* their definition numbers, for ties */
-    uint32_t *start;         /* bucket b holds seeds start[b] .. start[b+1]-1 */
-    num *ring;               /* ring[r] = r * bucket size */
-    pds_wide *ring2;         /* ring[r]^2 */
+    seed *s;               /* seeds in tree order */
+    size_t n;
     num mortar;
     int32_t mortar_attr;
-    size_t n;
 } mosaic;
 
 static void release(void *impl)
@@ -28,135 +35,186 @@ static void release(void *impl)
     mosaic *m = impl;
     if (!m)
         return;
-    mem_free(m->su); mem_free(m->sv); mem_free(m->attr); mem_free(m->order);
-    mem_free(m->start); mem_free(m->ring); mem_free(m->ring2);
+    mem_free(m->s);
     mem_free(m);
+}
+
+static void swap(mosaic *m, size_t a, size_t b)
+{
+    seed t = m->s[a];
+    m->s[a] = m->s[b];
+    m->s[b] = t;
+}
+
+static num key(const seed *s, int axis) { return axis ? s->v : s->u; }
+
+/* Quickselect: puts the k-th smallest key (u or v) at k, smaller-or-equal
+ * keys before it and larger-or-equal after. Median-of-three pivots. */
+static void select_k(mosaic *m, size_t lo, size_t hi, size_t k, int axis)
+{
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2, i, store;
+        num a = key(&m->s[lo], axis), b = key(&m->s[mid], axis), c = key(&m->s[hi - 1], axis), pivot;
+        size_t p = (a < b) == (b < c) ? mid : (b < a) == (a < c) ? lo : hi - 1;
+        swap(m, p, hi - 1);
+        pivot = key(&m->s[hi - 1], axis);
+        for (i = store = lo; i < hi - 1; i++)
+            if (key(&m->s[i], axis) < pivot)
+                swap(m, i, store++);
+        swap(m, store, hi - 1);
+        if (k == store)
+            return;
+        if (k < store)
+            hi = store;
+        else
+            lo = store + 1;
+    }
+}
+
+static void build(mosaic *m, size_t lo, size_t hi, int depth)
+{
+    size_t mid;
+    if (hi - lo <= KD_LEAF)
+        return;
+    mid = lo + (hi - lo) / 2;
+    select_k(m, lo, hi, mid, depth & 1);
+    build(m, lo, mid, depth + 1);
+    build(m, mid + 1, hi, depth + 1);
 }
 
 static int compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     const pds_mosaic *d = &def->mosaic;
     mosaic *m = mem_calloc(1, sizeof *m);
-    uint32_t *fill = NULL;
     size_t i, n = d->nseeds;
-    long g, r, b;
     if (!m)
         goto oom;
-    g = (long)ceil(sqrt((double)n));
-    g = g < 1 ? 1 : g > 1024 ? 1024 : g;
-    m->g = g;
     m->n = n;
-    m->su = mem_calloc(n, sizeof *m->su);
-    m->sv = mem_calloc(n, sizeof *m->sv);
-    m->attr = mem_calloc(n, sizeof *m->attr);
-    m->order = mem_calloc(n, sizeof *m->order);
-    m->start = mem_calloc((size_t)(g * g + 1), sizeof *m->start);
-    m->ring = mem_calloc((size_t)g + 2, sizeof *m->ring);
-    m->ring2 = mem_calloc((size_t)g + 2, sizeof *m->ring2);
-    fill = mem_calloc((size_t)(g * g), sizeof *fill);
-    if (!m->su || !m->sv || !m->attr || !m->order || !m->start || !m->ring || !m->ring2 || !fill)
+    m->s = mem_calloc(n, sizeof *m->s);
+    if (!m->s)
         goto oom;
-    /* Counting sort of the seeds into buckets, stable in definition order. */
     for (i = 0; i < n; i++) {
-        num u = num_from_d(d->seeds[2 * i]), v = num_from_d(d->seeds[2 * i + 1]);
-        m->start[pds_num_cell(v, g) * g + pds_num_cell(u, g) + 1]++;
+        m->s[i].u = num_from_d(d->seeds[2 * i]);
+        m->s[i].v = num_from_d(d->seeds[2 * i + 1]);
+        m->s[i].attr = d->attrs[i];
+        m->s[i].order = (uint32_t)i;
     }
-    for (b = 0; b < g * g; b++)
-        m->start[b + 1] += m->start[b];
-    for (i = 0; i < n; i++) {
-        num u = num_from_d(d->seeds[2 * i]), v = num_from_d(d->seeds[2 * i + 1]);
-        long cell = pds_num_cell(v, g) * g + pds_num_cell(u, g);
-        uint32_t at = m->start[cell] + fill[cell]++;
-        m->su[at] = u;
-        m->sv[at] = v;
-        m->attr[at] = d->attrs[i];
-        m->order[at] = (uint32_t)i;
-    }
-    for (r = 0; r <= g + 1; r++) {
-        /* Lower bounds on the distance to seeds r + 1 or more buckets away.
-         * Bucket edges fall between representable numbers, so take off two
-         * units of the mode's resolution before squaring. */
-        double rd = (double)r / (double)g - 2 * num_to_d(NUM_ULP);
-        rd = rd > 0 ? rd : 0;
-        m->ring[r] = num_from_d(rd);
-        m->ring2[r] = pds_wide_from_d(rd * rd);
-    }
+    build(m, 0, n, 0);
     m->mortar = num_from_d(d->mortar);
     m->mortar_attr = d->mortar_attr;
-    mem_free(fill);
     *out = m;
     return 0;
 oom:
-    mem_free(fill);
     release(m);
     return NS(pds_oom)(def, file, err);
 }
 
-/* Visits every bucket in ring r (Chebyshev distance r) around (cu, cv). */
-#define RING_FOR(m, cu, cv, r, ...)                                                   \
-    do {                                                                              \
-        long y_, x_;                                                                  \
-        for (y_ = (cv) - (r); y_ <= (cv) + (r); y_++) {                               \
-            long dx_ = (y_ == (cv) - (r) || y_ == (cv) + (r)) ? 1 : 2 * (r);          \
-            if (y_ < 0 || y_ >= (m)->g)                                               \
-                continue;                                                             \
-            for (x_ = (cu) - (r); x_ <= (cu) + (r); x_ += dx_ > 0 ? dx_ : 1) {        \
-                uint32_t s_;                                                          \
-                if (x_ < 0 || x_ >= (m)->g)                                           \
-                    continue;                                                         \
-                for (s_ = (m)->start[y_ * (m)->g + x_]; s_ < (m)->start[y_ * (m)->g + x_ + 1]; s_++) { __VA_ARGS__ } \
-            }                                                                         \
-        }                                                                             \
-    } while (0)
+typedef struct query {
+    const mosaic *m;
+    num u, v;
+    pds_wide best;         /* squared distance of the nearest so far */
+    size_t bi;             /* its index */
+    pds_wide reach2;       /* mortar pass: squared search radius */
+    unsigned long steps;
+} query;
+
+static void consider(query *q, size_t i)
+{
+    const seed *s = &q->m->s[i];
+    pds_wide dd = pds_wide_sq2(num_sub(s->u, q->u), num_sub(s->v, q->v));
+    q->steps++;
+    if (dd < q->best || (dd == q->best && s->order < q->m->s[q->bi].order)) {
+        q->best = dd;
+        q->bi = i;
+    }
+}
+
+static void nearest(query *q, size_t lo, size_t hi, int depth)
+{
+    size_t mid, i;
+    num diff;
+    if (hi - lo <= KD_LEAF) {
+        for (i = lo; i < hi; i++)
+            consider(q, i);
+        return;
+    }
+    mid = lo + (hi - lo) / 2;
+    consider(q, mid);
+    diff = num_sub(depth & 1 ? q->v : q->u, key(&q->m->s[mid], depth & 1));
+    if (diff < NUM_ZERO) {
+        nearest(q, lo, mid, depth + 1);
+        if (pds_wide_sq2(diff, NUM_ZERO) <= q->best)   /* ties may lie across */
+            nearest(q, mid + 1, hi, depth + 1);
+    } else {
+        nearest(q, mid + 1, hi, depth + 1);
+        if (pds_wide_sq2(diff, NUM_ZERO) <= q->best)
+            nearest(q, lo, mid, depth + 1);
+    }
+}
+
+/* 1 if a seed within the search radius puts the point in the mortar band. */
+static int in_band(query *q, size_t i)
+{
+    const seed *s = &q->m->s[i], *b = &q->m->s[q->bi];
+    pds_wide dd;
+    if (i == q->bi)
+        return 0;
+    q->steps++;
+    dd = pds_wide_sq2(num_sub(s->u, q->u), num_sub(s->v, q->v));
+    if (dd > q->reach2)
+        return 0;
+    return pds_wide_band(dd - q->best, q->m->mortar, pds_wide_sq2(num_sub(s->u, b->u), num_sub(s->v, b->v)));
+}
+
+static int band(query *q, size_t lo, size_t hi, int depth)
+{
+    size_t mid, i;
+    num diff;
+    if (hi - lo <= KD_LEAF) {
+        for (i = lo; i < hi; i++)
+            if (in_band(q, i))
+                return 1;
+        return 0;
+    }
+    mid = lo + (hi - lo) / 2;
+    if (in_band(q, mid))
+        return 1;
+    diff = num_sub(depth & 1 ? q->v : q->u, key(&q->m->s[mid], depth & 1));
+    if (diff <= NUM_ZERO || pds_wide_sq2(diff, NUM_ZERO) <= q->reach2)
+        if (band(q, lo, mid, depth + 1))
+            return 1;
+    if (diff >= NUM_ZERO || pds_wide_sq2(diff, NUM_ZERO) <= q->reach2)
+        if (band(q, mid + 1, hi, depth + 1))
+            return 1;
+    return 0;
+}
 
 static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const mosaic *m = impl;
-    long cu = pds_num_cell(u, m->g), cv = pds_num_cell(v, m->g), r, reach;
-    pds_wide best = PDS_WIDE_MAX, reach2;
-    num d1;
-    uint32_t bi = 0;
-    int found = 0;
-    for (r = 0; r <= m->g; r++) {
-        RING_FOR(m, cu, cv, r, {
-            pds_wide dd = pds_wide_sq2(num_sub(m->su[s_], u), num_sub(m->sv[s_], v));
-            ++*steps;
-            if (!found || dd < best || (dd == best && m->order[s_] < m->order[bi])) {
-                best = dd;
-                bi = s_;
-                found = 1;
-            }
-        });
-        /* Seeds in rings beyond r lie at least r buckets away. */
-        if (found && best < m->ring2[r])
-            break;
+    query q;
+    q.m = m;
+    q.u = u;
+    q.v = v;
+    q.best = PDS_WIDE_MAX;
+    q.bi = 0;
+    q.steps = 0;
+    nearest(&q, 0, m->n, 0);
+    if (m->mortar > NUM_ZERO) {
+        q.reach2 = pds_wide_reach2(q.best, m->mortar);
+        if (band(&q, 0, m->n, 0)) {
+            *steps += q.steps;
+            return m->mortar_attr;
+        }
     }
-    if (m->mortar == NUM_ZERO)
-        return m->attr[bi];
-    /* Any seed within d1 + mortar may own a bisector inside the band; the
-     * few units of slack cover the rounded square root. Farther seeds are
-     * skipped by their squared distance before any square root is taken. */
-    d1 = num_add(num_add(pds_wide_sqrt(best), m->mortar), 4 * NUM_ULP);
-    reach2 = pds_wide_sq2(d1, NUM_ZERO);
-    for (reach = 0; reach <= m->g && m->ring[reach > 0 ? reach - 1 : 0] <= d1; reach++) {
-        RING_FOR(m, cu, cv, reach, {
-            pds_wide dd = pds_wide_sq2(num_sub(m->su[s_], u), num_sub(m->sv[s_], v));
-            ++*steps;
-            if (s_ != bi && dd <= reach2) {
-                num sep = pds_wide_sqrt(pds_wide_sq2(num_sub(m->su[s_], m->su[bi]), num_sub(m->sv[s_], m->sv[bi])));
-                if (dd - best <= pds_wide_mul(m->mortar, sep))
-                    return m->mortar_attr;
-            }
-        });
-    }
-    return m->attr[bi];
+    *steps += q.steps;
+    return m->s[q.bi].attr;
 }
 
 static size_t bytes(const void *impl)
 {
     const mosaic *m = impl;
-    return sizeof *m + m->n * (2 * sizeof(num) + sizeof(int32_t) + sizeof(uint32_t)) +
-           (size_t)(m->g * m->g + 1) * sizeof(uint32_t) + (size_t)(m->g + 2) * (sizeof(num) + sizeof(pds_wide));
+    return sizeof *m + m->n * sizeof *m->s;
 }
 
 const NS(pds_kind_ops) NS(pds_mosaic_ops) = { "mosaic", compile, locate, bytes, release };

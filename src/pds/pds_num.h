@@ -53,7 +53,7 @@ static inline long pds_num_floordiv(num x, num w, num *rem)
 #endif
 }
 
-#if defined(NUM_MODE_q32)
+#if NUM_IS_FIXED
 /* Signed 64x64 -> 128-bit product as an order-preserving key pair
  * (high word with its sign bit flipped, low word). */
 static inline void pds_num_mul128(int64_t a, int64_t b, uint64_t *hi, uint64_t *lo)
@@ -134,6 +134,37 @@ static inline pds_wide pds_wide_from_d(double x) { return num_from_d(x); }
 static inline num pds_wide_sqrt(pds_wide x) { return num_sqrt(x); }
 #define PDS_WIDE_MAX NUM_MAX
 #endif
+
+/* Mosaic mortar test: diff <= mortar * sqrt(sep2), with diff = d_i^2 - d_1^2
+ * (>= 0 up to rounding) and sep2 the squared distance of the two seeds. In
+ * q16 both sides are squared and compared exactly in 128 bits, without a
+ * square root. */
+static inline int pds_wide_band(pds_wide diff, num mortar, pds_wide sep2)
+{
+#if defined(NUM_MODE_q16)
+    uint64_t lh, ll, rh, rl;
+    if (diff <= 0)
+        return 1;
+    pds_num_mul128(diff, diff, &lh, &ll);
+    pds_num_mul128((int64_t)mortar * mortar, sep2, &rh, &rl);
+    return lh != rh ? lh < rh : ll <= rl;
+#else
+    return diff <= num_mul(mortar, num_sqrt(sep2));
+#endif
+}
+
+/* A squared radius covering d_1 + mortar, where best = d_1^2. q16 uses the
+ * bound (a + b)^2 <= 2 (a^2 + b^2), which needs no square root; the other
+ * modes take the root and add a few units for its rounding. */
+static inline pds_wide pds_wide_reach2(pds_wide best, num mortar)
+{
+#if defined(NUM_MODE_q16)
+    return 2 * (best + (int64_t)mortar * mortar);
+#else
+    num r = num_add(num_add(num_sqrt(best), mortar), 4 * NUM_ULP);
+    return num_mul(r, r);
+#endif
+}
 
 /* Closed point-in-box test; box = u0 v0 u1 v1. */
 static inline int pds_num_in_box(const num *box, num u, num v)
