@@ -105,33 +105,12 @@ static inline int pds_num_orient(num ax, num ay, num bx, num by, num px, num py)
 #if defined(NUM_MODE_q16)
 typedef int64_t pds_wide;
 static inline pds_wide pds_wide_sq2(num dx, num dy) { return (int64_t)dx * dx + (int64_t)dy * dy; }
-static inline pds_wide pds_wide_mul(num a, num b) { return (int64_t)a * b; }
 static inline pds_wide pds_wide_from_d(double x) { return (int64_t)floor(x * 4294967296.0 + 0.5); }
-/* Square root of a non-negative wide value, as num: the integer square
- * root of a Q32.32 raw value is the Q16.16 root (rounded down), so small
- * squares keep their precision. Bitwise, no floating point. */
-static inline num pds_wide_sqrt(pds_wide x)
-{
-    uint64_t v = x > 0 ? (uint64_t)x : 0, r = 0, bit = (uint64_t)1 << 62;
-    while (bit > v)
-        bit >>= 2;
-    while (bit) {
-        if (v >= r + bit) {
-            v -= r + bit;
-            r = (r >> 1) + bit;
-        } else
-            r >>= 1;
-        bit >>= 2;
-    }
-    return fx16_sat((int64_t)r);
-}
 #define PDS_WIDE_MAX INT64_MAX
 #else
 typedef num pds_wide;
 static inline pds_wide pds_wide_sq2(num dx, num dy) { return num_add(num_mul(dx, dx), num_mul(dy, dy)); }
-static inline pds_wide pds_wide_mul(num a, num b) { return num_mul(a, b); }
 static inline pds_wide pds_wide_from_d(double x) { return num_from_d(x); }
-static inline num pds_wide_sqrt(pds_wide x) { return num_sqrt(x); }
 #define PDS_WIDE_MAX NUM_MAX
 #endif
 
