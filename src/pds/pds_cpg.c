@@ -12,12 +12,13 @@
  * lists. Priority rules are in docs/pds.md. */
 #include "pds/pds_kind.h"
 #include <math.h>
+#include "pds/pds.h"
 #include <string.h>
 #include "pds/pds_num.h"
 #include "pds/pds_ring.h"
 #include "util/mem.h"
 
-enum { K_BOX, K_ELLIPSE, K_RING, K_UNION, K_INTER, K_DIFF };
+enum { K_BOX, K_ELLIPSE, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
 
 typedef struct cnode {
     num box[4];          /* closed bounding box; box[0] > box[2] when empty */
@@ -32,10 +33,18 @@ typedef struct ellipse {
     num c[2];            /* centre in root coordinates */
 } ellipse;
 
+/* A nested PDS: local = m * (root - origin), then the PDS's own lookup. */
+typedef struct nested {
+    num m[4];
+    num origin[2];
+    NS(pds) *pds;
+} nested;
+
 typedef struct cpg {
     cnode *nodes; size_t nnodes, cap;
     ellipse *ell; size_t nell, cap_ell;
     NS(pds_ring) *rings; size_t nrings, cap_rings;
+    nested *nest; size_t nnest, cap_nest;
 } cpg;
 
 typedef struct builder {
@@ -53,6 +62,9 @@ static void release(void *impl)
     for (i = 0; i < c->nrings; i++)
         NS(pds_ring_free)(&c->rings[i]);
     mem_free(c->rings);
+    for (i = 0; i < c->nnest; i++)
+        NS(pds_free)(c->nest[i].pds);
+    mem_free(c->nest);
     mem_free(c->ell);
     mem_free(c->nodes);
     mem_free(c);
@@ -130,6 +142,33 @@ static int compile_leaf(builder *b, size_t di)
         if (me < 0)
             return -1;
         box_set(c->nodes[me].box, fmin(ua, ub), fmin(va, vb), fmax(ua, ub), fmax(va, vb));
+    } else if (dn->op == PDS_CPG_NESTED) {
+        /* The node's unit square, placed by m; store the inverse map. */
+        double det = m[0] * m[4] - m[1] * m[3], box[4], pad = 1.0 / 16384;
+        nested *ne;
+        diag sub_err;
+        if (mem_grow((void **)&c->nest, &c->cap_nest, c->nnest + 1, sizeof *c->nest))
+            return -1;
+        ne = &c->nest[c->nnest];
+        diag_init(&sub_err);
+        if (NS(pds_compile)(dn->sub, "", &ne->pds, &sub_err))
+            return -1;   /* checked already: only memory can run out */
+        c->nnest++;
+        ne->m[0] = num_from_d(m[4] / det);
+        ne->m[1] = num_from_d(-m[1] / det);
+        ne->m[2] = num_from_d(-m[3] / det);
+        ne->m[3] = num_from_d(m[0] / det);
+        ne->origin[0] = num_from_d(m[2]);
+        ne->origin[1] = num_from_d(m[5]);
+        me = push(c, K_NESTED, PDS_INHERIT);
+        if (me < 0)
+            return -1;
+        c->nodes[me].shape = (uint32_t)(c->nnest - 1);
+        box[0] = fmin(fmin(m[2], m[0] + m[2]), fmin(m[1] + m[2], m[0] + m[1] + m[2]));
+        box[2] = fmax(fmax(m[2], m[0] + m[2]), fmax(m[1] + m[2], m[0] + m[1] + m[2]));
+        box[1] = fmin(fmin(m[5], m[3] + m[5]), fmin(m[4] + m[5], m[3] + m[4] + m[5]));
+        box[3] = fmax(fmax(m[5], m[3] + m[5]), fmax(m[4] + m[5], m[3] + m[4] + m[5]));
+        box_set(c->nodes[me].box, box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad);
     } else if (dn->op == PDS_CPG_ELLIPSE) {
         /* root_from_disk = m * [ru 0 cu; 0 rv cv]; store its inverse. */
         double a = m[0] * dn->p[2], bb = m[1] * dn->p[3], cc = m[3] * dn->p[2], d = m[4] * dn->p[3];
@@ -262,6 +301,23 @@ static int ellipse_in(const ellipse *e, num u, num v)
     return num_add(num_mul(x, x), num_mul(y, y)) <= NUM_ONE;
 }
 
+/* A nested PDS's region: its closed unit square, minus where it says
+ * PDS_NONE (transparent). */
+static int nested_in(const nested *ne, num u, num v, int32_t *attr, unsigned long *steps)
+{
+    num du = num_sub(u, ne->origin[0]), dv = num_sub(v, ne->origin[1]);
+    num x = num_add(num_mul(ne->m[0], du), num_mul(ne->m[1], dv));
+    num y = num_add(num_mul(ne->m[2], du), num_mul(ne->m[3], dv));
+    int32_t id;
+    if (x < NUM_ZERO || x > NUM_ONE || y < NUM_ZERO || y > NUM_ONE)
+        return 0;
+    id = NS(pds_locate_steps)(ne->pds, x, y, steps);
+    if (id == PDS_NONE)
+        return 0;
+    *attr = id;
+    return 1;
+}
+
 /* Membership of (u,v) in the subtree at i, whose box has already accepted
  * the point (and been counted in *steps); on success *attr is the winning
  * leaf's id or an operator's override. Rules: docs/pds.md. */
@@ -286,6 +342,8 @@ static inline int visit(const cpg *c, uint32_t k, num u, num v, int32_t *attr, u
         if (!NS(pds_ring_inside)(&c->rings[n->shape], u, v, steps))
             return 0;
         break;
+    case K_NESTED:
+        return nested_in(&c->nest[n->shape], u, v, attr, steps);
     default:
         return body(c, k, u, v, attr, steps);
     }
@@ -330,6 +388,9 @@ static size_t bytes(const void *impl)
     for (i = 0; i < c->nrings; i++)
         s += (c->rings[i].n + 1) * 2 * sizeof(num) +
              c->rings[i].nnodes * sizeof *c->rings[i].nodes;
+    s += c->cap_nest * sizeof *c->nest;
+    for (i = 0; i < c->nnest; i++)
+        s += NS(pds_bytes)(c->nest[i].pds);
     return s;
 }
 

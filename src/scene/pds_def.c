@@ -94,6 +94,14 @@ long pds_cpg_polygon(pds_def *d, const double *uv, size_t nvert, int32_t attr, s
     return i;
 }
 
+long pds_cpg_nested(pds_def *d, const pds_def *sub, scene_loc loc)
+{
+    long i = cpg_push(d, PDS_CPG_NESTED, PDS_INHERIT, loc);
+    if (i >= 0)
+        d->cpg.nodes[i].sub = sub;
+    return i;
+}
+
 long pds_cpg_op_node(pds_def *d, pds_cpg_op op, const size_t *operands, size_t n, int32_t attr, scene_loc loc)
 {
     pds_cpg *c = &d->cpg;
@@ -325,6 +333,9 @@ static void leaf_box(const pds_def *d, const pds_cpg_node *n, const double m[6],
         pts4[0] = n->p[0]; pts4[1] = n->p[1]; pts4[2] = n->p[2]; pts4[3] = n->p[1];
         pts4[4] = n->p[2]; pts4[5] = n->p[3]; pts4[6] = n->p[0]; pts4[7] = n->p[3];
         pts = pts4; cnt = 4;
+    } else if (n->op == PDS_CPG_NESTED) {
+        static const double unit[8] = { 0, 0, 1, 0, 1, 1, 0, 1 };
+        pts = unit; cnt = 4;
     } else {
         pts = d->cpg.pts + 2 * n->first; cnt = n->count;
     }
@@ -339,11 +350,14 @@ static void leaf_box(const pds_def *d, const pds_cpg_node *n, const double m[6],
 
 static const char *op_name(pds_cpg_op op)
 {
-    static const char *names[] = { "rectangle", "ellipse", "polygon", "union", "intersection", "difference" };
+    static const char *names[] = { "rectangle", "ellipse", "polygon", "nested PDS", "union", "intersection",
+                                   "difference" };
     return names[op];
 }
 
-static int check_cpg(const pds_def *d, const char *file, diag *err)
+static int check_nested(const pds_def *sub, const char *file, diag *err, int depth);
+
+static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
 {
     const pds_cpg *c = &d->cpg;
     size_t i, k;
@@ -363,7 +377,7 @@ static int check_cpg(const pds_def *d, const char *file, diag *err)
             return FAIL(n->loc, "%s transform has a non-finite value", op_name(n->op));
         if (det == 0 || !isfinite(det))
             return FAIL(n->loc, "%s transform is singular (it flattens the region)", op_name(n->op));
-        if (!id_ok(n->attr) && !(n->op >= PDS_CPG_UNION && n->attr == PDS_INHERIT))
+        if (!id_ok(n->attr) && !(n->op >= PDS_CPG_NESTED && n->attr == PDS_INHERIT))
             return FAIL(n->loc, "region attribute id %ld is out of range (0..%d or none)",
                         (long)n->attr, PDS_MAX_ATTR);
         switch (n->op) {
@@ -391,6 +405,12 @@ static int check_cpg(const pds_def *d, const char *file, diag *err)
             rc = check_ring(c->pts + 2 * n->first, n->count, "polygon", 0, file, n->loc, err);
             if (rc)
                 return rc;
+            break;
+        case PDS_CPG_NESTED:
+            if (!n->sub)
+                return FAIL(n->loc, "nested PDS is not defined");
+            if (n->sub == d)
+                return FAIL(n->loc, "a PDS cannot contain itself");
             break;
         default:
             if (n->count == 0)
@@ -443,6 +463,20 @@ static int check_cpg(const pds_def *d, const char *file, diag *err)
             rc = FAIL(n->loc, "%s reaches beyond -%g..%g after its transforms", op_name(n->op),
                       PDS_COORD_MAX, PDS_COORD_MAX);
             goto done;
+        }
+        if (n->op == PDS_CPG_NESTED) {
+            /* Its unit square must stay wide enough for the inverse map to
+             * keep its coefficients small; then check the PDS it holds. */
+            double a = m[i][0], b = m[i][1], cc = m[i][3], dd = m[i][4];
+            double s2 = a * a + b * b + cc * cc + dd * dd, det = fabs(a * dd - b * cc);
+            double smin = sqrt(fmax(0, (s2 - sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2));
+            if (smin < PDS_MIN_FEATURE) {
+                rc = FAIL(n->loc, "nested PDS is thinner than 1/8192 after its transforms");
+                goto done;
+            }
+            rc = check_nested(n->sub, file, err, nest + 1);
+            if (rc)
+                goto done;
         }
         if (n->op == PDS_CPG_ELLIPSE) {
             /* Smallest semi-axis: the smaller singular value of the 2x2
@@ -662,10 +696,26 @@ static int check_curves(const pds_def *d, const char *file, diag *err)
     return 0;
 }
 
+static int check_def(const pds_def *d, const char *file, diag *err, int nest);
+
+/* A PDS held by a CPG leaf at nesting depth `depth`; deeper than
+ * PDS_MAX_NESTING (which also catches cycles) is refused. */
+static int check_nested(const pds_def *sub, const char *file, diag *err, int depth)
+{
+    if (depth > PDS_MAX_NESTING)
+        return FAIL(sub->loc, "PDS nested more than %d deep (or containing itself)", PDS_MAX_NESTING);
+    return check_def(sub, file, err, depth);
+}
+
 int pds_def_check(const pds_def *d, const char *file, diag *err)
 {
+    return check_def(d, file, err, 0);
+}
+
+static int check_def(const pds_def *d, const char *file, diag *err, int nest)
+{
     switch (d->kind) {
-    case PDS_CPG: return check_cpg(d, file, err);
+    case PDS_CPG: return check_cpg(d, file, err, nest);
     case PDS_PIXELS: return check_pixels(&d->pixels, "pixel array", file, d->loc, err);
     case PDS_TILING: return check_tiling(d, file, err);
     case PDS_MOSAIC: return check_mosaic(d, file, err);

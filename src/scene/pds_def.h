@@ -33,6 +33,7 @@
 #define PDS_QT_MAX_DEPTH    15       /* explicit quadtree levels */
 #define PDS_MIN_FEATURE     (1.0 / 8192) /* smallest ellipse radius, tile size */
 #define PDS_CURVE_TOLERANCE 1.0e-4   /* default B-spline flattening tolerance */
+#define PDS_MAX_NESTING     4        /* PDS inside CPG inside ... */
 
 typedef enum pds_kind {
     PDS_CPG, PDS_PIXELS, PDS_TILING, PDS_MOSAIC, PDS_QUADTREE, PDS_CURVES,
@@ -44,6 +45,7 @@ typedef enum pds_cpg_op {
     PDS_CPG_RECT,      /* p = u0 v0 u1 v1 (u0 < u1, v0 < v1) */
     PDS_CPG_ELLIPSE,   /* p = centre u, centre v, radius u, radius v */
     PDS_CPG_POLYGON,   /* vertices pts[2*first .. 2*(first+count)) as u,v */
+    PDS_CPG_NESTED,    /* another PDS (sub) over the node's unit square */
     PDS_CPG_UNION,     /* operands kids[first .. first+count), in order */
     PDS_CPG_INTER,
     PDS_CPG_DIFF
@@ -57,7 +59,9 @@ typedef struct pds_cpg_node {
      * parent = [xf0 xf1; xf3 xf4] * local + [xf2; xf5]. Identity by default;
      * the transform helpers below compose onto it. */
     double xf[6];
-    int32_t attr;      /* leaf: id >= 0 or PDS_NONE; operator: PDS_INHERIT or id */
+    int32_t attr;      /* leaf: id >= 0 or PDS_NONE; operator: PDS_INHERIT or id;
+                          NESTED: PDS_INHERIT (ids come from sub) */
+    const struct pds_def *sub; /* NESTED: not owned; must outlive this def */
     scene_loc loc;
 } pds_cpg_node;
 
@@ -149,6 +153,11 @@ long pds_cpg_rect(pds_def *d, double u0, double v0, double u1, double v1, int32_
 long pds_cpg_ellipse(pds_def *d, double cu, double cv, double ru, double rv, int32_t attr, scene_loc loc);
 long pds_cpg_polygon(pds_def *d, const double *uv, size_t nvert, int32_t attr, scene_loc loc);
 long pds_cpg_op_node(pds_def *d, pds_cpg_op op, const size_t *operands, size_t n, int32_t attr, scene_loc loc);
+/* A leaf holding another PDS: its region is the node's unit square
+ * [0,1] x [0,1] (placed by the node's transforms, edges included) wherever
+ * sub gives an id other than PDS_NONE; where sub gives PDS_NONE the leaf is
+ * transparent (later union operands show through). sub is not copied. */
+long pds_cpg_nested(pds_def *d, const pds_def *sub, scene_loc loc);
 /* Placement: composes the transform after the node's current one. */
 void pds_cpg_translate(pds_def *d, size_t node, double du, double dv);
 void pds_cpg_rotate(pds_def *d, size_t node, double degrees);        /* counter-clockwise about (0,0) */

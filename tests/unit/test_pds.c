@@ -101,6 +101,21 @@ static int ref_poly_in(const double *pts, size_t n, double x, double y)
     return in;
 }
 
+/* References for PDSs nested in CPG leaves (test_pds_cpg_nested_*). */
+static const pds_def *nest_def[4];
+static ref_fn nest_ref[4];
+static const void *nest_ctx[4];
+
+static int32_t ref_nested(const pds_def *sub, double u, double v)
+{
+    int k;
+    for (k = 0; k < 4; k++)
+        if (nest_def[k] == sub)
+            return nest_ref[k](nest_ctx[k], u, v);
+    fail_msg("no reference for a nested PDS");
+    return PDS_NONE;
+}
+
 /* Membership of parent-frame point (x,y) in definition node i; sets *attr. */
 static int ref_cpg_node(const pds_def *d, size_t i, double x, double y, int32_t *attr)
 {
@@ -123,6 +138,15 @@ static int ref_cpg_node(const pds_def *d, size_t i, double x, double y, int32_t 
     case PDS_CPG_POLYGON:
         in = ref_poly_in(d->cpg.pts + 2 * n->first, n->count, lx, ly);
         break;
+    case PDS_CPG_NESTED:
+        if (lx >= 0 && lx <= 1 && ly >= 0 && ly <= 1) {
+            int32_t id = ref_nested(n->sub, lx, ly);
+            if (id != PDS_NONE) {
+                *attr = id;
+                return 1;
+            }
+        }
+        return 0;
     case PDS_CPG_UNION:
         for (k = 0; k < n->count && !in; k++)
             in = ref_cpg_node(d, d->cpg.kids[n->first + k], lx, ly, attr);
@@ -135,7 +159,7 @@ static int ref_cpg_node(const pds_def *d, size_t i, double x, double y, int32_t 
                 in = 0;
         break;
     }
-    if (in && (n->op < PDS_CPG_UNION || n->attr != PDS_INHERIT))
+    if (in && (n->op < PDS_CPG_NESTED || n->attr != PDS_INHERIT))
         *attr = n->attr;
     return in;
 }
@@ -423,6 +447,111 @@ static void test_pds_cpg_visits_grow_logarithmically(void **state)
 /* ---- pixel array and quadtree ------------------------------------------ */
 
 typedef struct grid_ref { int w, h; const int32_t *cells; } grid_ref;
+static int32_t ref_grid(const void *ctx, double u, double v);
+static int32_t ref_tiling(const void *ctx, double u, double v);
+static void expect_error(const pds_def *d, const char *want);
+
+/* Figure 1's side face: a mirror rectangle, a band holding a pixel array
+ * (its PDS_NONE cells transparent), and a brick tiling under both whose
+ * mortar shows the base attribute. */
+static void test_pds_cpg_nested_matches_reference(void **state)
+{
+    uint64_t s = test_seed("test_pds_cpg_nested_matches_reference");
+    int32_t cells[12] = { 20, PDS_NONE, 21, 22, 20, 21, PDS_NONE, 22, 23, 23, 20, PDS_NONE };
+    int32_t tiles[2] = { 30, 31 };
+    pds_def d, px, tl;
+    grid_ref g;
+    size_t k[3];
+    int rot;
+    (void)state;
+    pds_def_init(&px, PDS_PIXELS, L0);
+    pds_pixels_set(&px.pixels, 4, 3, cells, 12);
+    pds_def_init(&tl, PDS_TILING, L0);
+    tl.tiling.shape = PDS_TILE_BRICK;
+    tl.tiling.size[0] = 0.25;
+    tl.tiling.size[1] = 0.125;
+    tl.tiling.mortar = 1.0 / 64;
+    pds_tiling_attrs(&tl, tiles, 2);
+    g.w = 4; g.h = 3; g.cells = cells;
+    nest_def[0] = &px; nest_ref[0] = ref_grid; nest_ctx[0] = &g;
+    nest_def[1] = &tl; nest_ref[1] = ref_tiling; nest_ctx[1] = &tl.tiling;
+    for (rot = 0; rot < 2; rot++) {
+        pds_def_init(&d, PDS_CPG, L0);
+        k[0] = (size_t)pds_cpg_rect(&d, 0.1, 0.6, 0.4, 0.8, 10, L0);
+        k[1] = (size_t)pds_cpg_nested(&d, &px, L0);
+        pds_cpg_scale(&d, k[1], 1, 0.2);
+        pds_cpg_translate(&d, k[1], 0, 0.3);
+        if (rot) {
+            pds_cpg_translate(&d, k[1], -0.5, -0.4);
+            pds_cpg_rotate(&d, k[1], 20);
+            pds_cpg_translate(&d, k[1], 0.5, 0.4);
+        }
+        k[2] = (size_t)pds_cpg_nested(&d, &tl, L0);
+        pds_cpg_op_node(&d, PDS_CPG_UNION, k, 3, PDS_INHERIT, L0);
+        compare_all(&d, ref_cpg, &d, &s, 1500, "nested PDS in CPG");
+        expect_all(&d, 0.25, 0.7, 10, "the rectangle comes first");
+        expect_all(&d, 0.375, 0.75, 10, "rectangle over tiles");
+        if (!rot) {
+            expect_all(&d, 0.125, 0.4, 20, "band: middle row, first column");
+            expect_all(&d, 0.4375, 0.45, 30, "band cell NONE: the tile (1, 3) shows through");
+            expect_all(&d, 0.625, 0.0625, 30, "tile (2, 0)");
+            expect_all(&d, 0.875, 0.0625, 31, "tile (3, 0)");
+            expect_all(&d, 0.25, 0.0625, PDS_NONE, "mortar of the tiling: base attribute");
+        }
+        pds_def_free(&d);
+    }
+    pds_def_free(&px);
+    pds_def_free(&tl);
+}
+
+static void test_pds_cpg_nested_errors(void **state)
+{
+    pds_def a, b, c, e[6];
+    int i;
+    (void)state;
+    pds_def_init(&a, PDS_CPG, at(20, 1));
+    pds_cpg_nested(&a, &a, at(21, 4));
+    expect_error(&a, "bad.deck:21:4: error: a PDS cannot contain itself");
+    pds_def_free(&a);
+    pds_def_init(&a, PDS_CPG, at(20, 1));
+    pds_cpg_nested(&a, NULL, at(21, 5));
+    expect_error(&a, "bad.deck:21:5: error: nested PDS is not defined");
+    pds_def_free(&a);
+    /* An error inside the nested PDS is reported at its own location. */
+    pds_def_init(&b, PDS_TILING, at(30, 2));
+    pds_def_init(&a, PDS_CPG, at(20, 1));
+    pds_cpg_nested(&a, &b, at(21, 6));
+    expect_error(&a, "bad.deck:30:2: error: tiling needs at least one tile attribute");
+    pds_def_free(&a);
+    pds_def_free(&b);
+    /* a contains b contains a: refused by the depth limit. */
+    pds_def_init(&a, PDS_CPG, at(20, 1));
+    pds_def_init(&b, PDS_CPG, at(40, 1));
+    pds_cpg_nested(&a, &b, at(21, 7));
+    pds_cpg_nested(&b, &a, at(41, 7));
+    expect_error(&a, "bad.deck:40:1: error: PDS nested more than 4 deep (or containing itself)");
+    pds_def_free(&a);
+    pds_def_free(&b);
+    /* Five levels of honest nesting are too deep, four are fine. */
+    pds_def_init(&e[0], PDS_CPG, at(50, 1));
+    pds_cpg_rect(&e[0], 0, 0, 1, 1, 1, L0);
+    for (i = 1; i < 6; i++) {
+        pds_def_init(&e[i], PDS_CPG, at(50 + i, 1));
+        pds_cpg_nested(&e[i], &e[i - 1], L0);
+    }
+    expect_all(&e[4], 0.5, 0.5, 1, "four levels of nesting");
+    expect_error(&e[5], "bad.deck:50:1: error: PDS nested more than 4 deep (or containing itself)");
+    for (i = 0; i < 6; i++)
+        pds_def_free(&e[i]);
+    pds_def_init(&c, PDS_CPG, at(20, 1));
+    pds_def_init(&b, PDS_PIXELS, at(60, 1));
+    pds_cpg_nested(&c, &b, at(21, 8));
+    pds_cpg_scale(&c, 0, 1, 0.0001);
+    expect_error(&c, "bad.deck:21:8: error: nested PDS is thinner than 1/8192 after its transforms");
+    pds_def_free(&c);
+    pds_def_free(&b);
+}
+
 
 static int32_t ref_grid(const void *ctx, double u, double v)
 {
@@ -1236,6 +1365,35 @@ static void test_pds_oom_sweep(void **state)
                 assert_true(n < 10000);
             }
         }
+    /* A CPG holding a nested tiling: the nested compile fails cleanly too. */
+    for (mi = 0; mi < NMODES; mi++) {
+        pds_def sub;
+        long n;
+        assert_int_equal(build_kind(&sub, PDS_TILING), 0);
+        for (n = 0;; n++) {
+            pds_def d;
+            void *p = NULL;
+            diag err;
+            int rc = -1;
+            diag_init(&err);
+            mem_fail_after(n);
+            pds_def_init(&d, PDS_CPG, L0);
+            if (pds_cpg_nested(&d, &sub, L0) >= 0)
+                rc = modes[mi]->compile(&d, "oom.deck", &p, &err);
+            mem_fail_after(-1);
+            if (rc == 0) {
+                assert_int_equal(modes[mi]->locate(p, 0.5, 0.5), modes[mi]->locate(p, 0.5, 0.5));
+                modes[mi]->free(p);
+                pds_def_free(&d);
+                break;
+            }
+            if (rc > 0)
+                assert_int_equal(rc, DIAG_IO);
+            assert_null(p);
+            pds_def_free(&d);
+        }
+        pds_def_free(&sub);
+    }
 }
 
 /* pds_image_to_pixels under failing allocations: a clean DIAG_IO and the
@@ -1277,6 +1435,8 @@ int main(void)
         cmocka_unit_test(test_pds_cpg_priority_rules),
         cmocka_unit_test(test_pds_cpg_boundaries_closed),
         cmocka_unit_test(test_pds_cpg_visits_grow_logarithmically),
+        cmocka_unit_test(test_pds_cpg_nested_matches_reference),
+        cmocka_unit_test(test_pds_cpg_nested_errors),
         cmocka_unit_test(test_pds_pixels_match_reference),
         cmocka_unit_test(test_pds_pixels_orientation_and_edges),
         cmocka_unit_test(test_pds_quadtree_matches_pixel_array),
