@@ -24,6 +24,21 @@ static unsigned take(stream *s)
 static double coord(stream *s) { return ((double)take(s) - 32) / 128.0; }
 static int32_t id(stream *s) { return (int32_t)take(s) % 9 - 1; }
 
+/* A PDS for nested leaves: a pixel array with a transparent cell. */
+static const pds_def *sub_pds(void)
+{
+    static pds_def sub;
+    static int ready;
+    static const int32_t cells[4] = { 1, PDS_NONE, 2, 3 };
+    static const scene_loc L = { 9, 9 };
+    if (!ready) {
+        pds_def_init(&sub, PDS_PIXELS, L);
+        if (pds_pixels_set(&sub.pixels, 2, 2, cells, 4) == 0)
+            ready = 1;
+    }
+    return &sub;
+}
+
 static void build(pds_def *d, stream *s)
 {
     static const scene_loc L = { 1, 1 };
@@ -32,7 +47,7 @@ static void build(pds_def *d, stream *s)
     case PDS_CPG:
         n = take(s) % 24 + 1;
         for (i = 0; i < n && s->n; i++) {
-            unsigned op = take(s) % 7, k, m;
+            unsigned op = take(s) % 8, k, m;
             size_t kids[4];
             double pts[16];
             switch (op) {
@@ -43,6 +58,9 @@ static void build(pds_def *d, stream *s)
                 for (k = 0; k < 2 * m; k++)
                     pts[k] = coord(s);
                 pds_cpg_polygon(d, pts, m, id(s), L);
+                break;
+            case 7:
+                pds_cpg_nested(d, take(s) % 4 ? sub_pds() : d, L);
                 break;
             case 6:
                 if (d->cpg.nnodes) {
