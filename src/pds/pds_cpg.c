@@ -4,7 +4,8 @@
  *
  * Compilation bakes every placement into the leaves: an axis-aligned
  * rectangle becomes its box, any other rectangle or polygon a pds_ring, an
- * ellipse the affine map that takes it to the unit disk. Each node keeps its
+ * ellipse the affine map that takes it to the unit disk, a nested PDS its
+ * own compiled structure and the map into its unit square. Each node keeps its
  * bounding box; a point outside a node's box is outside the whole subtree,
  * so a spatially balanced tree is searched in O(log N) node visits. n-ary
  * unions are rebuilt as balanced binary unions with the operand order kept
@@ -12,8 +13,8 @@
  * lists. Priority rules are in docs/pds.md. */
 #include "pds/pds_kind.h"
 #include <math.h>
-#include "pds/pds.h"
 #include <string.h>
+#include "pds/pds.h"
 #include "pds/pds_num.h"
 #include "pds/pds_ring.h"
 #include "util/mem.h"
