@@ -470,8 +470,13 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
             double a = m[i][0], b = m[i][1], cc = m[i][3], dd = m[i][4];
             double s2 = a * a + b * b + cc * cc + dd * dd, det = fabs(a * dd - b * cc);
             double smin = sqrt(fmax(0, (s2 - sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2));
+            double smax = sqrt((s2 + sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2);
             if (smin < PDS_MIN_FEATURE) {
                 rc = FAIL(n->loc, "nested PDS is thinner than 1/8192 after its transforms");
+                goto done;
+            }
+            if (smax > 4096 * smin) {
+                rc = FAIL(n->loc, "nested PDS is more than 4096 times longer than wide after its transforms");
                 goto done;
             }
             rc = check_nested(n->sub, file, err, nest + 1);

@@ -549,6 +549,12 @@ static void test_pds_cpg_nested_errors(void **state)
     pds_cpg_scale(&c, 0, 1, 0.0001);
     expect_error(&c, "bad.deck:21:8: error: nested PDS is thinner than 1/8192 after its transforms");
     pds_def_free(&c);
+    pds_def_init(&c, PDS_CPG, at(20, 1));
+    pds_cpg_nested(&c, &b, at(21, 9));
+    pds_cpg_scale(&c, 0, 1, 0.0002);
+    pds_cpg_rotate(&c, 0, 30);
+    expect_error(&c, "bad.deck:21:9: error: nested PDS is more than 4096 times longer than wide after its transforms");
+    pds_def_free(&c);
     pds_def_free(&b);
 }
 
@@ -1080,6 +1086,24 @@ static void test_pds_q16_counts_no_overflow(void **state)
         q16_pds_mode_ops.locate(p, test_uniform(&s, -0.5, 1.5), test_uniform(&s, -0.5, 1.5));
     q16_pds_mode_ops.free(p);
     pds_def_free(&d);
+    /* A nested PDS on a thin rotated band, at the aspect limit. */
+    {
+        pds_def sub;
+        int32_t cells[2] = { 1, 2 };
+        pds_def_init(&sub, PDS_PIXELS, L0);
+        pds_pixels_set(&sub.pixels, 2, 1, cells, 2);
+        pds_def_init(&d, PDS_CPG, L0);
+        pds_cpg_nested(&d, &sub, L0);
+        pds_cpg_scale(&d, 0, 1, 1.0 / 4000);
+        pds_cpg_rotate(&d, 0, 37);
+        pds_cpg_translate(&d, 0, 0.1, 0.1);
+        p = compile_or_fail(&q16_pds_mode_ops, &d);
+        for (k = 0; k < 100000; k++)
+            q16_pds_mode_ops.locate(p, test_uniform(&s, -0.5, 1.5), test_uniform(&s, -0.5, 1.5));
+        q16_pds_mode_ops.free(p);
+        pds_def_free(&d);
+        pds_def_free(&sub);
+    }
     assert_true(fx_overflows == before);
 }
 
