@@ -1060,6 +1060,100 @@ static void test_pds_curves_boundary_closed(void **state)
     pds_def_free(&d);
 }
 
+
+/* The flattened B-spline stays within the tolerance of the true curve:
+ * dense samples of each segment (evaluated here from the basis) lie within
+ * tol of the polyline. */
+static double dist_to_polyline(const double *pts, size_t n, double x, double y)
+{
+    size_t i;
+    double best = INFINITY;
+    for (i = 0; i < n; i++) {
+        const double *a = pts + 2 * i, *b = pts + 2 * ((i + 1) % n);
+        double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+        double t = l2 > 0 ? ((x - a[0]) * dx + (y - a[1]) * dy) / l2 : 0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        best = fmin(best, hypot(x - a[0] - t * dx, y - a[1] - t * dy));
+    }
+    return best;
+}
+
+static void test_pds_curve_flatten_within_tolerance(void **state)
+{
+    uint64_t s = test_seed("test_pds_curve_flatten_within_tolerance");
+    int t;
+    (void)state;
+    for (t = 0; t < 20; t++) {
+        double ctl[2 * 12], tol = t % 2 ? 1e-4 : 1e-3, *pts, worst = 0;
+        size_t n = 3 + test_rand(&s) % 10, np, i;
+        int k;
+        for (i = 0; i < n; i++) {
+            ctl[2 * i] = test_uniform(&s, 0, 1);
+            ctl[2 * i + 1] = test_uniform(&s, 0, 1);
+        }
+        assert_int_equal(pds_curve_flatten(ctl, n, tol, 4096, PDS_MAX_VERTICES, &pts, &np), 0);
+        for (i = 0; i < n; i++)
+            for (k = 0; k <= 200; k++) {
+                const double *p0 = ctl + 2 * ((i + n - 1) % n), *p1 = ctl + 2 * i;
+                const double *p2 = ctl + 2 * ((i + 1) % n), *p3 = ctl + 2 * ((i + 2) % n);
+                double u = k / 200.0, a = 1 - u;
+                double b0 = a * a * a / 6, b1 = (3 * u * u * u - 6 * u * u + 4) / 6;
+                double b2 = (-3 * u * u * u + 3 * u * u + 3 * u + 1) / 6, b3 = u * u * u / 6;
+                double x = b0 * p0[0] + b1 * p1[0] + b2 * p2[0] + b3 * p3[0];
+                double y = b0 * p0[1] + b1 * p1[1] + b2 * p2[1] + b3 * p3[1];
+                worst = fmax(worst, dist_to_polyline(pts, np, x, y));
+            }
+        if (worst > tol)
+            fail_msg("curve %d: deviation %g above tolerance %g", t, worst, tol);
+        mem_free(pts);
+    }
+}
+
+/* pds_curve_simple against an all-pairs check on random polygons. */
+static int seg_touch_ref(const double *a, const double *b, const double *c, const double *d)
+{
+    double d1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    double d2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    double d3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
+    double d4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
+    return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+static void test_pds_curve_simple_matches_all_pairs(void **state)
+{
+    uint64_t s = test_seed("test_pds_curve_simple_matches_all_pairs");
+    int t, simple_seen = 0, crossing_seen = 0;
+    (void)state;
+    for (t = 0; t < 400; t++) {
+        double pts[2 * 16];
+        size_t n = 3 + test_rand(&s) % 10, i, j, ea, eb;
+        int want = 1, got;
+        /* Random points (in general position): mostly self-crossing; a
+         * sorted-angle star now and then for simple ones. */
+        for (i = 0; i < n; i++) {
+            double ang = t % 3 ? test_uniform(&s, 0, 2 * M_PI) : 2 * M_PI * (i + test_uniform(&s, 0.1, 0.9)) / n;
+            double r = test_uniform(&s, 0.1, 0.5);
+            pts[2 * i] = 0.5 + r * cos(ang);
+            pts[2 * i + 1] = 0.5 + r * sin(ang);
+        }
+        for (i = 0; i < n && want; i++)
+            for (j = i + 2; j < n && want; j++) {
+                if (i == 0 && j == n - 1)
+                    continue;   /* adjacent through the closing edge */
+                if (seg_touch_ref(pts + 2 * i, pts + 2 * ((i + 1) % n), pts + 2 * j, pts + 2 * ((j + 1) % n)))
+                    want = 0;
+            }
+        got = pds_curve_simple(pts, n, &ea, &eb);
+        if (got != want)
+            fail_msg("polygon %d with %zu vertices: simple says %d, all pairs %d", t, n, got, want);
+        if (!got)
+            assert_true(seg_touch_ref(pts + 2 * ea, pts + 2 * ((ea + 1) % n), pts + 2 * eb, pts + 2 * ((eb + 1) % n)));
+        simple_seen += want;
+        crossing_seen += !want;
+    }
+    assert_true(simple_seen > 50 && crossing_seen > 50);
+}
+
 /* ---- q16 stays in range --------------------------------------------------- */
 
 static void test_pds_q16_counts_no_overflow(void **state)
@@ -1472,6 +1566,8 @@ int main(void)
         cmocka_unit_test(test_pds_mosaic_matches_brute_force),
         cmocka_unit_test(test_pds_curves_match_reference),
         cmocka_unit_test(test_pds_curves_bspline_circle),
+        cmocka_unit_test(test_pds_curve_flatten_within_tolerance),
+        cmocka_unit_test(test_pds_curve_simple_matches_all_pairs),
         cmocka_unit_test(test_pds_curves_boundary_closed),
         cmocka_unit_test(test_pds_q16_counts_no_overflow),
         cmocka_unit_test(test_pds_errors_exact_text),
