@@ -201,7 +201,8 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
     q.steps = 0;
     nearest(&q, 0, m->n, 0);
     if (m->mortar > NUM_ZERO) {
-        q.reach2 = pds_wide_reach2(q.best, m->mortar);
+        const seed *b = &m->s[q.bi];
+        q.reach2 = pds_wide_reach2(q.best, m->mortar, num_add(num_abs(num_sub(b->u, u)), num_abs(num_sub(b->v, v))));
         if (band(&q, 0, m->n, 0)) {
             *steps += q.steps;
             return m->mortar_attr;

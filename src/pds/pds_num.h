@@ -132,15 +132,17 @@ static inline int pds_wide_band(pds_wide diff, num mortar, pds_wide sep2)
 #endif
 }
 
-/* A squared radius covering d_1 + mortar, where best = d_1^2. q16 uses the
- * bound (a + b)^2 <= 2 (a^2 + b^2), which needs no square root; the other
- * modes take the root and add a few units for its rounding. */
-static inline pds_wide pds_wide_reach2(pds_wide best, num mortar)
+/* A squared radius covering d_1 + mortar, where best = d_1^2 and l1 >= d_1
+ * (the L1 length of the same offset). q16 uses (d_1 + m)^2 <= best +
+ * 2 m l1 + m^2, exact in Q32.32 with no square root; the other modes take
+ * the root and add a few units for its rounding. */
+static inline pds_wide pds_wide_reach2(pds_wide best, num mortar, num l1)
 {
 #if defined(NUM_MODE_q16)
-    return 2 * (best + (int64_t)mortar * mortar);
+    return best + 2 * (int64_t)mortar * l1 + (int64_t)mortar * mortar;
 #else
     num r = num_add(num_add(num_sqrt(best), mortar), 4 * NUM_ULP);
+    (void)l1;
     return num_mul(r, r);
 #endif
 }
