@@ -87,7 +87,8 @@ long pds_cpg_polygon(pds_def *d, const double *uv, size_t nvert, int32_t attr, s
     i = cpg_push(d, PDS_CPG_POLYGON, attr, loc);
     if (i < 0)
         return -1;
-    memcpy(c->pts + 2 * c->npts, uv, nvert * 2 * sizeof *uv);
+    if (nvert)
+        memcpy(c->pts + 2 * c->npts, uv, nvert * 2 * sizeof *uv);
     c->nodes[i].first = c->npts;
     c->nodes[i].count = nvert;
     c->npts += nvert;
