@@ -1237,6 +1237,10 @@ static void test_pds_errors_exact_text(void **state)
     expect_error(&d, "bad.deck:4:10: error: polygon needs at least 3 vertices, got 2");
     pds_def_free(&d);
     pds_def_init(&d, PDS_CPG, at(3, 1));
+    pds_cpg_polygon(&d, NULL, 0, 1, at(4, 11));
+    expect_error(&d, "bad.deck:4:11: error: polygon needs at least 3 vertices, got 0");
+    pds_def_free(&d);
+    pds_def_init(&d, PDS_CPG, at(3, 1));
     pds_cpg_polygon(&d, flat, 3, 1, at(5, 7));
     expect_error(&d, "bad.deck:5:7: error: polygon encloses no area");
     pds_def_free(&d);
