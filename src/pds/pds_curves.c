@@ -1,0 +1,79 @@
+/* pds_curves — regions bounded by closed curves (modal): closed polylines
+ * or uniform cubic closed B-splines flattened at the definition's tolerance
+ * (pds_curve.c), each compiled to a pds_ring with its strip tree. Curves
+ * are tried in definition order and the first one containing the point
+ * (boundary included) gives the id, so a curve nested inside another is
+ * listed before it. */
+#include "pds/pds_kind.h"
+#include "pds/pds_num.h"
+#include "pds/pds_ring.h"
+#include "util/mem.h"
+
+typedef struct curves {
+    NS(pds_ring) *rings;
+    int32_t *attr;
+    size_t n;
+} curves;
+
+static void release(void *impl)
+{
+    curves *c = impl;
+    size_t i;
+    if (!c)
+        return;
+    for (i = 0; i < c->n && c->rings; i++)
+        NS(pds_ring_free)(&c->rings[i]);
+    mem_free(c->rings);
+    mem_free(c->attr);
+    mem_free(c);
+}
+
+static int compile(const pds_def *def, const char *file, void **out, diag *err)
+{
+    const pds_curves *d = &def->curves;
+    curves *c = mem_calloc(1, sizeof *c);
+    size_t i;
+    if (!c || !(c->rings = mem_calloc(d->ncurves, sizeof *c->rings)) ||
+        !(c->attr = mem_calloc(d->ncurves, sizeof *c->attr)))
+        goto oom;
+    c->n = d->ncurves;
+    for (i = 0; i < d->ncurves; i++) {
+        double *pts;
+        size_t n;
+        int owned, rc = pds_curves_ring(d, i, &pts, &n, &owned);
+        if (rc)
+            goto oom;       /* -1 cannot happen: the check flattened it already */
+        rc = NS(pds_ring_build)(&c->rings[i], pts, n);
+        if (owned)
+            mem_free(pts);
+        if (rc)
+            goto oom;
+        c->attr[i] = d->curves[i].attr;
+    }
+    *out = c;
+    return 0;
+oom:
+    release(c);
+    return NS(pds_oom)(def, file, err);
+}
+
+static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+{
+    const curves *c = impl;
+    size_t i;
+    for (i = 0; i < c->n; i++)
+        if (NS(pds_ring_inside)(&c->rings[i], u, v, steps))
+            return c->attr[i];
+    return PDS_NONE;
+}
+
+static size_t bytes(const void *impl)
+{
+    const curves *c = impl;
+    size_t s = sizeof *c + c->n * (sizeof *c->rings + sizeof *c->attr), i;
+    for (i = 0; i < c->n; i++)
+        s += (c->rings[i].n + 1) * 2 * sizeof(num) + c->rings[i].nnodes * sizeof *c->rings[i].nodes;
+    return s;
+}
+
+const NS(pds_kind_ops) NS(pds_curves_ops) = { "curves", compile, locate, bytes, release };

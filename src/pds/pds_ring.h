@@ -1,0 +1,42 @@
+/* pds_ring — a closed polyline compiled for point membership: vertices in
+ * the mode's numbers and a strip tree over its edges (modal; used by CPG
+ * polygons and by curve-bounded regions).
+ *
+ * Strip tree: each node covers the chain of edges from vertex i0 to i1 and
+ * holds the chain's bounding box. The chain is split at the vertex farthest
+ * from the chord i0-i1 (Ballard's rule), restricted to the middle half of the
+ * chain so the depth stays O(log n). Membership counts crossings of the
+ * half-line from (u,v) towards +u: a subtree whose box misses the line
+ * contributes nothing, and one whose box lies wholly right of the point
+ * contributes exactly [end vertices on opposite sides of the line], so only
+ * nodes whose boxes straddle the point are opened. (Chord-aligned strips
+ * as in Ballard's paper were measured slower here; docs/pds.md.) */
+#ifndef PDS_RING_H
+#define PDS_RING_H
+#include <stddef.h>
+#include <stdint.h>
+#include "num/num.h"
+
+#define PDS_RING_LEAF 8    /* edges per leaf, tested directly */
+
+typedef struct NS(pds_ring_node) {
+    num box[4];                 /* u0 v0 u1 v1 of the chain */
+    uint32_t i0, i1;            /* vertex range */
+    uint32_t left, right;       /* children; left == 0 for a leaf */
+} NS(pds_ring_node);
+
+typedef struct NS(pds_ring) {
+    num *uv;                    /* n + 1 vertices (the first repeated last) */
+    size_t n;
+    NS(pds_ring_node) *nodes;   /* nodes[0] is the root */
+    size_t nnodes;
+} NS(pds_ring);
+
+/* Compiles the closed polyline pts[2*n] (double, rounded with num_from_d).
+ * Returns 0, or -1 when memory runs out (then *r is zeroed). */
+int NS(pds_ring_build)(NS(pds_ring) *r, const double *pts, size_t n);
+void NS(pds_ring_free)(NS(pds_ring) *r);
+
+/* 1 if (u,v) lies inside or on the ring, else 0; adds visited nodes to *steps. */
+int NS(pds_ring_inside)(const NS(pds_ring) *r, num u, num v, unsigned long *steps);
+#endif
