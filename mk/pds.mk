@@ -1,6 +1,4 @@
 # PDS lookup-rate bench (bench/pds_bench.c): `make pds-bench`.
-# Keeps `all` the default goal even though this fragment defines a rule.
-.DEFAULT_GOAL := all
 PDS_BENCH := $(BUILD)/pds_bench
 
 $(PDS_BENCH): bench/pds_bench.c $(LIB)
