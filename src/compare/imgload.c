@@ -3,7 +3,9 @@
 #include "image/pnm.h"
 #include "util/mem.h"
 #include "util/outfile.h"
+#include <errno.h>
 #include <string.h>
+#include <sys/stat.h>
 
 int imgload_memory(const char *name, const void *data, size_t len, image *out, diag *err)
 {
@@ -22,6 +24,13 @@ int imgload_read(const char *path, image *out, diag *err)
     char *data;
     size_t len;
     int rc;
+    struct stat st;
+    /* a missing or wrong input is bad input (exit 1), not an I/O failure */
+    if (stat(path, &st) != 0)
+        return diag_at(err, errno == ENOENT || errno == ENOTDIR ? DIAG_INPUT : DIAG_IO, path, 0, 0,
+                       "cannot open: %s", strerror(errno));
+    if (S_ISDIR(st.st_mode))
+        return diag_at(err, DIAG_INPUT, path, 0, 0, "is a directory, not a picture");
     if (infile_read_all(path, IMGLOAD_MAX_BYTES, &data, &len, err))
         return err->status;
     rc = imgload_memory(path, data, len, out, err);

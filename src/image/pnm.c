@@ -144,7 +144,7 @@ int pnm_read_memory(const char *name, const void *data, size_t len, int channels
             return diag_offset(err, DIAG_INPUT, name, (long long)c.len,
                                "raster truncated: %zu bytes present, %zu needed",
                                c.len - c.pos, samples * (size_t)bps);
-    } else if (samples > (c.len - c.pos + 1) / 2) {
+    } else if (pnm_skip(&c), samples > (c.len - c.pos + 1) / 2) {
         /* every plain sample takes a digit and a separator */
         return diag_at(err, DIAG_INPUT, name, c.line, c.col,
                        "raster truncated: %zu samples cannot fit in %zu bytes", samples, c.len - c.pos);
