@@ -11,6 +11,7 @@
 #define ALIGN_SCALE_STEP 1.06
 #define ALIGN_ANGLE_STEP 8.0       /* coarse angles: multiples of this within the range */
 #define ALIGN_INVALID (-2.0)
+#define ALIGN_DROP 0.6            /* finer level refused below this share of the score */
 #define ALIGN_BORDER 3.0           /* level pixels left out along the test's border */
 
 /* Edge-map pyramid: lv[k] has 2^-k the resolution of the picture. */
@@ -22,6 +23,7 @@ typedef struct align_pyr {
 typedef struct align_ctx {
     align_pyr r, t;
     int rw, rh, tw, th;
+    double ref_blur;
 } align_ctx;
 
 typedef struct align_cand {
@@ -102,7 +104,7 @@ static double align_eval(const align_ctx *c, const warp_params *p, int l)
     /* Leave out a band along the test's border: where the test ends, the
      * reference often has an edge of its own (a render against paper) that
      * the test cannot show, and keeping it would pull the scale inwards. */
-    bt = ALIGN_BORDER * f / p->scale;
+    bt = (ALIGN_BORDER * f + 3.0 * c->ref_blur) / p->scale;
     for (q = 0; q < 4; q++) {
         double xr, yr;
         warp_to_ref(p, (q & 1) ? c->tw : 0, (q & 2) ? c->th : 0, &xr, &yr);
@@ -221,7 +223,7 @@ static int align_coarse(const align_ctx *c, const align_opts *o, align_cand *kee
             k = k < 0 ? 0 : k >= c->t.n ? c->t.n - 1 : k;
             ft = &c->t.lv[k];
             g = ldexp(1.0, k);
-            bt = ALIGN_BORDER * f / p.scale;
+            bt = (ALIGN_BORDER * f + 3.0 * c->ref_blur) / p.scale;
             for (q = 0; q < 4; q++) {
                 double xr, yr;
                 warp_to_ref(&p, (q & 1) ? c->tw : 0, (q & 2) ? c->th : 0, &xr, &yr);
@@ -392,6 +394,7 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
     c.rh = ref->h;
     c.tw = test->w;
     c.th = test->h;
+    c.ref_blur = o->ref_blur > 0 ? o->ref_blur : 0;
     if (align_pyr_build(ref, &c.r))
         return -1;
     if (align_pyr_build(test, &c.t)) {
@@ -404,19 +407,34 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
     for (i = 0; i < n; i++)
         cand[i].level = -1;
     for (s = 0; n > 0 && s < (int)(sizeof stages / sizeof stages[0]); s++) {
-        int last = s + 1 == (int)(sizeof stages / sizeof stages[0]);
+        align_cand prev[ALIGN_KEEP];
+        int changed = 0;
+        memcpy(prev, cand, (size_t)n * sizeof cand[0]);
         for (i = 0; i < n; i++) {
             int l = align_level(&c, cand[i].p.scale, stages[s]);
-            if (l != cand[i].level || last)
-                align_refine(&c, o, &cand[i], l, last ? 1.0 / 64 : 0.25);
+            if (l != cand[i].level) {
+                align_refine(&c, o, &cand[i], l, 0.25);
+                changed = 1;
+            }
             cand[i].level = l;
         }
         qsort(cand, (size_t)n, sizeof cand[0], align_cand_cmp);
+        /* A level where the correlation collapses is dominated by detail
+         * the other picture lacks (halftone dots, grain): stop at the level
+         * before it. */
+        if (changed && s > 0 && cand[0].score < ALIGN_DROP * prev[0].score) {
+            cand[0] = prev[0];
+            break;
+        }
+        /* Candidates are ranked once, at the first fine level, where each
+         * is seen at the same size (about 64 pixels); after that only the
+         * best is refined. */
         while (n > 1 && cand[n - 1].score <= ALIGN_INVALID)
             n--;
-        if (!last && n > 1)
-            n = (n + 1) / 2;
+        n = n > 0 ? 1 : 0;
     }
+    if (n > 0 && cand[0].score > ALIGN_INVALID)
+        align_refine(&c, o, &cand[0], cand[0].level, 1.0 / 64);
     if (n > 0 && cand[0].score > ALIGN_INVALID) {
         out->p = cand[0].p;
         out->score = cand[0].score;

@@ -12,13 +12,17 @@
  *     of at most 5 degrees) and shift (one pixel of a level where the smaller
  *     picture is about 32 pixels across); the best local maxima (8, mutually
  *     distinct) are kept.
- *  2. Fine: each candidate is refined by a pattern search in (log scale, dx,
- *     dy, angle) at levels where the smaller picture is about 64, 128, 256
- *     and 512 pixels across (never finer than full resolution), keeping the
- *     better half of the candidates after each level; the last search ends
- *     at 1/64 pixel steps. Test pixels are read from the test pyramid level
- *     nearest to the reference level's pixel size, so the test is never
- *     sampled with aliasing.
+ *  2. Fine: each candidate is refined by a pattern search in (log scale,
+ *     position of the test's centre, angle) at the level where the smaller
+ *     picture is about 64 pixels across, and the best one is then refined
+ *     at levels where it is about 128, 256 and 512 pixels across (never
+ *     finer than full resolution). If the correlation at a level falls
+ *     under 0.6 of the previous level's, that level is dominated by detail
+ *     only one picture has (halftone dots, grain) and the search stops at
+ *     the previous level. A last search there goes down to 1/64 pixel
+ *     steps. Test pixels are read from the test pyramid level nearest to
+ *     the reference level's pixel size, so the test is never sampled with
+ *     aliasing.
  * A direct search was chosen over FFT phase correlation: it needs no extra
  * library, it searches scale and angle directly instead of through a
  * log-polar spectrum (which halftone screens and margins disturb), and the
@@ -30,6 +34,9 @@
 typedef struct align_opts {
     double scale_min, scale_max;   /* reference px per test px; 0 < min <= max */
     double max_angle;              /* degrees, 0..45; angles in [-max, max] */
+    double ref_blur;               /* Gaussian sigma already applied to the
+                                    * reference (reference px); widens the band
+                                    * along the test's border that is ignored */
 } align_opts;
 
 #define ALIGN_SCALE_MIN_DEFAULT 0.25

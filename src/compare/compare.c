@@ -111,6 +111,7 @@ static int compare_register(const char *ref_name, const compare_opts *o, int nch
                             compare_result *res, diag *err)
 {
     align_result ar;
+    align_opts ao;
     plane rl;
     int rc, c;
     if (nch == 1 ? plane_copy(&w->r[0], &rl) : compare_luma(w->r, &rl))
@@ -119,7 +120,9 @@ static int compare_register(const char *ref_name, const compare_opts *o, int nch
         plane_free(&rl);
         return compare_oom(err);
     }
-    rc = align_find(&rl, nch == 1 ? &w->t[0] : &w->tl, &o->align, &ar);
+    ao = o->align;
+    ao.ref_blur = o->descreen;
+    rc = align_find(&rl, nch == 1 ? &w->t[0] : &w->tl, &ao, &ar);
     plane_free(&rl);
     plane_free(&w->tl);
     if (rc < 0)

@@ -97,4 +97,18 @@ static int synth_scan(int which, int size, const warp_params *p, int w, int h, d
         }
     return 0;
 }
+
+/* Prints a grey scan with a 45-degree dot screen of the given period in
+ * pixels: each pixel becomes ink (20) or paper (235), as in a print. */
+static void synth_halftone(image *scan, double period)
+{
+    int x, y;
+    double k = 3.14159265358979323846 / (period * 1.4142135623730951);
+    for (y = 0; y < scan->height; y++)
+        for (x = 0; x < scan->width; x++) {
+            uint8_t *p = &scan->px[(size_t)y * scan->width + x];
+            double screen = 127.5 + 63.75 * (cos((x + y) * k) + cos((x - y) * k));
+            *p = *p > screen ? 235 : 20;
+        }
+}
 #endif
