@@ -246,9 +246,9 @@ int compare_files(const char *ref_path, const char *test_path, const compare_opt
 {
     image ref, test;
     int rc;
-    if (imgload_read(ref_path, &ref, err))
+    if (imgload_read(ref_path, COMPARE_MAX_READ_PIXELS, &ref, err))
         return err->status;
-    if (imgload_read(test_path, &test, err)) {
+    if (imgload_read(test_path, COMPARE_MAX_READ_PIXELS, &test, err)) {
         image_free(&ref);
         return err->status;
     }

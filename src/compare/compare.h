@@ -9,6 +9,7 @@
 #define COMPARE_H
 #include "compare/align.h"
 
+#define COMPARE_MAX_READ_PIXELS ((size_t)64 << 20)  /* per file read */
 #define COMPARE_MAX_PIXELS (16u << 20)   /* per picture after cropping */
 #define COMPARE_THRESHOLD_DEFAULT 8.0
 #define COMPARE_DESCREEN_MAX 50.0

@@ -7,10 +7,11 @@
 
 #define IMGLOAD_MAX_BYTES ((size_t)1 << 30)
 
-/* 0, DIAG_INPUT (missing file, directory, not a picture, corrupt, too
+/* Pictures over max_pixels are refused from their header, before decoding.
+ * 0, DIAG_INPUT (missing file, directory, not a picture, corrupt, too
  * large) or DIAG_IO (unreadable, out of memory); out written only on
  * success. */
-int imgload_read(const char *path, image *out, diag *err);
+int imgload_read(const char *path, size_t max_pixels, image *out, diag *err);
 /* The same for a file already in memory; name is used in diagnostics. */
-int imgload_memory(const char *name, const void *data, size_t len, image *out, diag *err);
+int imgload_memory(const char *name, const void *data, size_t len, size_t max_pixels, image *out, diag *err);
 #endif

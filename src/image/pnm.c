@@ -91,39 +91,28 @@ static void pnm_store(uint8_t *dst, int channels, int in_channels, const unsigne
     }
 }
 
-int pnm_read_memory(const char *name, const void *data, size_t len, int channels,
-                    image *out, diag *err)
+/* Parses the header up to the end of maxval; c is left just after it. */
+static int pnm_parse_header(pnm_cur *c, pnm_info *info)
 {
-    pnm_cur c;
     unsigned long w, h, maxval;
-    int kind, in_ch, binary, bps;
-    size_t samples, i;
-    image img;
-    if (channels != 1 && channels != 3)
-        return diag_at(err, DIAG_USAGE, name, 0, 0, "internal: bad channel count");
-    c.p = data;
-    c.len = len;
-    c.pos = 0;
-    c.line = c.col = 1;
-    c.name = name;
-    c.err = err;
-    if (len == 0)
+    int kind;
+    const char *name = c->name;
+    diag *err = c->err;
+    if (c->len == 0)
         return diag_at(err, DIAG_INPUT, name, 0, 0, "empty file");
-    if (!pnm_sniff(data, len))
+    if (!pnm_sniff(c->p, c->len))
         return diag_at(err, DIAG_INPUT, name, 1, 1, "not a PNM file (no P2, P3, P5 or P6 magic)");
-    kind = c.p[1] - '0';
+    kind = c->p[1] - '0';
     if (kind == 1 || kind == 4)
         return diag_at(err, DIAG_INPUT, name, 1, 1, "PBM bitmaps (P%d) are not supported; use P2, P3, P5 or P6", kind);
     if (kind == 7)
         return diag_at(err, DIAG_INPUT, name, 1, 1, "PAM (P7) is not supported; use P2, P3, P5 or P6");
-    pnm_advance(&c);
-    pnm_advance(&c);
-    if (c.pos < c.len && !pnm_space(c.p[c.pos]) && c.p[c.pos] != '#')
-        return diag_at(err, DIAG_INPUT, name, c.line, c.col, "junk after the magic number");
-    in_ch = (kind == 3 || kind == 6) ? 3 : 1;
-    binary = kind >= 5;
-    if (pnm_number(&c, "width", IMAGE_MAX_SIDE, &w) || pnm_number(&c, "height", IMAGE_MAX_SIDE, &h) ||
-        pnm_number(&c, "maxval", 65535, &maxval))
+    pnm_advance(c);
+    pnm_advance(c);
+    if (c->pos < c->len && !pnm_space(c->p[c->pos]) && c->p[c->pos] != '#')
+        return diag_at(err, DIAG_INPUT, name, c->line, c->col, "junk after the magic number");
+    if (pnm_number(c, "width", IMAGE_MAX_SIDE, &w) || pnm_number(c, "height", IMAGE_MAX_SIDE, &h) ||
+        pnm_number(c, "maxval", 65535, &maxval))
         return err->status;
     if (w == 0 || h == 0)
         return diag_at(err, DIAG_INPUT, name, 0, 0, "image size %lux%lu is empty", w, h);
@@ -131,6 +120,53 @@ int pnm_read_memory(const char *name, const void *data, size_t len, int channels
         return diag_at(err, DIAG_INPUT, name, 0, 0, "maxval is 0 (1..65535 allowed)");
     if ((size_t)w * h > IMAGE_MAX_PIXELS)
         return diag_at(err, DIAG_INPUT, name, 0, 0, "image size %lux%lu is over %u pixels", w, h, IMAGE_MAX_PIXELS);
+    info->kind = kind;
+    info->width = (int)w;
+    info->height = (int)h;
+    info->maxval = (unsigned)maxval;
+    return 0;
+}
+
+static void pnm_cur_init(pnm_cur *c, const char *name, const void *data, size_t len, diag *err)
+{
+    c->p = data;
+    c->len = len;
+    c->pos = 0;
+    c->line = c->col = 1;
+    c->name = name;
+    c->err = err;
+}
+
+int pnm_read_header(const char *name, const void *data, size_t len, pnm_info *info, diag *err)
+{
+    pnm_cur c;
+    pnm_info i;
+    pnm_cur_init(&c, name, data, len, err);
+    if (pnm_parse_header(&c, &i))
+        return err->status;
+    *info = i;
+    return 0;
+}
+
+int pnm_read_memory(const char *name, const void *data, size_t len, int channels,
+                    image *out, diag *err)
+{
+    pnm_cur c;
+    pnm_info info;
+    unsigned long w, h, maxval;
+    int in_ch, binary, bps;
+    size_t samples, i;
+    image img;
+    if (channels != 1 && channels != 3)
+        return diag_at(err, DIAG_USAGE, name, 0, 0, "internal: bad channel count");
+    pnm_cur_init(&c, name, data, len, err);
+    if (pnm_parse_header(&c, &info))
+        return err->status;
+    w = (unsigned long)info.width;
+    h = (unsigned long)info.height;
+    maxval = info.maxval;
+    in_ch = (info.kind == 3 || info.kind == 6) ? 3 : 1;
+    binary = info.kind >= 5;
     samples = (size_t)w * h * (size_t)in_ch;
     bps = maxval > 255 ? 2 : 1;
     if (binary) {

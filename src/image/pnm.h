@@ -13,6 +13,16 @@
 /* 1 if data starts like a PNM file ('P' and a digit). */
 int pnm_sniff(const void *data, size_t len);
 
+typedef struct pnm_info {
+    int kind;                 /* 2, 3, 5 or 6 (the digit of the magic) */
+    int width, height;        /* 1..IMAGE_MAX_SIDE, product <= IMAGE_MAX_PIXELS */
+    unsigned maxval;          /* 1..65535 */
+} pnm_info;
+
+/* Checks and reads just the header (magic, size, maxval), so callers can
+ * refuse a picture before decoding it. 0 or DIAG_INPUT. */
+int pnm_read_header(const char *name, const void *data, size_t len, pnm_info *info, diag *err);
+
 /* Decodes a PNM file held in memory into `out` with `channels` (1 or 3)
  * 8-bit channels: grey is replicated to RGB; RGB becomes grey through the
  * Rec. 601 luma weights (0.299, 0.587, 0.114) on the 8-bit values.

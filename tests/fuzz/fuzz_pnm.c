@@ -17,7 +17,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (pnm_read_memory("fuzz", data, size, channels, &img, &err) == 0)
         image_free(&img);
     diag_init(&err);
-    if (imgload_memory("fuzz", data, size, &img, &err) == 0)
+    if (imgload_memory("fuzz", data, size, (size_t)1 << 20, &img, &err) == 0)
         image_free(&img);
     return 0;
 }

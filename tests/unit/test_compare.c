@@ -477,17 +477,31 @@ static void test_compare_input_errors(void **state)
         image_free(&d);
     }
     diag_init(&err);
-    assert_int_equal(imgload_memory("x.png", junk, sizeof junk - 1, &b, &err), DIAG_INPUT);
+    assert_int_equal(imgload_memory("x.png", junk, sizeof junk - 1, 1000, &b, &err), DIAG_INPUT);
     diag_format(&err, buf, sizeof buf);
     assert_string_equal(buf, "x.png: error: not a PNG or PNM image");
     diag_init(&err);
-    assert_int_equal(imgload_memory("x.png", "\x89PNG\r\n\x1a\n\0\0", 10, &b, &err), DIAG_INPUT);
+    assert_int_equal(imgload_memory("x.png", "\x89PNG\r\n\x1a\n\0\0", 10, 1000, &b, &err), DIAG_INPUT);
     diag_format(&err, buf, sizeof buf);
     assert_true(!strncmp(buf, "x.png: error: not a readable PNG", 32));
     diag_init(&err);
-    assert_int_equal(imgload_read("/nonexistent/ref.png", &b, &err), DIAG_INPUT);
+    assert_int_equal(imgload_read("/nonexistent/ref.png", 1000, &b, &err), DIAG_INPUT);
     diag_format(&err, buf, sizeof buf);
     assert_string_equal(buf, "/nonexistent/ref.png: error: cannot open: No such file or directory");
+    /* too large for the limit: refused from the header */
+    {
+        static const char big[] = "P5 40 30 255\n";
+        static const unsigned char png[24] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13,
+                                              'I', 'H', 'D', 'R', 0, 0, 1, 0, 0, 0, 0, 200};
+        diag_init(&err);
+        assert_int_equal(imgload_memory("big.pgm", big, sizeof big - 1, 1000, &b, &err), DIAG_INPUT);
+        diag_format(&err, buf, sizeof buf);
+        assert_string_equal(buf, "big.pgm: error: 40x30 pixels is over the 1000 this command reads; scale it down");
+        diag_init(&err);
+        assert_int_equal(imgload_memory("big.png", png, sizeof png, 50000, &b, &err), DIAG_INPUT);
+        diag_format(&err, buf, sizeof buf);
+        assert_string_equal(buf, "big.png: error: 256x200 pixels is over the 50000 this command reads; scale it down");
+    }
     image_free(&a);
     image_free(&b);
 }
