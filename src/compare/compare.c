@@ -4,6 +4,7 @@
 #include "compare/imgload.h"
 #include "compare/metrics.h"
 #include "compare/ssim.h"
+#include <math.h>
 #include <string.h>
 
 void compare_opts_init(compare_opts *o)
@@ -105,9 +106,19 @@ static int compare_check(const char *ref_name, const image *ref, const char *tes
     return 0;
 }
 
+/* 1 when the plane is one flat tone (nothing to register on). */
+static int compare_flat(const plane *p)
+{
+    size_t i, n = (size_t)p->w * (size_t)p->h;
+    for (i = 1; i < n; i++)
+        if (fabsf(p->v[i] - p->v[0]) >= 1.0f)
+            return 0;
+    return 1;
+}
+
 /* Registers the test planes onto the reference frame: w->t is replaced by
  * the resampled test and w->mask marks the covered pixels. */
-static int compare_register(const char *ref_name, const compare_opts *o, int nch, compare_work *w,
+static int compare_register(const char *ref_name, const char *test_name, const compare_opts *o, int nch, compare_work *w,
                             compare_result *res, diag *err)
 {
     align_result ar;
@@ -119,6 +130,13 @@ static int compare_register(const char *ref_name, const compare_opts *o, int nch
     if ((nch == 3 && compare_luma(w->t, &w->tl)) || plane_blur(&rl, o->descreen)) {
         plane_free(&rl);
         return compare_oom(err);
+    }
+    if (compare_flat(&rl) || compare_flat(nch == 1 ? &w->t[0] : &w->tl)) {
+        int ref_flat = compare_flat(&rl);
+        plane_free(&rl);
+        plane_free(&w->tl);
+        return diag_at(err, DIAG_INPUT, ref_flat ? ref_name : test_name, 0, 0,
+                       "the picture is one flat tone: there is nothing to register on");
     }
     ao = o->align;
     ao.ref_blur = o->descreen;
@@ -188,7 +206,7 @@ int compare_images(const char *ref_name, const image *ref, const char *test_name
             goto done;
         }
     if (o->do_register) {
-        if ((rc = compare_register(ref_name, o, nch, &w, &res, err)))
+        if ((rc = compare_register(ref_name, test_name, o, nch, &w, &res, err)))
             goto done;
     } else {
         if (plane_alloc(&w.mask, fw, fh)) {

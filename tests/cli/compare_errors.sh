@@ -22,6 +22,8 @@ i=0; while [ $i -lt 156 ]; do printf '%d\n' $((i % 7)); i=$((i + 1)); done >> "$
 printf 'hello\n' > "$t/text.png"
 printf 'P5\n0 12\n255\n' > "$t/zero.pgm"
 printf 'P5\n4 4\n255\nxx' > "$t/short.pgm"
+printf 'P2\n12 12\n255\n' > "$t/flat.pgm"
+i=0; while [ $i -lt 144 ]; do printf '7\n'; i=$((i + 1)); done >> "$t/flat.pgm"
 
 "$MAPRT" compare "$t/a.pgm" "$t/a.pgm" > /dev/null || fail "a good pair failed"
 expect 1 "maprt: $t/missing.png: error: cannot open: No such file or directory" "$t/missing.png" "$t/a.pgm"
@@ -32,6 +34,7 @@ expect 1 "maprt: $t/zero.pgm: error: image size 0x12 is empty" "$t/zero.pgm" "$t
 expect 1 "maprt: $t/short.pgm: offset 13: error: raster truncated: 2 bytes present, 16 needed" "$t/short.pgm" "$t/a.pgm"
 expect 1 "maprt: $t: error: is a directory, not a picture" "$t" "$t/a.pgm"
 expect 1 "maprt: $t/b.pgm: error: size 13x12 differs from the reference's 12x12; use --register to compare pictures of different sizes" "$t/a.pgm" "$t/b.pgm"
+expect 1 "maprt: $t/flat.pgm: error: the picture is one flat tone: there is nothing to register on" "$t/a.pgm" "$t/flat.pgm" --register
 expect 1 "maprt: $t/a.pgm: error: crop 5,5,10,10 is not inside the 12x12 reference" "$t/a.pgm" "$t/a.pgm" --crop 5,5,10,10
 
 usage() { "$MAPRT" compare "$@" > /dev/null 2>&1; [ $? = 2 ] || fail "compare $*: not a usage error"; }
