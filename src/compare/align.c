@@ -84,27 +84,30 @@ static int align_level(const align_ctx *c, double scale, double target)
 }
 
 /* NCC of the reference edge map at level l with the test edge map pulled
- * back through p, over the reference pixels the test covers. Returns
- * ALIGN_INVALID when the overlap is under ALIGN_MIN_OVERLAP of the smaller
- * picture or either side is flat. */
+ * back through p, over the reference pixels the test covers, minus the
+ * border bands. Returns ALIGN_INVALID when the overlap is under
+ * ALIGN_MIN_OVERLAP (or what the bands leave under ALIGN_MIN_USED) of the
+ * smaller picture, or either side is flat. */
 static double align_eval(const align_ctx *c, const warp_params *p, int l)
 {
     const plane *fr = &c->r.lv[l], *ft;
     double f = ldexp(1.0, l), g, a = p->angle * 3.14159265358979323846 / 180.0;
     double cs = cos(a) / p->scale, sn = sin(a) / p->scale;
     double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0, minx = 1e300, maxx = -1e300, miny = 1e300,
-           maxy = -1e300, area, va, vb, bt;
-    int k = (int)floor(log2(f / p->scale) + 0.5), i, j, i0, i1, j0, j1, q;
+           maxy = -1e300, area, va, vb, bt, ncov = 0;
+    int k = (int)floor(log2(f / p->scale) + 0.5), i, j, i0, i1, j0, j1, q, br;
     if (k < 0)
         k = 0;
     if (k >= c->t.n)
         k = c->t.n - 1;
     ft = &c->t.lv[k];
     g = ldexp(1.0, k);
-    /* Leave out a band along the test's border: where the test ends, the
-     * reference often has an edge of its own (a render against paper) that
-     * the test cannot show, and keeping it would pull the scale inwards. */
+    /* Leave out a band along each picture's border: where one picture
+     * ends, the other often has an edge of its own (a render against the
+     * paper of a scan) that the first cannot show, and keeping it would
+     * pull the scale inwards. The overlap rule still counts the band. */
     bt = (ALIGN_BORDER * f + 3.0 * c->ref_blur) / p->scale;
+    br = (int)ALIGN_BORDER;
     for (q = 0; q < 4; q++) {
         double xr, yr;
         warp_to_ref(p, (q & 1) ? c->tw : 0, (q & 2) ? c->th : 0, &xr, &yr);
@@ -124,7 +127,11 @@ static double align_eval(const align_ctx *c, const warp_params *p, int l)
         for (i = i0; i <= i1; i++) {
             double xr = (i + 0.5) * f - p->dx;
             double xt = cs * xr - sn * yr, yt = sn * xr + cs * yr, va1, vb1;
-            if (xt < bt || yt < bt || xt >= c->tw - bt || yt >= c->th - bt)
+            if (xt < 0 || yt < 0 || xt >= c->tw || yt >= c->th)
+                continue;
+            ncov += 1;
+            if (xt < bt || yt < bt || xt >= c->tw - bt || yt >= c->th - bt || i < br || j < br ||
+                i >= fr->w - br || j >= fr->h - br)
                 continue;
             va1 = PLANE_AT(fr, i, j);
             vb1 = plane_sample(ft, xt / g, yt / g);
@@ -139,7 +146,7 @@ static double align_eval(const align_ctx *c, const warp_params *p, int l)
     area = (double)c->rw * c->rh;
     if (p->scale * p->scale * c->tw * c->th < area)
         area = p->scale * p->scale * c->tw * c->th;
-    if (n < 4 || n * f * f < ALIGN_MIN_OVERLAP * area)
+    if (n < 4 || ncov * f * f < ALIGN_MIN_OVERLAP * area || n * f * f < ALIGN_MIN_USED * area)
         return ALIGN_INVALID;
     va = saa - sa * sa / n;
     vb = sbb - sb * sb / n;
@@ -155,26 +162,31 @@ static int align_cand_cmp(const void *a, const void *b)
 }
 
 /* Scores every integer shift (in level-l pixels) of the test edge map m
- * (already scaled and turned into level-l pixels; mk marks its valid pixels)
- * over the reference edge map; grid gets the NCC for shift (D,E), D in
- * d0..d0+gw-1 and E in e0..e0+gh-1, or ALIGN_INVALID. */
+ * (already scaled and turned into level-l pixels; mk is 0 outside the test,
+ * 1 in its border band, 2 elsewhere) over the reference edge map; grid gets
+ * the NCC for shift (D,E), D in d0..d0+gw-1 and E in e0..e0+gh-1, or
+ * ALIGN_INVALID. Same rules as align_eval. */
 static void align_shifts(const align_ctx *c, int l, double area, const plane *m, const plane *mk, int d0,
                          int e0, int gw, int gh, float *grid)
 {
     const plane *fr = &c->r.lv[l];
     double f2 = ldexp(1.0, 2 * l);
-    int x, y, u, v;
+    int x, y, u, v, br = (int)ALIGN_BORDER;
     for (y = 0; y < gh; y++)
         for (x = 0; x < gw; x++) {
             int D = d0 + x, E = e0 + y;
             int u0 = -D > 0 ? -D : 0, v0 = -E > 0 ? -E : 0;
             int u1 = fr->w - D < m->w ? fr->w - D : m->w, v1 = fr->h - E < m->h ? fr->h - E : m->h;
-            double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0, va, vb;
+            double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0, ncov = 0, va, vb;
             for (v = v0; v < v1; v++) {
                 const float *rb = &PLANE_AT(fr, D + u0, E + v), *mb = &PLANE_AT(m, u0, v), *kb = &PLANE_AT(mk, u0, v);
+                int inrow = E + v >= br && E + v < fr->h - br;
                 for (u = 0; u < u1 - u0; u++) {
                     double a = rb[u], b = mb[u];
                     if (kb[u] == 0)
+                        continue;
+                    ncov += 1;
+                    if (kb[u] < 2 || !inrow || D + u0 + u < br || D + u0 + u >= fr->w - br)
                         continue;
                     sa += a;
                     sb += b;
@@ -186,7 +198,7 @@ static void align_shifts(const align_ctx *c, int l, double area, const plane *m,
             }
             va = saa - sa * sa / (n > 0 ? n : 1);
             vb = sbb - sb * sb / (n > 0 ? n : 1);
-            if (n < 4 || n * f2 < ALIGN_MIN_OVERLAP * area || !(va > 1e-9 * n) || !(vb > 1e-9 * n))
+            if (n < 4 || ncov * f2 < ALIGN_MIN_OVERLAP * area || n * f2 < ALIGN_MIN_USED * area || !(va > 1e-9 * n) || !(vb > 1e-9 * n))
                 grid[(size_t)y * gw + x] = (float)ALIGN_INVALID;
             else
                 grid[(size_t)y * gw + x] = (float)((sab - sa * sb / n) / sqrt(va * vb));
@@ -246,10 +258,11 @@ static int align_coarse(const align_ctx *c, const align_opts *o, align_cand *kee
                 for (u = 0; u < mw; u++) {
                     double xt, yt;
                     warp_to_test(&p, bx0 + (u + 0.5) * f, by0 + (v + 0.5) * f, &xt, &yt);
-                    if (xt < bt || yt < bt || xt >= c->tw - bt || yt >= c->th - bt)
+                    if (xt < 0 || yt < 0 || xt >= c->tw || yt >= c->th)
                         continue;
                     PLANE_AT(&m, u, v) = plane_sample(ft, xt / g, yt / g);
-                    PLANE_AT(&mk, u, v) = 1;
+                    /* 2: inside and clear of the border band; 1: in the band */
+                    PLANE_AT(&mk, u, v) = xt < bt || yt < bt || xt >= c->tw - bt || yt >= c->th - bt ? 1 : 2;
                 }
             /* shift (D,E) puts m's pixel (u,v) on reference pixel (u+D, v+E) */
             d0 = -mw + 1;
@@ -385,6 +398,8 @@ static void align_refine(const align_ctx *c, const align_opts *o, align_cand *ca
 
 int align_find(const plane *ref, const plane *test, const align_opts *o, align_result *out)
 {
+    /* sizes of the smaller picture at the refinement levels: all
+     * candidates are refined and ranked at the first, the best one at all */
     static const double stages[] = {64, 128, 256, 512};
     align_ctx c;
     align_cand cand[ALIGN_KEEP];
