@@ -121,8 +121,8 @@ static void test_compare_register_halftone_scan(void **state)
     o.descreen = 4.0;
     diag_init(&err);
     assert_int_equal(compare_images("scan", &scan, "render", &render, &o, &r, &err), 0);
-    printf("# found %.4f %.2f %.2f %.3f (corner error %.3f px), ssim %.3f\n", r.p.scale, r.p.dx, r.p.dy, r.p.angle,
-           corner_error(&truth, &r.p, 160, 160), r.ssim);
+    printf("# found %.4f %.2f %.2f %.3f (corner error %.3f px), ssim %.3f, score %.3f\n", r.p.scale, r.p.dx, r.p.dy,
+           r.p.angle, corner_error(&truth, &r.p, 160, 160), r.ssim, r.register_score);
     assert_true(fabs(r.p.scale / truth.scale - 1) < 0.01);
     assert_true(corner_error(&truth, &r.p, 160, 160) < 1.0);
     image_free(&render);
