@@ -171,8 +171,11 @@ static void align_shifts(const align_ctx *c, int l, double area, const plane *m,
 {
     const plane *fr = &c->r.lv[l];
     double f2 = ldexp(1.0, 2 * l);
-    int x, y, u, v, br = (int)ALIGN_BORDER;
-    for (y = 0; y < gh; y++)
+    int y, br = (int)ALIGN_BORDER;
+    /* rows of the grid are independent: share them among threads */
+#pragma omp parallel for schedule(dynamic)
+    for (y = 0; y < gh; y++) {
+        int x, u, v;
         for (x = 0; x < gw; x++) {
             int D = d0 + x, E = e0 + y;
             int u0 = -D > 0 ? -D : 0, v0 = -E > 0 ? -E : 0;
@@ -203,6 +206,7 @@ static void align_shifts(const align_ctx *c, int l, double area, const plane *m,
             else
                 grid[(size_t)y * gw + x] = (float)((sab - sa * sb / n) / sqrt(va * vb));
         }
+    }
 }
 
 /* Exhaustive coarse search; writes up to ALIGN_KEEP distinct candidates,
