@@ -26,7 +26,7 @@ static const char compare_help[] =
     "                      (default 5; 0..45)\n"
     "  --crop X,Y,W,H      compare only this rectangle of REFERENCE (pixels, origin\n"
     "                      top left); dx, dy are then relative to X,Y\n"
-    "  --grey              compare luma only (for grey scans); default R,G,B\n"
+    "  --grey, --gray      compare luma only (for grey scans); default R,G,B\n"
     "  --descreen SIGMA    blur both pictures with a Gaussian of SIGMA reference\n"
     "                      pixels (0..50) after registration, to remove halftone\n"
     "                      dots; the reference is also blurred for registration\n"

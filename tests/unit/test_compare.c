@@ -1,6 +1,6 @@
 /* test_compare — registration, metrics, pictures, PNM reading and error
  * paths of `maprt compare`, against independent computations on synthetic
- * pictures (see compare_synth.h). */
+ * pictures (see test_compare_synth.h). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -15,7 +15,7 @@
 #include "compare/imgload.h"
 #include "image/pnm.h"
 #include "util/mem.h"
-#include "compare_synth.h"
+#include "test_compare_synth.h"
 
 /* The largest distance, in reference pixels, between where two transforms
  * put the corners of a w x h test picture. */

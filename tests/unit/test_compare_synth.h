@@ -1,10 +1,10 @@
-/* compare_synth — synthetic pictures for the compare tests: a "render"
+/* test_compare_synth — synthetic pictures for the compare tests: a "render"
  * (discs, bars, a gradient and a CG-like mark, asymmetric so flips and
  * turns show) and a "scan" of it (grey, scaled, shifted, turned, blurred,
  * noisy, halftone-free paper margins), made with an independent forward
  * mapping so the registration has a known answer. */
-#ifndef COMPARE_SYNTH_H
-#define COMPARE_SYNTH_H
+#ifndef TEST_COMPARE_SYNTH_H
+#define TEST_COMPARE_SYNTH_H
 #include <math.h>
 #include <stdint.h>
 #include "image/image.h"
