@@ -5,14 +5,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define ALIGN_LEVELS 16
-#define ALIGN_KEEP 8
+#define ALIGN_LEVELS 16            /* pyramid levels at most */
+#define ALIGN_KEEP 8               /* coarse candidates kept */
 #define ALIGN_COARSE 24.0          /* smaller picture's size at the coarse level */
-#define ALIGN_SCALE_STEP 1.06
+#define ALIGN_SCALE_STEP 1.06      /* coarse scale step (factor) */
 #define ALIGN_ANGLE_STEP 8.0       /* coarse angles: multiples of this within the range */
-#define ALIGN_INVALID (-2.0)
-#define ALIGN_DROP 0.6            /* finer level refused below this share of the score */
-#define ALIGN_BORDER 3.0           /* level pixels left out along the test's border */
+#define ALIGN_INVALID (-2.0)       /* score of a refused placement */
+#define ALIGN_DROP 0.6             /* finer level refused below this share of the score */
+#define ALIGN_BORDER 3.0           /* level pixels left out along each picture's border */
 
 /* Edge-map pyramid: lv[k] has 2^-k the resolution of the picture. */
 typedef struct align_pyr {

@@ -1,8 +1,9 @@
 /* test_compare_synth — synthetic pictures for the compare tests: a "render"
  * (discs, bars, a gradient and a CG-like mark, asymmetric so flips and
  * turns show) and a "scan" of it (grey, scaled, shifted, turned, blurred,
- * noisy, halftone-free paper margins), made with an independent forward
- * mapping so the registration has a known answer. */
+ * noisy, inside paper margins; synth_halftone adds a dot screen), made
+ * with an independent forward mapping so the registration has a known
+ * answer. */
 #ifndef TEST_COMPARE_SYNTH_H
 #define TEST_COMPARE_SYNTH_H
 #include <math.h>
