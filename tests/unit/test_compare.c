@@ -100,6 +100,35 @@ static void test_compare_register_recovers_scan(void **state)
     image_free(&render);
 }
 
+/* With --crop the transform is relative to the crop's corner. */
+static void test_compare_register_crop_offsets(void **state)
+{
+    uint64_t s = test_seed("test_compare_register_crop_offsets");
+    image render, scan;
+    warp_params truth = {1.2, 30.0, 26.0, -1.0}, want = {1.2, 18.0, 19.0, -1.0};
+    compare_opts o;
+    compare_result r;
+    diag err;
+    (void)state;
+    assert_int_equal(synth_render(0, 120, &render), 0);
+    assert_int_equal(synth_scan(0, 120, &truth, 200, 190, 8.0, &s, &scan), 0);
+    compare_opts_init(&o);
+    o.do_register = 1;
+    o.grey = 1;
+    o.crop = 1;
+    o.cx = 12;
+    o.cy = 7;
+    o.cw = 180;
+    o.ch = 176;
+    diag_init(&err);
+    assert_int_equal(compare_images("scan", &scan, "render", &render, &o, &r, &err), 0);
+    assert_int_equal(r.width, 180);
+    assert_int_equal(r.height, 176);
+    assert_true(corner_error(&want, &r.p, 120, 120) < 1.0);
+    image_free(&render);
+    image_free(&scan);
+}
+
 /* A halftoned print (binary dots on a 45-degree screen repeating every 10
  * pixels along its axes) still registers within a pixel and a percent once
  * descreened with sigma 0.4 x the period. */
@@ -573,6 +602,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_compare_warp_inverse),
         cmocka_unit_test(test_compare_register_recovers_scan),
+        cmocka_unit_test(test_compare_register_crop_offsets),
         cmocka_unit_test(test_compare_register_halftone_scan),
         cmocka_unit_test(test_compare_ssim_separates_scenes),
         cmocka_unit_test(test_compare_psnr_matches_direct),
