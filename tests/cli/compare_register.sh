@@ -45,6 +45,9 @@ for f in diff sbs; do
   [ "$(head -c 4 "$t/$f.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "$f.png is not a PNG"
 done
 
+out=$("$MAPRT" compare "$t/sbs.png" "$t/sbs.png") || fail "PNG compare failed"
+[ "$(get psnr)" = inf ] && [ "$(get width)" = $((3 * 190 + 16)) ] || fail "PNG pair: $out"
+
 out=$("$MAPRT" compare "$t/render.ppm" "$t/render.ppm") || fail "identical compare failed"
 [ "$(get psnr)" = inf ] && [ "$(get ssim)" = 1.000000 ] && [ "$(get pixels_over)" = 0.000000 ] &&
   [ "$(get channels)" = rgb ] && [ "$(get overlap)" = 1.000000 ] || fail "identical pair not perfect: $out"
