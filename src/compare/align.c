@@ -7,6 +7,7 @@
 
 #define ALIGN_LEVELS 16            /* pyramid levels at most */
 #define ALIGN_KEEP 8               /* coarse candidates kept */
+#define ALIGN_SPREAD 4             /* best ones also started a scale step either side */
 #define ALIGN_COARSE 24.0          /* smaller picture's size at the coarse level */
 #define ALIGN_SCALE_STEP 1.06      /* coarse scale step (factor) */
 #define ALIGN_ANGLE_STEP 8.0       /* coarse angles: multiples of this within the range */
@@ -406,7 +407,7 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
      * candidates are refined and ranked at the first, the best one at all */
     static const double stages[] = {64, 128, 256, 512};
     align_ctx c;
-    align_cand cand[ALIGN_KEEP];
+    align_cand cand[ALIGN_KEEP + 2 * ALIGN_SPREAD];
     int n, s, i, rc = 1;
     memset(&c, 0, sizeof c);
     c.rw = ref->w;
@@ -423,10 +424,22 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
     n = align_coarse(&c, o, cand);
     if (n < 0)
         rc = -1;
+    /* the scale grid is coarse next to small pictures' detail: start the
+     * refinement of the best candidates from the neighbouring scale steps
+     * too */
+    if (n > 0) {
+        int m = n < ALIGN_SPREAD ? n : ALIGN_SPREAD;
+        for (i = 0; i < m; i++) {
+            cand[n + 2 * i] = cand[n + 2 * i + 1] = cand[i];
+            cand[n + 2 * i].p.scale /= ALIGN_SCALE_STEP;
+            cand[n + 2 * i + 1].p.scale *= ALIGN_SCALE_STEP;
+        }
+        n += 2 * m;
+    }
     for (i = 0; i < n; i++)
         cand[i].level = -1;
     for (s = 0; n > 0 && s < (int)(sizeof stages / sizeof stages[0]); s++) {
-        align_cand prev[ALIGN_KEEP];
+        align_cand prev[ALIGN_KEEP + 2 * ALIGN_SPREAD];
         int changed = 0;
         memcpy(prev, cand, (size_t)n * sizeof cand[0]);
         for (i = 0; i < n; i++) {

@@ -17,9 +17,11 @@
  *     (multiples of 8 degrees within the range) and shift (one pixel of the
  *     level where the smaller picture is about 24 pixels across); the 8 best
  *     mutually distinct local maxima are kept.
- *  2. Fine: each candidate is refined by a pattern search in (log scale,
- *     position of the test's centre, angle) at the level where the smaller
- *     picture is about 64 pixels across; the best one is then refined at
+ *  2. Fine: each candidate (and the best 4 once more from a scale step
+ *     either side, as the scale grid is coarse next to small pictures) is
+ *     refined by a pattern search in (log scale, position of the test's
+ *     centre, angle) at the level where the smaller picture is about 64
+ *     pixels across; the best one is then refined at
  *     levels where it is about 128, 256 and 512 pixels across (never finer
  *     than full resolution). If the correlation at a level falls under 0.6
  *     of the previous level's, that level is dominated by detail only one
