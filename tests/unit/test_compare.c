@@ -100,6 +100,43 @@ static void test_compare_register_recovers_scan(void **state)
     image_free(&render);
 }
 
+/* Seeded random placements over a wider range of scales and angles. */
+static void test_compare_register_random_placements(void **state)
+{
+    uint64_t s = test_seed("test_compare_register_random_placements");
+    image render;
+    int k;
+    (void)state;
+    assert_int_equal(synth_render(0, 160, &render), 0);
+    for (k = 0; k < 6; k++) {
+        warp_params truth;
+        image scan;
+        compare_opts o;
+        compare_result r;
+        diag err;
+        int w, h;
+        truth.scale = exp(test_uniform(&s, log(0.5), log(2.0)));
+        truth.angle = test_uniform(&s, -4, 4);
+        truth.dx = test_uniform(&s, 5, 40);
+        truth.dy = test_uniform(&s, 5, 40);
+        w = (int)(truth.scale * 160 + truth.dx + test_uniform(&s, 5, 40));
+        h = (int)(truth.scale * 160 + truth.dy + test_uniform(&s, 5, 40));
+        assert_int_equal(synth_scan(0, 160, &truth, w, h, 10.0, &s, &scan), 0);
+        compare_opts_init(&o);
+        o.do_register = 1;
+        o.grey = 1;
+        diag_init(&err);
+        assert_int_equal(compare_images("scan", &scan, "render", &render, &o, &r, &err), 0);
+        printf("# truth %.4f %.2f %.2f %.2f; found %.4f %.2f %.2f %.2f (corner error %.3f px)\n", truth.scale,
+               truth.dx, truth.dy, truth.angle, r.p.scale, r.p.dx, r.p.dy, r.p.angle,
+               corner_error(&truth, &r.p, 160, 160));
+        assert_true(fabs(r.p.scale / truth.scale - 1) < 0.01);
+        assert_true(corner_error(&truth, &r.p, 160, 160) < 1.0);
+        image_free(&scan);
+    }
+    image_free(&render);
+}
+
 /* With --crop the transform is relative to the crop's corner. */
 static void test_compare_register_crop_offsets(void **state)
 {
@@ -602,6 +639,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_compare_warp_inverse),
         cmocka_unit_test(test_compare_register_recovers_scan),
+        cmocka_unit_test(test_compare_register_random_placements),
         cmocka_unit_test(test_compare_register_crop_offsets),
         cmocka_unit_test(test_compare_register_halftone_scan),
         cmocka_unit_test(test_compare_ssim_separates_scenes),
