@@ -45,6 +45,15 @@ for f in diff sbs; do
   [ "$(head -c 4 "$t/$f.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "$f.png is not a PNG"
 done
 
+# the example of docs/compare.md: a crop moves the origin of dx, dy
+out=$("$MAPRT" compare "$t/scan.pgm" "$t/render.ppm" --register --grey --crop 10,5,175,170 --descreen 1 \
+      --levels) || fail "cropped compare failed"
+printf '%s\n' "$out"
+awk -v s="$(get scale)" -v x="$(get dx)" -v y="$(get dy)" 'BEGIN {
+  ok = (s / 1.5 - 1 < 0.01 && 1 - s / 1.5 < 0.01 && x - 10 < 1 && 10 - x < 1 && y - 7 < 1 && 7 - y < 1); exit !ok }' ||
+  fail "cropped registration off"
+[ -n "$(get gain)" ] && [ -n "$(get offset)" ] || fail "no gain/offset with --levels"
+
 out=$("$MAPRT" compare "$t/sbs.png" "$t/sbs.png") || fail "PNG compare failed"
 [ "$(get psnr)" = inf ] && [ "$(get width)" = $((3 * 190 + 16)) ] || fail "PNG pair: $out"
 
