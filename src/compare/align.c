@@ -173,8 +173,6 @@ static void align_shifts(const align_ctx *c, int l, double area, const plane *m,
     const plane *fr = &c->r.lv[l];
     double f2 = ldexp(1.0, 2 * l);
     int y, br = (int)ALIGN_BORDER;
-    /* rows of the grid are independent: share them among threads */
-#pragma omp parallel for schedule(dynamic)
     for (y = 0; y < gh; y++) {
         int x, u, v;
         for (x = 0; x < gw; x++) {
