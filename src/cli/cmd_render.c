@@ -108,7 +108,7 @@ int cmd_render(int argc, char **argv)
 {
     const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *mode = "q16", *v;
     char *png_path = NULL, *dl_path = NULL;
-    const render_ops *ops;
+    const render_ops *ops = NULL;
     render_opts o;
     render_stats st;
     render_fb fb;

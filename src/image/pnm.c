@@ -152,7 +152,7 @@ int pnm_read_memory(const char *name, const void *data, size_t len, int channels
                     image *out, diag *err)
 {
     pnm_cur c;
-    pnm_info info;
+    pnm_info info = {0};
     unsigned long w, h, maxval;
     int in_ch, binary, bps;
     size_t samples, i;

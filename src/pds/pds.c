@@ -69,7 +69,7 @@ size_t NS(pds_bytes)(const NS(pds) *p)
 
 static int m_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
-    NS(pds) *p;
+    NS(pds) *p = NULL;
     int rc = NS(pds_compile)(def, file, &p, err);
     if (rc == 0)
         *out = p;
