@@ -85,14 +85,6 @@ static u128 u128_sub(u128 a, u128 b)
     return r;
 }
 
-static u128 u128_shl1(u128 a)
-{
-    u128 r;
-    r.hi = (a.hi << 1) | (a.lo >> 63);
-    r.lo = a.lo << 1;
-    return r;
-}
-
 /* Magnitude of a signed 64-bit value as unsigned, defined for INT64_MIN. */
 static uint64_t mag64(int64_t a) { return a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a; }
 
@@ -130,68 +122,95 @@ fx32 fx32_mul(fx32 a, fx32 b)
     return fx32_signed((p.hi << 32) | (p.lo >> 32), (a < 0) != (b < 0), (p.hi >> 32) != 0);
 }
 
+/* Number of leading zero bits of v > 0. */
+static int clz64(uint64_t v)
+{
+#if defined(__GNUC__)
+    return __builtin_clzll(v);
+#else
+    int n = 0;
+    while (!(v >> 63)) { v <<= 1; n++; }
+    return n;
+#endif
+}
+
+/* Divides the 128-bit u1:u0 by v, where u1 < v so the quotient fits in 64
+ * bits: schoolbook division in two 32-bit quotient digits after normalising
+ * v (Knuth's algorithm D for a two-digit divisor). *rem gets the remainder. */
+static uint64_t div128by64(uint64_t u1, uint64_t u0, uint64_t v, uint64_t *rem)
+{
+    const uint64_t base = (uint64_t)1 << 32;
+    uint64_t vn1, vn0, un32, un21, un10, un1, un0, q1, q0, rhat;
+    int s = clz64(v);
+    v <<= s;
+    vn1 = v >> 32;
+    vn0 = v & 0xffffffffu;
+    un32 = s ? (u1 << s) | (u0 >> (64 - s)) : u1;
+    un10 = u0 << s;
+    un1 = un10 >> 32;
+    un0 = un10 & 0xffffffffu;
+    q1 = un32 / vn1;
+    rhat = un32 - q1 * vn1;
+    while (q1 >= base || q1 * vn0 > base * rhat + un1) {
+        q1--;
+        rhat += vn1;
+        if (rhat >= base) break;
+    }
+    un21 = un32 * base + un1 - q1 * v;
+    q0 = un21 / vn1;
+    rhat = un21 - q0 * vn1;
+    while (q0 >= base || q0 * vn0 > base * rhat + un0) {
+        q0--;
+        rhat += vn1;
+        if (rhat >= base) break;
+    }
+    *rem = (un21 * base + un0 - q0 * v) >> s;
+    return q1 * base + q0;
+}
+
 fx32 fx32_div(fx32 a, fx32 b)
 {
-    uint64_t ma = mag64(a), mb = mag64(b), q = 0;
-    u128 n, r = {0, 0}, d;
-    int i, neg = (a < 0) != (b < 0);
+    uint64_t ma = mag64(a), mb = mag64(b), q, r;
+    int neg = (a < 0) != (b < 0);
     if (b == 0) {
         fx_overflows++;
         return a > 0 ? FX32_MAX : a < 0 ? FX32_MIN : 0;
     }
-    /* n = ma << 32 as 128 bits; long division, 96 significant bits. */
-    n.hi = ma >> 32;
-    n.lo = ma << 32;
-    d.hi = 0;
-    d.lo = mb;
-    for (i = 127; i >= 0; i--) {
-        uint64_t bit = i >= 64 ? (n.hi >> (i - 64)) & 1 : (n.lo >> i) & 1;
-        r = u128_shl1(r);
-        r.lo |= bit;
-        if (q >> 63) {                    /* quotient would exceed 64 bits */
-            if (u128_ge(r, d)) return fx32_signed(0, neg, 1);
-            q <<= 1;
-            continue;
-        }
-        q <<= 1;
-        if (u128_ge(r, d)) { r = u128_sub(r, d); q |= 1; }
-    }
-    /* round to nearest: 2r >= d */
-    if (u128_ge(u128_shl1(r), d)) {
+    /* dividend ma * 2^32 = (ma >> 32) : (ma << 32); the quotient needs more
+     * than 64 bits exactly when the high word reaches the divisor */
+    if ((ma >> 32) >= mb)
+        return fx32_signed(0, neg, 1);
+    q = div128by64(ma >> 32, ma << 32, mb, &r);
+    if (r >= mb - r) {                   /* 2r >= mb: round half away from zero */
         if (q == UINT64_MAX) return fx32_signed(0, neg, 1);
         q++;
     }
     return fx32_signed(q, neg, 0);
 }
 
+/* Q32.32 square root, rounded to nearest: the integer root of a * 2^32
+ * (below 2^95, root below 2^47.5). A binary64 root gives an estimate within
+ * a few units; exact 128-bit comparisons then make it floor(sqrt(v)). */
 fx32 fx32_sqrt(fx32 a)
 {
-    /* sqrt(a * 2^32) over 128 bits, bit by bit; the root is below 2^48. */
-    u128 v, res = {0, 0}, bit;
+    u128 v, sq;
     uint64_t s;
     if (a < 0) { fx_overflows++; return 0; }
     v.hi = (uint64_t)a >> 32;
     v.lo = (uint64_t)a << 32;
-    bit.hi = (uint64_t)1 << 62;
-    bit.lo = 0;
-    while (!u128_ge(v, bit) && (bit.hi | bit.lo)) {
-        bit.lo = (bit.lo >> 2) | (bit.hi << 62);
-        bit.hi >>= 2;
+    s = (uint64_t)sqrt((double)a * 4294967296.0);
+    for (;;) {                           /* s*s <= v */
+        sq = u128_mul64(s, s);
+        if (u128_ge(v, sq)) break;
+        s--;
     }
-    while (bit.hi | bit.lo) {
-        u128 t = res;
-        t.lo += bit.lo; t.hi += bit.hi + (t.lo < bit.lo);
-        /* res >>= 1 */
-        res.lo = (res.lo >> 1) | (res.hi << 63);
-        res.hi >>= 1;
-        if (u128_ge(v, t)) {
-            v = u128_sub(v, t);
-            res.lo += bit.lo; res.hi += bit.hi + (res.lo < bit.lo);
-        }
-        bit.lo = (bit.lo >> 2) | (bit.hi << 62);
-        bit.hi >>= 2;
+    for (;;) {                           /* (s+1)^2 > v */
+        sq = u128_mul64(s + 1, s + 1);
+        if (!u128_ge(v, sq)) break;
+        s++;
     }
-    s = res.lo;                          /* floor root; remainder in v */
-    if (v.hi != 0 || v.lo > s) s++;      /* round to nearest */
+    /* round to nearest: v - s^2 > s */
+    sq = u128_sub(v, u128_mul64(s, s));
+    if (sq.hi != 0 || sq.lo > s) s++;
     return (fx32)s;
 }

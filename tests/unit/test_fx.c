@@ -108,6 +108,61 @@ static void test_fx32_matches_long_double(void **state)
     }
 }
 
+/* Independent full-range references for Q32.32 through the compiler's
+ * 128-bit integers (a GCC/Clang extension, used only here in the tests). */
+__extension__ typedef unsigned __int128 u128_ref;
+
+static int64_t ref_fx32_div(int64_t a, int64_t b, int *sat)
+{
+    u128_ref ma = a < 0 ? (u128_ref)(-(a + 1)) + 1 : (u128_ref)a;
+    u128_ref mb = b < 0 ? (u128_ref)(-(b + 1)) + 1 : (u128_ref)b;
+    u128_ref n = ma << 32, q = n / mb, r = n % mb;
+    int neg = (a < 0) != (b < 0);
+    if (2 * r >= mb)
+        q++;
+    *sat = q > (u128_ref)INT64_MAX + (u128_ref)neg;
+    if (*sat)
+        return neg ? INT64_MIN : INT64_MAX;
+    return neg ? (int64_t)(0 - (uint64_t)q) : (int64_t)q;
+}
+
+static int64_t ref_fx32_sqrt(int64_t a)
+{
+    u128_ref v = (u128_ref)a << 32, s = 0, bit;
+    int k;
+    for (k = 47; k >= 0; k--) {          /* root < 2^48: set bits from the top */
+        bit = (u128_ref)1 << k;
+        if ((s + bit) * (s + bit) <= v)
+            s += bit;
+    }
+    if (v - s * s > s)
+        s++;
+    return (int64_t)s;
+}
+
+static void test_fx32_div_sqrt_full_range(void **state)
+{
+    uint64_t s = test_seed("test_fx32_div_sqrt_full_range");
+    int i;
+    (void)state;
+    for (i = 0; i < 300000; i++) {
+        int64_t a = (int64_t)test_rand(&s) >> (test_rand(&s) % 64);
+        int64_t b = (int64_t)test_rand(&s) >> (test_rand(&s) % 64);
+        int sat;
+        unsigned long before = fx_overflows;
+        if (i % 1000 == 0) a = INT64_MIN;
+        if (i % 1000 == 1) b = INT64_MIN;
+        if (b != 0) {
+            int64_t want = ref_fx32_div(a, b, &sat);
+            assert_true(fx32_div(a, b) == want);
+            assert_true(fx_overflows == before + (unsigned long)sat);
+        }
+        if (a >= 0)
+            assert_true(fx32_sqrt(a) == ref_fx32_sqrt(a));
+    }
+    assert_true(fx32_sqrt(INT64_MAX) == ref_fx32_sqrt(INT64_MAX));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -116,6 +171,7 @@ int main(void)
         cmocka_unit_test(test_fx_div_sqrt_match_long_double),
         cmocka_unit_test(test_fx_sqrt_exhaustive_low_and_near_squares),
         cmocka_unit_test(test_fx32_matches_long_double),
+        cmocka_unit_test(test_fx32_div_sqrt_full_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
