@@ -2,6 +2,7 @@
 #include "display5080/dl_image.h"
 #include "display5080/dl_encode.h"
 #include "display5080/dl_quant.h"
+#include "image/image_diff.h"
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <math.h>
@@ -92,22 +93,25 @@ int dl_image_encode_indexed(int width, int height, const uint8_t *index, const u
     return 0;
 }
 
-/* PSNR of rgb against the quantised frame as shown. */
-static double dl_image_psnr(const image *rgb, const dl_quant *q)
+/* PSNR of rgb against the quantised frame as the 5081 shows it (1e9 when
+ * identical); DIAG_IO when memory runs out. */
+static int dl_image_psnr(const image *rgb, const dl_quant *q, double *psnr, diag *err)
 {
     size_t n = (size_t)rgb->width * (size_t)rgb->height, i;
-    double se = 0;
+    image shown;
+    image_diff_stats d;
+    int c;
+    if (image_alloc(&shown, rgb->width, rgb->height, 3, "display list", err))
+        return err->status;
     for (i = 0; i < n; i++) {
         uint32_t t = q->table[q->index[i]];
-        int c;
-        for (c = 0; c < 3; c++) {
-            double d = (double)rgb->px[3 * i + c] - (double)((t >> (16 - 8 * c)) & 0xFFu);
-            se += d * d;
-        }
+        for (c = 0; c < 3; c++)
+            shown.px[3 * i + c] = (uint8_t)((t >> (16 - 8 * c)) & 0xFFu);
     }
-    if (se == 0)
-        return 1e9;
-    return 10 * log10(255.0 * 255.0 * 3.0 * (double)n / se);
+    image_diff(rgb, &shown, 0, &d);
+    image_free(&shown);
+    *psnr = d.mse > 0 ? d.psnr : 1e9;
+    return 0;
 }
 
 int dl_image_encode(const image *rgb, const dl_image_opts *opts, uint8_t **out, size_t *len,
@@ -169,7 +173,10 @@ int dl_image_encode(const image *rgb, const dl_image_opts *opts, uint8_t **out, 
     rc = dl_image_encode_indexed(rgb->width, rgb->height, q.index, q.table, q.ncolours,
                                  qo.dac == 8 ? DL_FLAG_DAC8 : 0, opts->polylines, line_index,
                                  opts->npolylines, out, len, &st, err);
-    st.psnr = dl_image_psnr(rgb, &q);
+    if (!rc && (rc = dl_image_psnr(rgb, &q, &st.psnr, err)) != 0) {
+        mem_free(*out);
+        *out = NULL;
+    }
     dl_quant_free(&q);
     mem_free(line_index);
     if (!rc && stats)

@@ -4,6 +4,7 @@
  * listed modes). Output: a table on stdout, optional CSV and gnuplot chart. */
 #include "cli/cli.h"
 #include "cli/cli_scene.h"
+#include "image/image_diff.h"
 #include "render/render.h"
 #include "util/mem.h"
 #include "util/outfile.h"
@@ -48,28 +49,6 @@ static void bench_help(FILE *f)
         "Timings depend on machine load; repeat runs to judge the noise.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
         RENDER_MAX_THREADS, omp_get_max_threads());
-}
-
-/* Error of a against the reference b (same size, RGB8). */
-static void bench_diff(const image *a, const image *b, double *psnr, double *pct, double *maxd)
-{
-    size_t i, n = (size_t)a->width * (size_t)a->height, over = 0;
-    double se = 0;
-    int m = 0;
-    for (i = 0; i < n; i++) {
-        int k, big = 0;
-        for (k = 0; k < 3; k++) {
-            int d = abs((int)a->px[3 * i + k] - (int)b->px[3 * i + k]);
-            se += (double)d * d;
-            if (d > m) m = d;
-            if (d > 2) big = 1;
-        }
-        over += (size_t)big;
-    }
-    se /= 3.0 * (double)n;
-    *psnr = se == 0 ? INFINITY : 10 * log10(255.0 * 255.0 / se);
-    *pct = 100.0 * (double)over / (double)n;
-    *maxd = m;
 }
 
 /* 1 when an executable gnuplot is on PATH. */
@@ -259,6 +238,7 @@ int cmd_bench(int argc, char **argv)
         }
         for (m = 0; m < nmodes; m++) {
             bench_row *r = &rows[nrows];
+            image_diff_stats d;
             if ((status = render_scene(sc, modes[m], &o, &fb, &st, &err)) != 0) {
                 diag_print(stderr, &err);
                 break;
@@ -271,7 +251,10 @@ int cmd_bench(int argc, char **argv)
             r->rays_per_s = r->seconds > 0 ? (double)r->rays / r->seconds : 0;
             r->rays_per_s_core = r->rays_per_s / o.threads;
             r->overflows = st.fx_overflows;
-            bench_diff(&fb.img, &ref.img, &r->psnr, &r->pct_over2, &r->maxdiff);
+            image_diff(&fb.img, &ref.img, 2, &d);
+            r->psnr = d.psnr;
+            r->pct_over2 = 100.0 * d.over;
+            r->maxdiff = d.max;
             render_fb_free(&fb);
             printf("%-28s %-4s %3d %9.4f %12.0f %12.0f %8.2f %8.4f %4.0f %9llu\n", r->scene, r->mode,
                    r->threads, r->seconds, r->rays_per_s, r->rays_per_s_core, r->psnr, r->pct_over2,

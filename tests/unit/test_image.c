@@ -1,0 +1,194 @@
+/* test_image — PNG round trips, image_diff figures, committed outputs and
+ * bounded reads (src/image, src/util/outfile). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <dirent.h>
+#include <sys/stat.h>
+#include "image/image.h"
+#include "image/image_diff.h"
+#include "util/mem.h"
+#include "util/outfile.h"
+#include "support.h"
+
+static char dir[64];
+
+static int setup(void **state)
+{
+    (void)state;
+    strcpy(dir, "/tmp/maprt-test-image-XXXXXX");
+    return mkdtemp(dir) ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    char cmd[128];
+    (void)state;
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+/* Number of entries other than . and .. in directory path. */
+static int dir_entries(const char *path)
+{
+    DIR *d = opendir(path);
+    struct dirent *e;
+    int n = 0;
+    assert_non_null(d);
+    while ((e = readdir(d)))
+        n += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
+    closedir(d);
+    return n;
+}
+
+static void test_image_png_round_trip_rgb_and_grey(void **state)
+{
+    uint64_t s = test_seed("test_image_png_round_trip_rgb_and_grey");
+    char path[128];
+    int ch;
+    (void)state;
+    for (ch = 1; ch <= 3; ch += 2) {
+        image a, b;
+        diag err;
+        size_t i;
+        diag_init(&err);
+        assert_int_equal(image_alloc(&a, 37, 19, ch, "a", &err), 0);
+        for (i = 0; i < (size_t)37 * 19 * ch; i++)
+            a.px[i] = (uint8_t)test_rand(&s);
+        snprintf(path, sizeof path, "%s/rt%d.png", dir, ch);
+        assert_int_equal(image_write_png(path, &a, &err), 0);
+        assert_int_equal(image_read_png(path, ch, &b, &err), 0);
+        assert_int_equal(b.width, 37);
+        assert_int_equal(b.height, 19);
+        assert_memory_equal(a.px, b.px, (size_t)37 * 19 * ch);
+        image_free(&a);
+        image_free(&b);
+    }
+}
+
+static void test_image_palette_png_reads_back_as_colours(void **state)
+{
+    const uint8_t palette[6] = {255, 0, 0, 0, 0, 255};
+    const uint8_t index[4] = {0, 1, 1, 0};
+    char path[128];
+    image b;
+    diag err;
+    (void)state;
+    diag_init(&err);
+    snprintf(path, sizeof path, "%s/pal.png", dir);
+    assert_int_equal(image_write_png_palette(path, 2, 2, index, palette, 2, &err), 0);
+    assert_int_equal(image_read_png(path, 3, &b, &err), 0);
+    assert_memory_equal(b.px, "\xff\x00\x00\x00\x00\xff\x00\x00\xff\xff\x00\x00", 12);
+    image_free(&b);
+    assert_int_equal(image_write_png_palette(path, 2, 2, index, palette, 0, &err), DIAG_INPUT);
+    assert_string_equal(err.msg, "palette of 0 colours (1..256 allowed)");
+}
+
+static void test_image_bad_inputs_are_reported(void **state)
+{
+    char path[128], buf[600];
+    image b;
+    diag err;
+    (void)state;
+    snprintf(path, sizeof path, "%s/none.png", dir);
+    diag_init(&err);
+    assert_int_equal(image_read_png(path, 3, &b, &err), DIAG_INPUT);
+    snprintf(buf, sizeof buf, "%s: error: cannot open: No such file or directory", path);
+    {
+        char got[1024];
+        diag_format(&err, got, sizeof got);
+        assert_string_equal(got, buf);
+    }
+    diag_init(&err);
+    assert_int_equal(image_read_png_memory("x.png", "not a png at all", 16, 3, &b, &err), DIAG_INPUT);
+    assert_non_null(strstr(err.msg, "not a readable PNG"));
+    diag_init(&err);
+    assert_int_equal(image_alloc(&b, 0, 5, 3, "z", &err), DIAG_INPUT);
+    assert_string_equal(err.msg, "image size 0x5 is outside 1..32768 per side");
+    diag_init(&err);
+    assert_int_equal(image_alloc(&b, 32768, 32768, 3, "z", &err), DIAG_INPUT);
+}
+
+static void test_image_diff_matches_direct_formula(void **state)
+{
+    uint64_t s = test_seed("test_image_diff_matches_direct_formula");
+    image a, b;
+    image_diff_stats d;
+    diag err;
+    size_t i, n = 64 * 48;
+    long double se = 0;
+    int maxd = 0, over = 0;
+    (void)state;
+    diag_init(&err);
+    assert_int_equal(image_alloc(&a, 64, 48, 3, "a", &err), 0);
+    assert_int_equal(image_alloc(&b, 64, 48, 3, "b", &err), 0);
+    image_diff(&a, &b, 2, &d);
+    assert_true(isinf(d.psnr) && d.mse == 0 && d.max == 0 && d.over == 0);
+    for (i = 0; i < 3 * n; i++) {
+        a.px[i] = (uint8_t)test_rand(&s);
+        b.px[i] = (uint8_t)(a.px[i] + (int)(test_rand(&s) % 7) - 3);
+    }
+    for (i = 0; i < n; i++) {
+        int k, w = 0;
+        for (k = 0; k < 3; k++) {
+            int dd = a.px[3 * i + k] - b.px[3 * i + k];
+            dd = dd < 0 ? -dd : dd;
+            se += (long double)dd * dd;
+            w = dd > w ? dd : w;
+        }
+        maxd = w > maxd ? w : maxd;
+        over += w > 2;
+    }
+    image_diff(&a, &b, 2, &d);
+    assert_true(fabs(d.mse - (double)(se / (3.0L * n))) < 1e-12);
+    assert_true(fabs(d.psnr - 10 * log10(65025.0 / (double)(se / (3.0L * n)))) < 1e-9);
+    assert_int_equal(d.max, maxd);
+    assert_true(fabs(d.over - (double)over / n) < 1e-15);
+    image_free(&a);
+    image_free(&b);
+}
+
+static void test_image_outfile_commits_only_on_success(void **state)
+{
+    char sub[96], path[128];
+    outfile of;
+    diag err;
+    char *data;
+    size_t len;
+    (void)state;
+    snprintf(sub, sizeof sub, "%s/commit", dir);
+    assert_int_equal(mkdir(sub, 0700), 0);
+    snprintf(path, sizeof path, "%s/out.bin", sub);
+    diag_init(&err);
+    assert_int_equal(outfile_open(&of, path, &err), 0);
+    assert_int_equal(outfile_write(&of, "abc", 3, &err), 0);
+    assert_int_equal(access(path, F_OK), -1);          /* not there before commit */
+    outfile_abort(&of);
+    assert_int_equal(dir_entries(sub), 0);                /* abort leaves nothing */
+    assert_int_equal(outfile_write_all(path, "hello", 5, &err), 0);
+    assert_int_equal(dir_entries(sub), 1);
+    assert_int_equal(infile_read_all(path, 5, &data, &len, &err), 0);
+    assert_int_equal(len, 5);
+    assert_memory_equal(data, "hello", 5);
+    mem_free(data);
+    assert_int_equal(infile_read_all(path, 4, &data, &len, &err), DIAG_INPUT);
+    assert_string_equal(err.msg, "file larger than 4 bytes");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_image_png_round_trip_rgb_and_grey),
+        cmocka_unit_test(test_image_palette_png_reads_back_as_colours),
+        cmocka_unit_test(test_image_bad_inputs_are_reported),
+        cmocka_unit_test(test_image_diff_matches_direct_formula),
+        cmocka_unit_test(test_image_outfile_commits_only_on_success),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
