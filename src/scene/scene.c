@@ -1,13 +1,21 @@
 /* scene — releasing a parsed scene (the model is in scene.h; scene_parse.c
  * builds it). */
 #include "scene/scene.h"
+#include "scene/scene_map.h"
 #include "util/mem.h"
 
 /* Frees s and every array it owns; NULL is allowed. */
 void scene_free(scene *s)
 {
+    size_t i;
     if (!s)
         return;
+    for (i = 0; i < s->nmaps; i++) {
+        pds_def_free(&s->maps[i]->def);
+        mem_free(s->maps[i]);
+    }
+    for (i = 0; i < s->ntextures; i++)
+        image_free(&s->textures[i].img);
     mem_free(s->source);
     mem_free(s->attrs);
     mem_free(s->prims);
@@ -15,5 +23,7 @@ void scene_free(scene *s)
     mem_free(s->roots);
     mem_free(s->lights);
     mem_free(s->maps);
+    mem_free(s->textures);
+    mem_free(s->bumps);
     mem_free(s);
 }

@@ -18,6 +18,7 @@
 #include <stddef.h>
 #include "util/diag.h"
 #include "util/recsrc.h"
+#include "image/image.h"
 
 #define SCENE_NAME_MAX 16     /* significant characters of a name */
 #define SCENE_MAX_FACES 6
@@ -43,16 +44,51 @@ typedef struct scene_attr {
     double mirror;            /* kr, mirror reflectance 0..1 */
     double transmit;          /* kt, transmittance 0..1 */
     double ior;               /* index of refraction (used when kt > 0) */
+    int texture;              /* index into textures: colour image over the
+                                 face replacing color, -1 = none */
+    int bump;                 /* index into bumps, -1 = none */
     scene_loc loc;
 } scene_attr;
+
+/* A colour image laid over a face's (u,v) square (TEXTURE statement):
+ * u runs along the image's rows left to right, v from its bottom row up;
+ * repeat[] copies of it across u and v. */
+typedef struct scene_texture {
+    char name[SCENE_NAME_MAX + 1];
+    image img;                /* RGB, 8 bits per channel */
+    double repeat[2];
+    scene_loc loc;
+} scene_texture;
+
+/* Bump patterns: a height field h(u,v) in [-1,1] scaled by the amplitude
+ * (src/attr/attr_bump.c defines each). */
+typedef enum bump_pattern {
+    BUMP_WAVES,               /* sin 2pi(fu u + fv v): parallel ridges */
+    BUMP_BUMPS,               /* sin 2pi fu u * sin 2pi fv v: egg crate */
+    BUMP_DIMPLES,             /* a spherical dimple in each of fu x fv cells */
+    BUMP_NOISE,               /* gradient noise with fu x fv lattice cells */
+    BUMP_PATTERN_COUNT
+} bump_pattern;
+
+/* A bump attribute (BUMP statement): the surface is displaced along its
+ * normal by amplitude * h(u,v) (deck length units) for shading only. */
+typedef struct scene_bump {
+    char name[SCENE_NAME_MAX + 1];
+    bump_pattern pattern;
+    double amplitude;         /* deck units, non-zero */
+    double freq[2];           /* cycles or cells across u and v */
+    unsigned seed;            /* BUMP_NOISE: lattice hash seed */
+    scene_loc loc;
+} scene_bump;
 
 typedef struct scene_prim {
     prim_kind kind;
     double dim[3];                    /* see the table above */
     double world_from_object[16];     /* row-major 4x4 affine */
     int attr;                         /* index into attrs (plain attribute) */
-    int face_map[SCENE_MAX_FACES];    /* per face: attribute-mapping binding
-                                         (index into maps), -1 = plain attr */
+    int face_map[SCENE_MAX_FACES];    /* per face: the planar division
+                                         structure bound by FACE (index into
+                                         maps), -1 = the plain attr only */
     char name[SCENE_NAME_MAX + 1];    /* the deck's name for it */
     scene_loc loc;
 } scene_prim;
@@ -92,13 +128,29 @@ typedef struct scene {
     scene_node *nodes;   size_t nnodes;
     int *roots;          size_t nroots;   /* rendered objects (union of all) */
     scene_light *lights; size_t nlights;
-    /* Attribute mapping (planar division structures) is added by src/pds. */
-    struct scene_map *maps; size_t nmaps;
+    /* Attribute mapping: planar division structures (scene_map.h; each one
+     * allocated on its own so that nested PDS references stay valid),
+     * texture images and bump patterns. */
+    struct scene_map **maps;       size_t nmaps;
+    scene_texture *textures;       size_t ntextures;
+    scene_bump *bumps;             size_t nbumps;
 } scene;
+
+/* Reads files a deck names (TEXTURE and PIXELS images). image() reads the
+ * image `name` as written in the deck into *out with `channels` (1 or 3)
+ * channels, or returns a diag status with err saying why; the parser adds
+ * the record and column. */
+typedef struct scene_loader {
+    int (*image)(void *ctx, const char *name, int channels, image *out, diag *err);
+    void *ctx;
+} scene_loader;
 
 /* Parses a scene deck. On success *out owns a new scene and 0 is returned;
  * otherwise err holds the first error (file:record:column) and *out is
  * untouched. Never crashes, hangs or allocates without bound. */
 int scene_parse(const recsrc *src, scene **out, diag *err);
+/* The same, reading the files the deck names through ld (NULL: a deck that
+ * names an image is refused). */
+int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, diag *err);
 void scene_free(scene *s);
 #endif

@@ -267,6 +267,8 @@ static void scene_parse_attr_defaults(scene_attr *a)
     a->mirror = 0;
     a->transmit = 0;
     a->ior = 1;
+    a->texture = -1;
+    a->bump = -1;
 }
 
 static int scene_parse_add_attr(scene_parser *p, const scene_attr *a, const scene_lex_tok *at)
@@ -661,10 +663,15 @@ static void scene_parse_defaults(scene *s)
     s->max_depth = 5;
 }
 
+int scene_parse(const recsrc *src, scene **out, diag *err)
+{
+    return scene_parse_with(src, NULL, out, err);
+}
+
 /* See scene.h. The built-in DEFAULT attribute is attrs[0]; statements are
  * dispatched through scene_parse_tables; the parser state (with its large
  * statement buffer) lives on the heap. */
-int scene_parse(const recsrc *src, scene **out, diag *err)
+int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, diag *err)
 {
     scene_parser *p = mem_calloc(1, sizeof *p);
     const char *file = src->name ? src->name : "";
@@ -674,6 +681,7 @@ int scene_parse(const recsrc *src, scene **out, diag *err)
         return diag_at(err, DIAG_IO, file, 0, 0, "out of memory");
     p->file = file;
     p->err = err;
+    p->loader = ld;
     scene_names_init(&p->names);
     scene_lex_init(&p->lex, src);
     p->s = mem_calloc(1, sizeof *p->s);

@@ -63,6 +63,7 @@ struct scene_parser {
     scene *s;
     const char *file;
     diag *err;
+    const scene_loader *loader;   /* NULL: images cannot be read */
     scene_lex lex;
     scene_lex_stmt st;
     scene_names names;
