@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 static unsigned long outfile_serial;
@@ -11,7 +12,12 @@ static unsigned long outfile_serial;
 int outfile_open(outfile *of, const char *path, diag *err)
 {
     size_t n = strlen(path);
+    struct stat st;
     memset(of, 0, sizeof *of);
+    /* The rename would replace a device, FIFO or directory entry (e.g.
+     * /dev/null) with a plain file; refuse before writing anything. */
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+        return diag_at(err, DIAG_IO, path, 0, 0, "not a regular file; refusing to replace it");
     of->path = mem_strdup(path);
     of->tmp = mem_alloc(n + 48);
     if (!of->path || !of->tmp) {

@@ -16,6 +16,11 @@ done
 for m in q16 q32 f32 f64; do
   $MAPRT render scenes/csg.scene -o "$tmp/$m.png" --size 16x16 --numeric $m || fail "mode $m"
 done
+# An output name that is a FIFO or a directory is refused, not replaced.
+mkfifo "$tmp/fifo" && mkdir "$tmp/dir"
+$MAPRT render scenes/csg.scene -o "$tmp/fifo" --size 8x8 2> "$tmp/err"; [ $? -eq 3 ] || fail "FIFO output should exit 3"
+grep -q "not a regular file" "$tmp/err" && [ -p "$tmp/fifo" ] || fail "FIFO replaced: $(cat "$tmp/err")"
+$MAPRT render scenes/csg.scene -o "$tmp/dir" --size 8x8 2> /dev/null; [ $? -eq 3 ] && [ -d "$tmp/dir" ] || fail "directory output should exit 3"
 ls "$tmp" | grep -q tmp- && fail "temporary file left behind"
 
 $MAPRT render scenes/fig1.scene -o "$tmp/x.png" --numeric q8 2> "$tmp/err"; [ $? -eq 2 ] || fail "bad mode should exit 2"
@@ -44,5 +49,10 @@ $MAPRT render scenes/fig1.scene -o "$tmp/x.png" --dither 2> "$tmp/err"; [ $? -eq
 $MAPRT render scenes/fig1.scene --dl "$tmp/x.dl5080" --dac 6 2> "$tmp/err"; [ $? -eq 2 ] || fail "--dac 6 should exit 2"
 $MAPRT render scenes/fig1.scene --dl "$tmp/x.dl5080" --size 5000x10 2> "$tmp/err"; [ $? -eq 2 ] || fail "oversize --dl should exit 2"
 grep -q "at most 4096x4096" "$tmp/err" || fail "oversize message"
+# An output name that is a FIFO or a directory is refused, not replaced.
+mkfifo "$tmp/fifo" && mkdir "$tmp/dir"
+$MAPRT render scenes/csg.scene -o "$tmp/fifo" --size 8x8 2> "$tmp/err"; [ $? -eq 3 ] || fail "FIFO output should exit 3"
+grep -q "not a regular file" "$tmp/err" && [ -p "$tmp/fifo" ] || fail "FIFO replaced: $(cat "$tmp/err")"
+$MAPRT render scenes/csg.scene -o "$tmp/dir" --size 8x8 2> /dev/null; [ $? -eq 3 ] && [ -d "$tmp/dir" ] || fail "directory output should exit 3"
 ls "$tmp" | grep -q tmp- && fail "temporary file left behind"
 exit 0
