@@ -1,5 +1,6 @@
 /* cscene — scene analysis and per-mode compilation (see cscene.h). */
 #include "trace/cscene.h"
+#include "scene/scene_map.h"
 #include "util/mem.h"
 #include <math.h>
 #include <string.h>
@@ -95,6 +96,33 @@ static int cscene_normalise(const scene *sc, geom_norm *nm, diag *err)
     return 0;
 }
 
+/* Compiles every scene map that some primitive face is bound to. */
+static int cscene_maps(const scene *sc, cscene *cs, diag *err)
+{
+    size_t i;
+    int f, st;
+    if (!sc->nmaps)
+        return 0;
+    cs->maps = mem_calloc(sc->nmaps, sizeof *cs->maps);
+    if (!cs->maps)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    cs->nmaps = sc->nmaps;
+    for (i = 0; i < sc->nprims; i++)
+        for (f = 0; f < SCENE_MAX_FACES; f++) {
+            int m = sc->prims[i].face_map[f];
+            if (m < 0)
+                continue;
+            if ((size_t)m >= sc->nmaps)
+                return diag_at(err, DIAG_INPUT, cscene_file(sc), sc->prims[i].loc.line,
+                               sc->prims[i].loc.col, "primitive '%s': map index out of range",
+                               sc->prims[i].name);
+            if (!cs->maps[m] &&
+                (st = NS(pds_compile)(&sc->maps[m]->def, cscene_file(sc), &cs->maps[m], err)))
+                return st;
+        }
+    return 0;
+}
+
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
 {
     cscene *cs;
@@ -156,6 +184,22 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, &cs->prims[i], cscene_file(sc), err)))
             goto fail;
     }
+    for (i = 0; i < sc->nattrs; i++) {
+        const scene_attr *a = &sc->attrs[i];
+        if (a->texture >= (int)sc->ntextures || a->bump >= (int)sc->nbumps ||
+            (a->texture >= 0 && !sc->textures[a->texture].img.px)) {
+            status = diag_at(err, DIAG_INPUT, cscene_file(sc), a->loc.line, a->loc.col,
+                             "attribute '%s': texture or bump index out of range", a->name);
+            goto fail;
+        }
+        if (a->transmit > 0)
+            cs->transparent = 1;
+    }
+    if (sc->nlights > CSCENE_MAX_LIGHTS) {
+        status = diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0, "more than %d lights",
+                         CSCENE_MAX_LIGHTS);
+        goto fail;
+    }
     if (sc->nlights) {
         cs->lights = mem_calloc(sc->nlights, sizeof *cs->lights);
         if (!cs->lights) {
@@ -182,7 +226,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         for (j = 0; j < 3; j++)
             cs->lights[i].rgb[j] = l->color[j] * l->intensity;
     }
-    if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)))
+    if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)) ||
+        (status = cscene_maps(sc, cs, err)))
         goto fail;
     *out = cs;
     return 0;
@@ -193,8 +238,12 @@ fail:
 
 void NS(cscene_free)(cscene *cs)
 {
+    size_t i;
     if (!cs)
         return;
+    for (i = 0; i < cs->nmaps; i++)
+        NS(pds_free)(cs->maps[i]);
+    mem_free(cs->maps);
     NS(csg_free)(&cs->tree);
     mem_free(cs->prims);
     mem_free(cs->lights);

@@ -1,12 +1,14 @@
 /* cscene — a scene compiled for one numeric mode: the normalisation into the
  * fixed-point range, compiled primitives, the CSG tree, lights and camera.
  * Built from the double-precision scene model, which must outlive it (the
- * attributes are read from it). Modal: compiled per numeric mode. */
+ * attributes, textures and bump patterns are read from it). Modal: compiled per numeric mode. */
 #ifndef TRACE_CSCENE_H
 #define TRACE_CSCENE_H
 #include "geom/csg.h"
+#include "pds/pds.h"
 
 #define CSCENE_MAX_DEPTH 32   /* recursion limit applied to scene max_depth */
+#define CSCENE_MAX_LIGHTS 64  /* lights a compiled scene may have */
 
 typedef struct cscene_light {
     vec3 pos;                 /* normalised world */
@@ -24,6 +26,13 @@ typedef struct cscene {
     double eye[3], fwd[3], right[3], up[3], tan_half;   /* camera, normalised */
     vec3 eye_n;
     int max_depth;
+    /* Attribute mapping: maps[i] is scene map i compiled for this mode, or
+     * NULL when no face is bound to it (nothing is compiled that no ray can
+     * look up). */
+    NS(pds) **maps;
+    size_t nmaps;
+    int transparent;          /* some attribute transmits light: shadow rays
+                                 then look up what they cross */
 } cscene;
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:

@@ -1,7 +1,10 @@
-/* trace — Algorithm 1 (see trace.h). Geometry (hits, spawned rays) runs in
- * the mode's `num`; colours are doubles (the mode changes where surfaces are,
- * not how light is summed). */
+/* trace — Algorithm 1 (see trace.h), its steps in the paper's order.
+ * Geometry (hits, spawned rays, the PDS lookup) runs in the mode's `num`;
+ * colours, (u,v) and shading normals are doubles (the mode changes where
+ * surfaces and regions are, not how light is summed). */
 #include "trace/trace.h"
+#include "attr/attr_bump.h"
+#include "attr/attr_texture.h"
 #include <math.h>
 #include <string.h>
 
@@ -16,19 +19,22 @@ int NS(trace_ctx_init)(const cscene *cs, trace_ctx *tc)
 
 void NS(trace_ctx_free)(trace_ctx *tc) { arena_free(&tc->ar); }
 
-/* Algorithm 1, steps 2-3: the attribute of face `face` of primitive `pi` at
- * the surface point sf ((u,v) in [0,1]^2, tangent frame dpdu/dpdv, normal).
- * This is the attribute-mapping hook: every face currently yields the
- * primitive's plain attribute; the planar division structure lookup for faces
- * with a binding (scene_prim.face_map[face] >= 0) plugs in here and counts
- * tc->rs.pds_lookups. */
+/* Algorithm 1, step 3: the attribute of face `face` of primitive pi at the
+ * surface point sf. The PDS bound to the face (FACE statement) names the
+ * region's attribute; where it has no region (PDS_NONE), or the face has no
+ * PDS, the primitive's plain attribute applies. */
 static const scene_attr *trace_attribute(const cscene *cs, trace_ctx *tc, int pi, int face,
                                          const geom_surface *sf)
 {
-    (void)tc;
-    (void)face;
-    (void)sf;
-    return &cs->sc->attrs[cs->prims[pi].attr];
+    const scene *sc = cs->sc;
+    int m = face >= 0 && face < SCENE_MAX_FACES ? sc->prims[pi].face_map[face] : -1;
+    if (m >= 0) {
+        int32_t id = NS(pds_locate)(cs->maps[m], num_from_d(sf->u), num_from_d(sf->v));
+        tc->rs.pds_lookups++;
+        if (id >= 0 && (size_t)id < sc->nattrs)
+            return &sc->attrs[id];
+    }
+    return &sc->attrs[sc->prims[pi].attr];
 }
 
 static vec3 trace_vec_d(const double *v) { return vec3_from_d(v); }
@@ -46,15 +52,54 @@ static void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_pri
     r->excl_enter = n_prim[0] * dd[0] + n_prim[1] * dd[1] + n_prim[2] * dd[2] < 0;
 }
 
-/* Step 4: 1 when the light at distance dist along unit l from p is blocked. */
-static int trace_shadowed(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, num dist, int pi,
-                          const double *n_prim)
+/* Step 4: the fraction of the light at distance dist along unit l from p
+ * that arrives: 0 behind an opaque surface; each transparent surface on the
+ * way (transmittance kt of its attribute at the crossing) passes kt of it,
+ * without bending the shadow ray. */
+static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, num dist,
+                                 int pi, const double *n_prim)
 {
-    prim_ray s;
-    csg_hit h;
-    trace_spawn(&s, p, l, pi, n_prim);
-    tc->rs.rays_shadow++;
-    return NS(csg_intersect)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h);
+    double pass = 1, nb[3];
+    int k;
+    for (k = 0; k <= cs->max_depth; k++) {
+        prim_ray s;
+        csg_hit h;
+        geom_surface sf;
+        const scene_attr *at;
+        trace_spawn(&s, p, l, pi, n_prim);
+        tc->rs.rays_shadow++;
+        if (!NS(csg_intersect)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h))
+            return pass;
+        if (!cs->transparent)
+            return 0;
+        p = vec3_madd(p, h.t, l);
+        dist = num_sub(dist, h.t);
+        NS(prim_surface)(&cs->prims[h.prim], h.face, p, &sf);
+        at = trace_attribute(cs, tc, h.prim, h.face, &sf);
+        pass *= at->transmit;
+        if (pass <= TRACE_MIN_WEIGHT)
+            return 0;
+        pi = h.prim;
+        memcpy(nb, sf.n, sizeof nb);
+        n_prim = nb;
+    }
+    return 0;
+}
+
+/* Step 5 (3): the refracted direction of unit d at a surface with unit
+ * normal ns facing d's origin, for the index ratio eta (Snell's law), in
+ * num; 1 with *t set, 0 for total internal reflection. */
+static int trace_refract(vec3 d, const double *dd, const double *ns, vec3 nsn, double eta, vec3 *t)
+{
+    double cosi = -(dd[0] * ns[0] + dd[1] * ns[1] + dd[2] * ns[2]);
+    double k = 1 - eta * eta * (1 - cosi * cosi);
+    num ne, nk;
+    if (k < 0)
+        return 0;
+    /* t = eta d + (eta cosi - sqrt k) ns */
+    ne = num_from_d(eta);
+    nk = num_sub(num_mul(ne, num_from_d(cosi)), num_sqrt(num_from_d(k)));
+    return !vec3_normalize(vec3_add(vec3_scale(d, ne), vec3_scale(nsn, nk)), t, NULL);
 }
 
 void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
@@ -65,11 +110,11 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     geom_surface sf;
     csg_hit h;
     vec3 p, nsn;
-    double d[3], ns[3], dn, refl, c[3];
+    double d[3], ns[3], dn, refl, c[3], color[3], pass[CSCENE_MAX_LIGHTS];
     size_t li;
     int i, inside, far;
 
-    /* Step 1: nearest hit, else the background. */
+    /* Step 1: nearest hit and its primitive (PID), else the background. */
     if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)) {
         for (i = 0; i < 3; i++)
             rgb[i] = sc->background[i];
@@ -82,39 +127,64 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     p = vec3_madd(r->o, h.t, r->d);
     /* Step 2: (x,y,z) -> face parameters (u,v) and the tangent frame. */
     NS(prim_surface)(&cs->prims[h.prim], h.face, p, &sf);
-    /* Step 3: the attribute of the face at (u,v). */
+    /* Step 3: the region of (u,v) in the face's PDS and its attribute. */
     at = trace_attribute(cs, tc, h.prim, h.face, &sf);
 
-    /* Shading normal faces the viewer; `inside` says the ray travelled inside
-     * the solid (it leaves it here), which selects the refraction ratio. The
-     * solid's outward normal may be the primitive's flipped one where a
-     * difference exposes a subtracted solid. */
+    /* The ray meets the surface from the side d points away from; `inside`
+     * says it travelled inside the solid (it leaves it here), which selects
+     * the refraction ratio. The solid's outward normal may be the primitive's
+     * flipped one where a difference exposes a subtracted solid. */
     vec3_to_d(r->d, d);
     dn = d[0] * sf.n[0] + d[1] * sf.n[1] + d[2] * sf.n[2];
-    for (i = 0; i < 3; i++)
-        ns[i] = dn > 0 ? -sf.n[i] : sf.n[i];
     inside = !h.entering;
-    nsn = trace_vec_d(ns);
     /* No ray is spawned from beyond GEOM_TMAX (only a half-space reaches
      * there): ray origins then stay inside the range argued in
      * docs/numerics.md, and nothing out there can cast a visible shadow. */
     far = vec3_maxabs(p) > num_from_i(GEOM_TMAX);
-    /* Step 5 (1): a bump attribute would perturb ns here. */
 
-    for (i = 0; i < 3; i++)
-        c[i] = at->ambient * at->color[i] * sc->ambient[i];
-    /* Step 4: shadows and brightness per light. */
+    /* Step 4: shadows, per light: the fraction of it that reaches p. Lights
+     * behind the (unbumped) surface do not reach it. */
     for (li = 0; li < cs->nlights; li++) {
         vec3 l;
         num dist;
-        double ld[3], ndl, spec = 0;
+        double ld[3];
+        pass[li] = 0;
         if (vec3_normalize(vec3_sub(cs->lights[li].pos, p), &l, &dist))
+            continue;
+        vec3_to_d(l, ld);
+        if ((ld[0] * sf.n[0] + ld[1] * sf.n[1] + ld[2] * sf.n[2]) * dn >= 0)
+            continue;
+        pass[li] = far ? 1 : trace_light_passes(cs, tc, p, l, dist, h.prim, sf.n);
+    }
+
+    /* Step 5 (1): the bump attribute perturbs the normal; the shading normal
+     * ns faces the viewer. */
+    if (at->bump >= 0)
+        attr_bump_normal(&sc->bumps[at->bump], cs->nm.scale, &sf, ns);
+    else
+        memcpy(ns, sf.n, sizeof ns);
+    if (dn > 0)
+        for (i = 0; i < 3; i++)
+            ns[i] = -ns[i];
+    nsn = trace_vec_d(ns);
+    /* Step 5 (2): the texture attribute gives the colour. */
+    if (at->texture >= 0)
+        attr_texture_rgb(&sc->textures[at->texture], sf.u, sf.v, color);
+    else
+        memcpy(color, at->color, sizeof color);
+
+    /* Step 5 (3): the optical attribute's shading model: ambient, then
+     * diffuse and Phong highlight per light that reaches p. */
+    for (i = 0; i < 3; i++)
+        c[i] = at->ambient * color[i] * sc->ambient[i];
+    for (li = 0; li < cs->nlights; li++) {
+        vec3 l;
+        double ld[3], ndl, spec = 0;
+        if (pass[li] <= 0 || vec3_normalize(vec3_sub(cs->lights[li].pos, p), &l, NULL))
             continue;
         vec3_to_d(l, ld);
         ndl = ns[0] * ld[0] + ns[1] * ld[1] + ns[2] * ld[2];
         if (ndl <= 0)
-            continue;
-        if (!far && trace_shadowed(cs, tc, p, l, dist, h.prim, sf.n))
             continue;
         if (at->specular > 0) {
             /* Phong: the light reflected about ns against the view direction */
@@ -126,31 +196,25 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
                 spec = at->specular * pow(rv, at->exponent);
         }
         for (i = 0; i < 3; i++)
-            c[i] += cs->lights[li].rgb[i] * (at->diffuse * ndl * at->color[i] + spec);
+            c[i] += pass[li] * cs->lights[li].rgb[i] * (at->diffuse * ndl * color[i] + spec);
     }
 
-    /* Step 5 (3): mirror reflection and transmission recurse from step 1. */
+    /* ... and recursion from step 1 for transmission and mirror reflection. */
     refl = at->mirror;
     if (far)
         depth = cs->max_depth;
     if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT) {
-        double eta = inside ? at->ior : 1.0 / at->ior, cosi = -(d[0] * ns[0] + d[1] * ns[1] + d[2] * ns[2]);
-        double k = 1 - eta * eta * (1 - cosi * cosi);
-        if (k < 0 || !(at->ior > 0)) {
+        vec3 td;
+        if (!(at->ior > 0) || !trace_refract(r->d, d, ns, nsn, inside ? at->ior : 1.0 / at->ior, &td)) {
             refl += at->transmit;            /* total internal reflection */
         } else {
-            /* t = eta d + (eta cosi - sqrt k) ns, in num */
-            num ne = num_from_d(eta), nk = num_sub(num_mul(ne, num_from_d(cosi)), num_sqrt(num_from_d(k)));
-            vec3 td;
             prim_ray tr;
             double tc3[3];
-            if (!vec3_normalize(vec3_add(vec3_scale(r->d, ne), vec3_scale(nsn, nk)), &td, NULL)) {
-                trace_spawn(&tr, p, td, h.prim, sf.n);
-                tc->rs.rays_refracted++;
-                NS(trace_ray)(cs, tc, &tr, depth + 1, weight * at->transmit, tc3, NULL);
-                for (i = 0; i < 3; i++)
-                    c[i] += at->transmit * tc3[i];
-            }
+            trace_spawn(&tr, p, td, h.prim, sf.n);
+            tc->rs.rays_refracted++;
+            NS(trace_ray)(cs, tc, &tr, depth + 1, weight * at->transmit, tc3, NULL);
+            for (i = 0; i < 3; i++)
+                c[i] += at->transmit * tc3[i];
         }
     }
     if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT) {
