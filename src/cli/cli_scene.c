@@ -1,10 +1,13 @@
 /* cli_scene — file naming and deck loading for the CLI (see cli_scene.h). */
 #include "cli/cli_scene.h"
 #include "cli/cli.h"
+#include "image/image.h"
 #include "util/mem.h"
 #include "vm_cms_shim/cms_cp.h"
 #include "vm_cms_shim/cms_deck.h"
+#include "vm_cms_shim/cms_fileid.h"
 #include "vm_cms_shim/cms_name.h"
+#include <stdio.h>
 #include <string.h>
 
 const char cli_files_help[] =
@@ -54,15 +57,92 @@ int cli_files_option(cli_files *f, const char *cmd, int argc, char **argv, int *
     return 1;
 }
 
+/* Where a deck's images are found: beside the deck (its host directory),
+ * and, for a deck read by fileid, also as fileid "FN FT m" on the deck's
+ * disk for an image written FN.FT. */
+typedef struct cli_images {
+    const cli_files *files;
+    char *dir;                 /* the deck's host directory, "" for "." */
+    char mode;                 /* the deck's disk letter, 0 for a host path */
+} cli_images;
+
+/* A fileid for image name "fn.ft" on disk mode, into out; 0 if the name is
+ * not of that form. */
+static int cli_images_fileid(const char *name, char mode, char *out, size_t cap)
+{
+    const char *dot = strchr(name, '.');
+    size_t i, fn = dot ? (size_t)(dot - name) : 0, ft = dot ? strlen(dot + 1) : 0;
+    if (!mode || !dot || !fn || fn > CMS_NAME_MAX || !ft || ft > CMS_NAME_MAX)
+        return 0;
+    for (i = 0; name[i]; i++)
+        if (i != fn && !cms_fileid_char_ok((unsigned char)name[i]))
+            return 0;
+    snprintf(out, cap, "%.*s %s %c", (int)fn, name, dot + 1, mode);
+    return 1;
+}
+
+static int cli_images_read(void *ctx, const char *name, int channels, image *out, diag *err)
+{
+    const cli_images *im = ctx;
+    char fid[3 * CMS_NAME_MAX + 8];
+    char *path;
+    size_t n;
+    int st;
+    FILE *probe;
+    if (name[0] == '/' || !im->dir[0])
+        return image_read_png(name, channels, out, err);
+    n = strlen(im->dir) + strlen(name) + 2;
+    if (!(path = mem_alloc(n)))
+        return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
+    snprintf(path, n, "%s/%s", im->dir, name);
+    /* A deck on a CMS disk may name its image by fileid in any case. */
+    if (!(probe = fopen(path, "rb")) && cli_images_fileid(name, im->mode, fid, sizeof fid)) {
+        cms_name cn;
+        diag e2;
+        diag_init(&e2);
+        if (cms_name_input(&im->files->disks, fid, &cn, &e2) == 0) {
+            mem_free(path);
+            path = cn.path;
+            cn.path = NULL;
+            cms_name_free(&cn);
+        }
+    }
+    if (probe)
+        fclose(probe);
+    st = image_read_png(path, channels, out, err);
+    mem_free(path);
+    return st;
+}
+
 int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
 {
     cms_deck *deck;
     recsrc src;
-    int st = cms_deck_open(&deck, &src, &f->disks, name, &f->decode, err);
+    cms_name cn;
+    cli_images im;
+    scene_loader ld;
+    char *slash;
+    int st = cms_name_input(&f->disks, name, &cn, err);
     if (st)
         return st;
-    st = scene_parse(&src, out, err);
-    cms_deck_close(deck);
+    im.files = f;
+    im.mode = cn.is_fileid ? cn.id.mode : 0;
+    im.dir = cn.path;
+    cn.path = NULL;
+    cms_name_free(&cn);
+    slash = strrchr(im.dir, '/');
+    if (slash)
+        *(slash == im.dir ? slash + 1 : slash) = 0;
+    else
+        im.dir[0] = 0;
+    ld.image = cli_images_read;
+    ld.ctx = &im;
+    st = cms_deck_open(&deck, &src, &f->disks, name, &f->decode, err);
+    if (st == 0) {
+        st = scene_parse_with(&src, &ld, out, err);
+        cms_deck_close(deck);
+    }
+    mem_free(im.dir);
     return st;
 }
 

@@ -1,5 +1,6 @@
 /* probe — geometry queries in deck units for one numeric mode (probe.h). */
 #include "trace/probe.h"
+#include "trace/optics.h"
 #include "trace/cscene.h"
 #include "util/mem.h"
 #include <math.h>
@@ -132,5 +133,15 @@ static int probe_respawn(const void *v, const double *o, const double *d, const 
     return probe_trace(p, &r2, h2, &pn);
 }
 
+static int probe_refract(const double *d, const double *n, double eta, double *t)
+{
+    vec3 tv;
+    int r = NS(optics_refract)(vec3_from_d(d), vec3_from_d(n), eta, &tv);
+    if (r == 0)
+        vec3_to_d(tv, t);
+    return r;
+}
+
 const probe_ops NS(probe_ops) = {
-    NUM_NAME, probe_compile, probe_free, probe_prim_span, probe_hit_fn, probe_respawn};
+    NUM_NAME, probe_compile, probe_free, probe_prim_span, probe_hit_fn, probe_respawn,
+    probe_refract};

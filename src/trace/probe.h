@@ -30,6 +30,9 @@ typedef struct probe_ops {
      * hit, 0 when it hits nothing, -1 when the first ray missed. */
     int (*respawn)(const void *cs, const double *o, const double *d, const double *d2,
                    probe_hit *h1, probe_hit *h2);
+    /* The mode's refraction (optics.h) of unit d at unit normal n for index
+     * ratio eta: 0 and t, 1 for total internal reflection, -1 degenerate. */
+    int (*refract)(const double *d, const double *n, double eta, double *t);
 } probe_ops;
 
 extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops;

@@ -5,6 +5,7 @@
 #include "trace/trace.h"
 #include "attr/attr_bump.h"
 #include "attr/attr_texture.h"
+#include "trace/optics.h"
 #include <math.h>
 #include <string.h>
 
@@ -36,8 +37,6 @@ static const scene_attr *trace_attribute(const cscene *cs, trace_ctx *tc, int pi
     }
     return &sc->attrs[sc->prims[pi].attr];
 }
-
-static vec3 trace_vec_d(const double *v) { return vec3_from_d(v); }
 
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,
  * double) along unit direction d: the ray excludes that primitive's surface
@@ -84,22 +83,6 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         n_prim = nb;
     }
     return 0;
-}
-
-/* Step 5 (3): the refracted direction of unit d at a surface with unit
- * normal ns facing d's origin, for the index ratio eta (Snell's law), in
- * num; 1 with *t set, 0 for total internal reflection. */
-static int trace_refract(vec3 d, const double *dd, const double *ns, vec3 nsn, double eta, vec3 *t)
-{
-    double cosi = -(dd[0] * ns[0] + dd[1] * ns[1] + dd[2] * ns[2]);
-    double k = 1 - eta * eta * (1 - cosi * cosi);
-    num ne, nk;
-    if (k < 0)
-        return 0;
-    /* t = eta d + (eta cosi - sqrt k) ns */
-    ne = num_from_d(eta);
-    nk = num_sub(num_mul(ne, num_from_d(cosi)), num_sqrt(num_from_d(k)));
-    return !vec3_normalize(vec3_add(vec3_scale(d, ne), vec3_scale(nsn, nk)), t, NULL);
 }
 
 void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
@@ -166,7 +149,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     if (dn > 0)
         for (i = 0; i < 3; i++)
             ns[i] = -ns[i];
-    nsn = trace_vec_d(ns);
+    nsn = vec3_from_d(ns);
     /* Step 5 (2): the texture attribute gives the colour. */
     if (at->texture >= 0)
         attr_texture_rgb(&sc->textures[at->texture], sf.u, sf.v, color);
@@ -205,9 +188,10 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         depth = cs->max_depth;
     if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT) {
         vec3 td;
-        if (!(at->ior > 0) || !trace_refract(r->d, d, ns, nsn, inside ? at->ior : 1.0 / at->ior, &td)) {
+        int tir = at->ior > 0 ? NS(optics_refract)(r->d, nsn, inside ? at->ior : 1.0 / at->ior, &td) : 1;
+        if (tir > 0) {
             refl += at->transmit;            /* total internal reflection */
-        } else {
+        } else if (tir == 0) {
             prim_ray tr;
             double tc3[3];
             trace_spawn(&tr, p, td, h.prim, sf.n);
@@ -218,12 +202,10 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         }
     }
     if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT) {
-        /* r = d - 2 (d.ns) ns, in num */
         vec3 rd;
         prim_ray rr;
         double rc[3];
-        num two_dn = num_mul(num_from_i(2), vec3_dot(r->d, nsn));
-        if (!vec3_normalize(vec3_sub(r->d, vec3_scale(nsn, two_dn)), &rd, NULL)) {
+        if (!NS(optics_reflect)(r->d, nsn, &rd)) {
             trace_spawn(&rr, p, rd, h.prim, sf.n);
             tc->rs.rays_reflected++;
             NS(trace_ray)(cs, tc, &rr, depth + 1, weight * refl, rc, NULL);
