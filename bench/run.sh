@@ -1,7 +1,8 @@
 #!/bin/sh
 # make bench: time against error for every scene in scenes/ and bench/ in all
 # numeric modes (f64 is the reference), then the CSG-width figure: render time
-# and primitive tests per ray of a slab minus N cylinders, N = 8 .. 256.
+# and primitive tests per ray of a slab minus N cylinders, N = 8 .. 256, and
+# one multi-attribute primitive against single-attribute ones (attrmap.sh).
 # Results go to out/. Timings depend on machine load.
 bin=${1:-build/maprt}
 size=${BENCH_SIZE:-320x240}
@@ -23,3 +24,6 @@ for n in 8 16 32 64 128 256; do
     END { printf "%d,%s,%d,%d,%.2f\n", n, ts, rays, tp, tp / rays }' out/slab-$n.stats >> out/slab.csv
 done
 cat out/slab.csv
+echo
+echo "one multi-attribute primitive vs. single-attribute primitives (bench/attrmap.sh):"
+sh bench/attrmap.sh "$bin" | tee out/attrmap.csv
