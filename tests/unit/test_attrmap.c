@@ -186,6 +186,92 @@ static void test_refraction_snell_and_tir(void **state)
     }
 }
 
+/* Every face of every primitive, placed by a random rotation and shift,
+ * hit by random rays: (u,v) lies in [0,1]^2, and (u,v) is continuous with
+ * the derivatives as its rate: for a second hit a small step away on the
+ * same face, p2 - p1 = dpdu du + dpdv dv to first order (f64; the mapping
+ * is evaluated in double, so q16, whose hit points are quantised to 2^-16,
+ * is held to the range). */
+static void test_face_uv_range_and_continuity(void **state)
+{
+    static const char *const decl[] = {"SPHERE P 1.3", "CYLINDER P 1 2", "BLOCK P 2 3 1",
+                                       "CONE P 1.5 0.5 2", "CONE P 0 1 2", "HALFSPACE P"};
+    static const int modes[] = {0, 3};          /* q16, f64 */
+    uint64_t rng = test_seed("face_uv");
+    int faces_seen[6][6];
+    size_t k, m;
+    (void)state;
+    memset(faces_seen, 0, sizeof faces_seen);
+    for (k = 0; k < sizeof decl / sizeof decl[0]; k++)
+        for (m = 0; m < 2; m++) {
+            const probe_ops *ops = tt_mode(modes[m]);
+            double worst = 0;
+            int trial;
+            for (trial = 0; trial < 4; trial++) {
+                char deck[512];
+                scene *sc;
+                void *cs;
+                diag err;
+                int i;
+                snprintf(deck, sizeof deck,
+                         "EYE 30 -30 20\nLOOKAT 0 0 0\nLIGHT 0 0 20\n%s ROTATE AXIS %.3f %.3f %.3f %.1f -\n"
+                         "TRANSLATE %.2f %.2f %.2f\nOBJECT P\n", decl[k], test_uniform(&rng, 0.1, 1),
+                         test_uniform(&rng, -1, 1), test_uniform(&rng, -1, 1), test_uniform(&rng, 0, 360),
+                         test_uniform(&rng, -1, 1), test_uniform(&rng, -1, 1), test_uniform(&rng, -1, 1));
+                sc = tt_parse(deck);
+                assert_non_null(sc);
+                diag_init(&err);
+                assert_int_equal(ops->compile(sc, &cs, &err), 0);
+                for (i = 0; i < 3000; i++) {
+                    double o[3], d[3], d2[3], dp[3], r[3];
+                    probe_hit h, h2;
+                    int j;
+                    at_random_unit(&rng, o);
+                    for (j = 0; j < 3; j++) {
+                        o[j] *= 12;
+                        d[j] = test_uniform(&rng, -2, 2) - o[j];
+                    }
+                    for (j = 0; j < 3; j++)
+                        d[j] /= sqrt(at_dot(d, d));
+                    if (!ops->hit(cs, o, d, &h))
+                        continue;
+                    assert_true(h.sf.u >= 0 && h.sf.u <= 1 && h.sf.v >= 0 && h.sf.v <= 1);
+                    faces_seen[k][h.face] = 1;
+                    if (modes[m] == 0)
+                        continue;
+                    for (j = 0; j < 3; j++)
+                        d2[j] = d[j] + test_uniform(&rng, -1e-6, 1e-6);
+                    for (j = 0; j < 3; j++)
+                        d2[j] /= sqrt(at_dot(d2, d2));
+                    if (!ops->hit(cs, o, d2, &h2) || h2.face != h.face ||
+                        fabs(h2.sf.u - h.sf.u) > 0.5)      /* the u seam of round faces */
+                        continue;
+                    for (j = 0; j < 3; j++) {
+                        dp[j] = h2.sf.p[j] - h.sf.p[j];
+                        r[j] = dp[j] - h.sf.dpdu[j] * (h2.sf.u - h.sf.u) - h.sf.dpdv[j] * (h2.sf.v - h.sf.v);
+                    }
+                    if (sqrt(at_dot(dp, dp)) < 1e-9 || sqrt(at_dot(dp, dp)) > 1e-3)   /* grazing */
+                        continue;
+                    if (sqrt(at_dot(r, r)) / sqrt(at_dot(dp, dp)) > worst)
+                        worst = sqrt(at_dot(r, r)) / sqrt(at_dot(dp, dp));
+                }
+                ops->free(cs);
+                scene_free(sc);
+            }
+            if (modes[m] == 3) {
+                printf("# %s: worst first-order residual %.2e of the step\n", decl[k], worst);
+                assert_true(worst < 5e-3);   /* second-order terms near apexes and poles */
+            }
+        }
+    /* every face was hit (the point cap of "CONE P 0 1 2" cannot be) */
+    for (k = 0; k < sizeof decl / sizeof decl[0]; k++) {
+        static const int nfaces[] = {1, 3, 6, 3, 2, 1};
+        int f;
+        for (f = 0; f < nfaces[k]; f++)
+            assert_true(faces_seen[k][f]);
+    }
+}
+
 /* A block's YMIN face seen from the front carries a CPG: its left half
  * (u < 1/2) is region RED, the rest has no region and keeps the base
  * attribute. With ambient-only shading the pixels are the attributes'
@@ -245,6 +331,7 @@ int main(void)
         cmocka_unit_test(test_bump_tilt_direction),
         cmocka_unit_test(test_texture_sampling),
         cmocka_unit_test(test_refraction_snell_and_tir),
+        cmocka_unit_test(test_face_uv_range_and_continuity),
         cmocka_unit_test(test_render_face_pds_lookup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
