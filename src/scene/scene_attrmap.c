@@ -67,6 +67,17 @@ static int attrmap_texture(scene_parser *p, scene_cur *c)
     return 0;
 }
 
+/* One FREQUENCY component: 0 (constant along that parameter, e.g. WAVES
+ * ridges parallel to it) or 0.001..4096. */
+static int attrmap_freq(scene_cur *c, double *f, const scene_lex_tok **at)
+{
+    if (scene_cur_number(c, f, at))
+        return DIAG_INPUT;
+    if (!(*f == 0 || (*f >= 0.001 && *f <= 4096)))
+        return scene_cur_error(c, *at, "FREQUENCY must be 0 or between 0.001 and 4096");
+    return 0;
+}
+
 /* BUMP name pattern AMPLITUDE a [FREQUENCY fu fv] [SEED n]; options in
  * any order, each at most once. */
 static int attrmap_bump(scene_parser *p, scene_cur *c)
@@ -92,9 +103,10 @@ static int attrmap_bump(scene_parser *p, scene_cur *c)
             if (b.amplitude == 0)
                 return scene_cur_error(c, at, "AMPLITUDE must not be zero");
         } else if ((r = scene_parse_option(c, "FREQUENCY", &seen_freq)) != 0) {
-            if (r < 0 || scene_cur_range(c, "FREQUENCY", 0.001, 4096, &b.freq[0]) ||
-                scene_cur_range(c, "FREQUENCY", 0.001, 4096, &b.freq[1]))
+            if (r < 0 || attrmap_freq(c, &b.freq[0], &at) || attrmap_freq(c, &b.freq[1], &at))
                 return DIAG_INPUT;
+            if (b.freq[0] == 0 && b.freq[1] == 0)
+                return scene_cur_error(c, at, "FREQUENCY 0 0 leaves the surface flat");
         } else if ((r = scene_parse_option(c, "SEED", &seen_seed)) != 0) {
             long v;
             if (r < 0 || scene_cur_int(c, "SEED", 0, SCENE_PARSE_MAX_SEED, &v))

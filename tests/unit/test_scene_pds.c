@@ -118,7 +118,7 @@ static void test_scene_pds_texture_bump_attr(void **state)
     stub_calls = 0;
     s = parse_ok("TEXTURE GRANITE IMAGE granite.png\n"
                  "texture wood image Wood.PNG repeat 4 2\n"
-                 "BUMP RIPPLE WAVES AMPLITUDE 0.02\n"
+                 "BUMP RIPPLE WAVES AMPLITUDE 0.02 FREQUENCY 90 0\n"
                  "BUMP GRAIN noise SEED 2000000000 FREQUENCY 16 0.5 AMPLITUDE -3\n"
                  "BUMP EGG BUMPS AMPLITUDE 1e6\nBUMP PIT DIMPLES AMPLITUDE 0.1\n"
                  "ATTR STONE COLOR 1 1 1 TEXTURE GRANITE\n"
@@ -137,7 +137,8 @@ static void test_scene_pds_texture_bump_attr(void **state)
     assert_int_equal(s->nbumps, 4);
     assert_int_equal(s->bumps[0].pattern, BUMP_WAVES);
     assert_true(s->bumps[0].amplitude == 0.02);
-    assert_true(s->bumps[0].freq[0] == 8 && s->bumps[0].freq[1] == 8);
+    assert_true(s->bumps[0].freq[0] == 90 && s->bumps[0].freq[1] == 0);
+    assert_true(s->bumps[3].freq[0] == 8 && s->bumps[3].freq[1] == 8);
     assert_int_equal(s->bumps[0].seed, 1);
     assert_int_equal(s->bumps[1].pattern, BUMP_NOISE);
     assert_true(s->bumps[1].amplitude == -3);
@@ -646,10 +647,14 @@ static void test_scene_pds_error_texts(void **state)
         { "BUMP B WAVES AMPLITUDE 2e6\n",
           "t.scene:1:24: error: BUMP: 2e6 is out of range (magnitude above 1e6)" },
         { "BUMP B WAVES AMPLITUDE 1 AMPLITUDE 2\n", "t.scene:1:26: error: BUMP: AMPLITUDE given twice" },
-        { "BUMP B WAVES AMPLITUDE 1 FREQUENCY 0 1\n",
-          "t.scene:1:36: error: BUMP: FREQUENCY must be between 0.001 and 4096" },
+        { "BUMP B WAVES AMPLITUDE 1 FREQUENCY 0.0005 1\n",
+          "t.scene:1:36: error: BUMP: FREQUENCY must be 0 or between 0.001 and 4096" },
         { "BUMP B WAVES AMPLITUDE 1 FREQUENCY 1 5000\n",
-          "t.scene:1:38: error: BUMP: FREQUENCY must be between 0.001 and 4096" },
+          "t.scene:1:38: error: BUMP: FREQUENCY must be 0 or between 0.001 and 4096" },
+        { "BUMP B WAVES AMPLITUDE 1 FREQUENCY -1 1\n",
+          "t.scene:1:36: error: BUMP: FREQUENCY must be 0 or between 0.001 and 4096" },
+        { "BUMP B WAVES AMPLITUDE 1 FREQUENCY 0 0\n",
+          "t.scene:1:38: error: BUMP: FREQUENCY 0 0 leaves the surface flat" },
         { "BUMP B WAVES AMPLITUDE 1 SEED 2147483648\n",
           "t.scene:1:31: error: BUMP: SEED must be a whole number from 0 to 2147483647" },
         { "BUMP B WAVES AMPLITUDE 1 SEED 1e999\n",
