@@ -11,12 +11,18 @@
 /* Words of the language that cannot be names, so that an operand list such
  * as "A TRANSLATE 1 0 0 B" has exactly one reading. Sorted for bsearch. */
 static const char *const scene_cur_words[] = {
-    "AMBIENT", "ATTR", "AXIS", "BACKGROUND", "BLOCK", "COLOR", "CONE",
-    "CYLINDER", "DEPTH", "DIFF", "DIFFERENCE", "DIFFUSE", "EXPONENT",
-    "EYE", "FOV", "HALFSPACE", "INF", "INFINITY", "INTENSITY", "INTER",
-    "INTERSECT", "INTERSECTION", "IOR", "LIGHT", "LOOK", "LOOKAT", "MATRIX", "MIRROR", "NAN",
-    "OBJECT", "ROTATE", "SCALE", "SIZE", "SPECULAR", "SPHERE", "TRANSLATE",
-    "TRANSMIT", "UNION", "UP"
+    "AMBIENT", "AMPLITUDE", "ATTR", "AXIS", "BACKGROUND", "BLOCK", "BRICK",
+    "BSPLINE", "BUMP", "BUMPS", "CIRCLE", "CODE", "COLOR", "CONE", "CPG",
+    "CURVES", "CYCLE", "CYLINDER", "DEPTH", "DIFF", "DIFFERENCE", "DIFFUSE",
+    "DIMPLES", "ELLIPSE", "END", "EXPONENT", "EYE", "FACE", "FOV",
+    "FREQUENCY", "HALFSPACE", "HASH", "HEX", "IMAGE", "INDEX", "INF",
+    "INFINITY", "INTENSITY", "INTER", "INTERSECT", "INTERSECTION", "IOR",
+    "KEY", "LIGHT", "LOOK", "LOOKAT", "MATRIX", "MIRROR", "MORTAR", "MOSAIC",
+    "NAN", "NEST", "NOISE", "NONE", "OBJECT", "OFFSET", "PDS", "PIXELS",
+    "POLYGON", "POLYLINE", "QUADTREE", "RECT", "REPEAT", "ROOT", "ROTATE",
+    "ROW", "SCALE", "SCATTER", "SEED", "SHEAR", "SIZE", "SPECULAR", "SPHERE",
+    "SPLIT", "SQUARE", "TEXTURE", "TILES", "TILING", "TOLERANCE", "TRANSLATE",
+    "TRANSMIT", "TRIANGLE", "UNION", "UP", "WAVES"
 };
 
 static int scene_cur_cmp(const void *key, const void *elem)
@@ -127,22 +133,43 @@ static int scene_cur_nonfinite(const scene_lex_tok *t)
            scene_cur_is(&u, "INFINITY");
 }
 
-int scene_cur_number(scene_cur *c, double *v, const scene_lex_tok **at)
+/* Reads the next item as a number, without a magnitude check (a value
+ * too large for a double is infinite); *at receives the item. */
+static int scene_cur_value(scene_cur *c, double *v, const scene_lex_tok **at)
 {
     const scene_lex_tok *t = scene_cur_peek(c);
-    double d;
-    if (at)
-        *at = t;
+    *at = t;
+    *v = 0;
     if (!t)
         return scene_cur_error(c, NULL, "missing number");
     if (scene_cur_nonfinite(t))
         return scene_cur_error(c, t, "%s is not a finite number", t->text);
     if (!scene_cur_syntax(t->text))
         return scene_cur_error(c, t, "expected a number, found %s", t->text);
-    d = strtod(t->text, NULL);   /* syntax checked: always converts fully */
-    if (!(fabs(d) <= SCENE_CUR_MAX_ABS))
-        return scene_cur_error(c, t, "%s is out of range (magnitude above 1e6)", t->text);
+    *v = strtod(t->text, NULL);   /* syntax checked: always converts fully */
     c->pos++;
+    return 0;
+}
+
+static int scene_cur_too_big(scene_cur *c, const scene_lex_tok *t)
+{
+    return scene_cur_error(c, t, "%s is out of range (magnitude above 1e6)", t->text);
+}
+
+int scene_cur_number(scene_cur *c, double *v, const scene_lex_tok **at)
+{
+    const scene_lex_tok *t;
+    double d;
+    int r = scene_cur_value(c, &d, &t);
+    if (at)
+        *at = t;
+    if (r)
+        return r;
+    if (!(fabs(d) <= SCENE_CUR_MAX_ABS)) {
+        c->pos--;             /* not consumed, as for the other errors */
+        scene_cur_too_big(c, t);
+        return DIAG_INPUT;
+    }
     *v = d;
     return 0;
 }
@@ -160,8 +187,11 @@ int scene_cur_int(scene_cur *c, const char *label, long lo, long hi, long *v)
 {
     const scene_lex_tok *t;
     double d;
-    if (scene_cur_number(c, &d, &t))
+    if (scene_cur_value(c, &d, &t))
         return DIAG_INPUT;
+    /* A range wider than 1e6 (seeds) replaces the general magnitude limit. */
+    if (!(fabs(d) <= SCENE_CUR_MAX_ABS) && lo >= -SCENE_CUR_MAX_ABS && hi <= SCENE_CUR_MAX_ABS)
+        return scene_cur_too_big(c, t);
     if (d != floor(d) || d < (double)lo || d > (double)hi)
         return scene_cur_error(c, t, "%s must be a whole number from %ld to %ld",
                                label, lo, hi);
@@ -212,6 +242,26 @@ int scene_cur_name(scene_cur *c, char out[SCENE_NAME_MAX + 1], const scene_lex_t
     memcpy(out, up, t->len + 1);
     c->pos++;
     return 0;
+}
+
+int scene_cur_choice(scene_cur *c, const char *const *words, int *index)
+{
+    const scene_lex_tok *t = scene_cur_peek(c);
+    char list[300] = "";
+    size_t len = 0;
+    int i, n;
+    for (n = 0; words[n]; n++)
+        if (scene_cur_is(t, words[n])) {
+            *index = n;
+            c->pos++;
+            return 0;
+        }
+    for (i = 0; i < n && len < sizeof list; i++)
+        len += (size_t)snprintf(list + len, sizeof list - len, "%s%s",
+                                i == 0 ? "" : i == n - 1 ? " or " : ", ", words[i]);
+    if (!t)
+        return scene_cur_error(c, NULL, "missing %s", list);
+    return scene_cur_error(c, t, "expected %s, found %s", list, t->text);
 }
 
 int scene_cur_finish(scene_cur *c)

@@ -55,12 +55,17 @@ int scene_cur_number(scene_cur *c, double *v, const scene_lex_tok **at);
 /* Reads n numbers into v[0..n-1]. */
 int scene_cur_numbers(scene_cur *c, double *v, int n);
 /* Reads a whole number in [lo, hi]; label names it in the range message
- * ("<label> must be a whole number from lo to hi"). */
+ * ("<label> must be a whole number from lo to hi"). A range wider than
+ * +-1e6 (seeds) replaces the magnitude limit of scene_cur_number. */
 int scene_cur_int(scene_cur *c, const char *label, long lo, long hi, long *v);
 /* Reads a number in [lo, hi] ("<label> must be between lo and hi"). */
 int scene_cur_range(scene_cur *c, const char *label, double lo, double hi, double *v);
 /* Reads a name into out (upper-cased, NUL-terminated). */
 int scene_cur_name(scene_cur *c, char out[SCENE_NAME_MAX + 1], const scene_lex_tok **at);
+/* Reads one of the upper-case keywords words[0..n) (a NULL-terminated
+ * list) and sets *index to its position: "expected A, B or C, found X",
+ * "missing A, B or C". */
+int scene_cur_choice(scene_cur *c, const char *const *words, int *index);
 /* Fails with "extra operand X" unless the statement is fully consumed. */
 int scene_cur_finish(scene_cur *c);
 #endif

@@ -1,13 +1,18 @@
 /* scene_names — the parser's symbol table: names (upper case, at most
- * SCENE_NAME_MAX characters) in separate name spaces (attributes, solids)
- * mapped to indices, with constant expected lookup time so that decks with
- * many definitions parse in linear time. Used by scene_parse. */
+ * SCENE_NAME_MAX characters) in separate name spaces (attributes, solids,
+ * PDS, ...) mapped to indices, with constant expected lookup time so that
+ * decks with many definitions parse in linear time. Used by scene_parse. */
 #ifndef SCENE_NAMES_H
 #define SCENE_NAMES_H
 #include <stddef.h>
 #include "scene/scene.h"
 
-typedef enum scene_names_space { SCENE_NAMES_ATTR, SCENE_NAMES_SOLID } scene_names_space;
+/* The deck's name spaces; a PDS block's own table holds its CPG nodes and
+ * its KEY colours. */
+typedef enum scene_names_space {
+    SCENE_NAMES_ATTR, SCENE_NAMES_SOLID, SCENE_NAMES_PDS, SCENE_NAMES_TEXTURE,
+    SCENE_NAMES_BUMP, SCENE_NAMES_NODE, SCENE_NAMES_COLOUR
+} scene_names_space;
 
 typedef struct scene_names_entry {
     char name[SCENE_NAME_MAX + 1];

@@ -1,19 +1,23 @@
 /* scene_parse — scene deck (card images) to the scene model.
  * Data flow: recsrc records -> scene_lex statements -> a handler per
- * statement keyword (tables below) -> definitions, lights, attributes and the
- * view in a scene being built -> each OBJECT expanded at once into primitive
- * copies and binary CSG nodes (sizes checked with saturating counts before
- * any allocation) -> completeness checks -> the finished scene.
+ * statement keyword (tables below; inside an open block such as PDS ... END
+ * only the block's body table) -> definitions, lights, attributes, maps and
+ * the view in a scene being built -> each OBJECT expanded at once into
+ * primitive copies (with their FACE bindings) and binary CSG nodes (sizes
+ * checked with saturating counts before any allocation) -> completeness
+ * checks -> the finished scene. Attribute-mapping statements live in
+ * scene_attrmap.c, scene_pds*.c and scene_face.c.
  * The language is documented in docs/scene-format.md. */
 #include "scene/scene_parse.h"
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include "scene/scene_xform.h"
 #include "util/mem.h"
 
 /* ---- shared helpers ------------------------------------------------------ */
 
-static scene_loc scene_parse_loc(const scene_lex_tok *t)
+scene_loc scene_parse_loc(const scene_lex_tok *t)
 {
     scene_loc l;
     l.line = t->line;
@@ -21,7 +25,7 @@ static scene_loc scene_parse_loc(const scene_lex_tok *t)
     return l;
 }
 
-static int scene_parse_oom(scene_parser *p, const scene_lex_tok *t)
+int scene_parse_oom(scene_parser *p, const scene_lex_tok *t)
 {
     return diag_at(p->err, DIAG_IO, p->file, t ? t->line : 0, t ? t->col : 0,
                    "out of memory");
@@ -32,18 +36,62 @@ int scene_parse_find_solid(const scene_parser *p, const char *name)
     return scene_names_find(&p->names, SCENE_NAMES_SOLID, name);
 }
 
-int scene_parse_attr_ref(scene_parser *p, scene_cur *c, int *attr)
+int scene_parse_ref(scene_parser *p, scene_cur *c, int space, int *index)
 {
     char name[SCENE_NAME_MAX + 1];
     const scene_lex_tok *t;
     int i;
     if (scene_cur_name(c, name, &t))
         return DIAG_INPUT;
-    i = scene_names_find(&p->names, SCENE_NAMES_ATTR, name);
+    i = scene_names_find(&p->names, space, name);
     if (i < 0)
         return scene_cur_error(c, t, "%s is used before it is defined", t->text);
-    *attr = i;
+    *index = i;
     return 0;
+}
+
+int scene_parse_attr_ref(scene_parser *p, scene_cur *c, int *attr)
+{
+    return scene_parse_ref(p, c, SCENE_NAMES_ATTR, attr);
+}
+
+int scene_parse_can_read(scene_parser *p, const char *what, scene_loc at)
+{
+    if (p->loader && p->loader->image)
+        return 0;
+    return diag_at(p->err, DIAG_INPUT, p->file, at.line, at.col,
+                   "%s: images cannot be read here", what);
+}
+
+int scene_parse_image(scene_parser *p, const char *what, scene_loc at, const char *name,
+                      int channels, image *out)
+{
+    diag e;
+    image img = { 0, 0, 0, NULL };
+    int r;
+    if (scene_parse_can_read(p, what, at))
+        return DIAG_INPUT;
+    diag_init(&e);
+    r = p->loader->image(p->loader->ctx, name, channels, &img, &e);
+    if (r == 0 && (img.channels != channels || img.width < 1 || img.height < 1 || !img.px)) {
+        /* a loader that breaks its contract must not reach the builders */
+        snprintf(e.msg, sizeof e.msg, "not a %d-channel image", channels);
+        r = DIAG_INPUT;
+    }
+    if (r != 0) {
+        image_free(&img);
+        return diag_at(p->err, DIAG_INPUT, p->file, at.line, at.col, "%s: cannot read %s: %s",
+                       what, name, e.msg[0] ? e.msg : "unknown error");
+    }
+    *out = img;
+    return 0;
+}
+
+void scene_parse_close_block(scene_parser *p)
+{
+    if (p->block.release)
+        p->block.release(p->block.state);
+    memset(&p->block, 0, sizeof p->block);
 }
 
 int scene_parse_tail(scene_parser *p, scene_cur *c, double m[16], int *attr)
@@ -205,9 +253,7 @@ static int scene_parse_depth(scene_parser *p, scene_cur *c)
 
 /* ---- LIGHT and ATTR ------------------------------------------------------ */
 
-/* Accepts option keyword once; *seen tracks it. Returns 1 if consumed, 0 if
- * the next item is something else, -1 after an error (given twice). */
-static int scene_parse_option(scene_cur *c, const char *kw, int *seen)
+int scene_parse_option(scene_cur *c, const char *kw, int *seen)
 {
     const scene_lex_tok *t = scene_cur_peek(c);
     if (!scene_cur_is(t, kw))
@@ -280,8 +326,9 @@ static int scene_parse_add_attr(scene_parser *p, const scene_attr *a, const scen
     return 0;
 }
 
-/* ATTR name COLOR r g b {option value}: appends a plain attribute; the
- * option table gives each coefficient's keyword, range and field. */
+/* ATTR name COLOR r g b {option value} [TEXTURE t] [BUMP b]: appends an
+ * attribute; the option table gives each coefficient's keyword, range and
+ * field; TEXTURE and BUMP name a texture or bump defined earlier. */
 static int scene_parse_attr(scene_parser *p, scene_cur *c)
 {
     static const struct { const char *kw; double lo, hi; size_t off; } opt[] = {
@@ -294,7 +341,7 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
         { "IOR", 1, 10, offsetof(scene_attr, ior) },
     };
     enum { NOPT = sizeof opt / sizeof opt[0] };
-    int seen[NOPT + 1] = { 0 }, i, r;
+    int seen[NOPT + 1] = { 0 }, seen_tex = 0, seen_bump = 0, i, r;
     const scene_lex_tok *kw = &c->st->tok[0], *at;
     scene_attr a;
     scene_parse_attr_defaults(&a);
@@ -317,12 +364,23 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
                 return DIAG_INPUT;
             continue;
         }
+        if ((r = scene_parse_option(c, "TEXTURE", &seen_tex)) != 0) {
+            if (r < 0 || scene_parse_ref(p, c, SCENE_NAMES_TEXTURE, &a.texture))
+                return DIAG_INPUT;
+            continue;
+        }
+        if ((r = scene_parse_option(c, "BUMP", &seen_bump)) != 0) {
+            if (r < 0 || scene_parse_ref(p, c, SCENE_NAMES_BUMP, &a.bump))
+                return DIAG_INPUT;
+            continue;
+        }
         for (i = 0; i < NOPT; i++)
             if ((r = scene_parse_option(c, opt[i].kw, &seen[i])) != 0)
                 break;
         if (i == NOPT)
             return scene_cur_error(c, t, "expected COLOR, AMBIENT, DIFFUSE, SPECULAR, "
-                                   "EXPONENT, MIRROR, TRANSMIT or IOR, found %s", t->text);
+                                   "EXPONENT, MIRROR, TRANSMIT, IOR, TEXTURE or BUMP, "
+                                   "found %s", t->text);
         if (r < 0 || scene_cur_range(c, opt[i].kw, opt[i].lo, opt[i].hi,
                                      (double *)(void *)((char *)&a + opt[i].off)))
             return DIAG_INPUT;
@@ -333,6 +391,20 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
 }
 
 /* ---- solids -------------------------------------------------------------- */
+
+/* A definition made by the statement at kw: no ATTR, no own transform, no
+ * FACE bindings, not placed yet. */
+static void scene_parse_def_init(scene_parse_def *d, csg_op op, const scene_lex_tok *kw)
+{
+    int i;
+    memset(d, 0, sizeof *d);
+    d->loc = scene_parse_loc(kw);
+    d->op = op;
+    d->attr = -1;
+    for (i = 0; i < SCENE_MAX_FACES; i++)
+        d->face_map[i] = -1;
+    scene_xform_identity(d->m);
+}
 
 /* Reads a dimension that must be positive (or, if zero_ok, not negative). */
 static int scene_parse_dim(scene_cur *c, const char *label, int zero_ok, double *v)
@@ -351,16 +423,12 @@ static int scene_parse_prim(scene_parser *p, scene_cur *c, prim_kind kind)
 {
     scene_parse_def d;
     const scene_lex_tok *at;
-    memset(&d, 0, sizeof d);
+    scene_parse_def_init(&d, CSG_LEAF, &c->st->tok[0]);
     if (scene_parse_new_name(p, c, d.name, &at))
         return DIAG_INPUT;
-    d.loc = scene_parse_loc(&c->st->tok[0]);
-    d.op = CSG_LEAF;
     d.kind = kind;
     d.leaves = 1;
     d.depth = 1;
-    d.attr = -1;
-    scene_xform_identity(d.m);
     switch (kind) {
     case PRIM_SPHERE:
         if (scene_parse_dim(c, "radius", 0, &d.dim[0]))
@@ -395,7 +463,7 @@ static int scene_parse_prim(scene_parser *p, scene_cur *c, prim_kind kind)
 
 static int scene_parse_sphere(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_SPHERE); }
 static int scene_parse_cylinder(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_CYLINDER); }
-static int scene_parse_block(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_BLOCK); }
+static int scene_parse_box(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_BLOCK); }
 static int scene_parse_cone(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_CONE); }
 static int scene_parse_halfspace(scene_parser *p, scene_cur *c) { return scene_parse_prim(p, c, PRIM_HALFSPACE); }
 
@@ -431,14 +499,10 @@ static int scene_parse_csg(scene_parser *p, scene_cur *c, csg_op op)
     scene_parse_def d;
     const scene_lex_tok *at, *ot;
     size_t first = p->noperands;
-    memset(&d, 0, sizeof d);
+    scene_parse_def_init(&d, op, &c->st->tok[0]);
     if (scene_parse_new_name(p, c, d.name, &at))
         return DIAG_INPUT;
-    d.loc = scene_parse_loc(&c->st->tok[0]);
-    d.op = op;
-    d.attr = -1;
     d.first = first;
-    scene_xform_identity(d.m);
     while (!scene_cur_at_end(c)) {
         scene_parse_use u;
         const scene_parse_def *od;
@@ -482,20 +546,22 @@ static int scene_parse_diff(scene_parser *p, scene_cur *c) { return scene_parse_
 /* ---- OBJECT: expansion --------------------------------------------------- */
 
 /* Expands definition di under transform m and inherited attribute attr into
- * prims and nodes (capacity reserved by the caller); returns the node index
- * or -1 when a composed transform is unusable (*bad names the primitive).
- * Recursion depth is bounded by SCENE_PARSE_MAX_NEST (checked at definition). */
-static int scene_parse_expand(scene_parser *p, int di, const double m[16], int attr,
+ * prims and nodes (capacity reserved by the caller) for the OBJECT on record
+ * rec; returns the node index or -1 when a composed transform is unusable
+ * (*bad names the primitive). Each primitive copy takes its definition's
+ * FACE bindings, and the definition remembers the first OBJECT that placed
+ * it. Recursion depth is bounded by SCENE_PARSE_MAX_NEST (checked at
+ * definition). */
+static int scene_parse_expand(scene_parser *p, int di, const double m[16], int attr, long rec,
                               const scene_parse_def **bad)
 {
-    const scene_parse_def *d = &p->defs[di];
+    scene_parse_def *d = &p->defs[di];
     scene *s = p->s;
     scene_node *n;
     size_t i;
     int left = -1;
     if (d->op == CSG_LEAF) {
         scene_prim *pr = &s->prims[s->nprims];
-        int k;
         scene_xform_mul(pr->world_from_object, m, d->m);
         if (!scene_xform_ok(pr->world_from_object)) {
             *bad = d;
@@ -504,8 +570,9 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int a
         pr->kind = d->kind;
         memcpy(pr->dim, d->dim, sizeof pr->dim);
         pr->attr = d->attr >= 0 ? d->attr : attr;
-        for (k = 0; k < SCENE_MAX_FACES; k++)
-            pr->face_map[k] = -1;
+        memcpy(pr->face_map, d->face_map, sizeof pr->face_map);
+        if (!d->placed)
+            d->placed = rec;
         memcpy(pr->name, d->name, sizeof pr->name);
         pr->loc = d->loc;
         n = &s->nodes[s->nnodes];
@@ -519,7 +586,7 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int a
         double um[16];
         int r;
         scene_xform_mul(um, m, u->m);
-        r = scene_parse_expand(p, u->def, um, u->attr >= 0 ? u->attr : attr, bad);
+        r = scene_parse_expand(p, u->def, um, u->attr >= 0 ? u->attr : attr, rec, bad);
         if (r < 0)
             return -1;
         if (left < 0) {
@@ -562,7 +629,7 @@ static int scene_parse_object(scene_parser *p, scene_cur *c)
                  sizeof *s->nodes) ||
         mem_grow((void **)&s->roots, &p->cap_roots, s->nroots + 1, sizeof *s->roots))
         return scene_parse_oom(p, at);
-    root = scene_parse_expand(p, u.def, u.m, u.attr >= 0 ? u.attr : 0, &bad);
+    root = scene_parse_expand(p, u.def, u.m, u.attr >= 0 ? u.attr : 0, c->st->tok[0].line, &bad);
     if (root < 0) {
         s->nprims = np0;
         s->nnodes = nn0;
@@ -589,7 +656,7 @@ static const scene_parse_stmt scene_parse_core[] = {
     { "ATTR", "ATTR", scene_parse_attr },
     { "SPHERE", "SPHERE", scene_parse_sphere },
     { "CYLINDER", "CYLINDER", scene_parse_cylinder },
-    { "BLOCK", "BLOCK", scene_parse_block },
+    { "BLOCK", "BLOCK", scene_parse_box },
     { "CONE", "CONE", scene_parse_cone },
     { "HALFSPACE", "HALFSPACE", scene_parse_halfspace },
     { "UNION", "UNION", scene_parse_union },
@@ -605,16 +672,50 @@ static const scene_parse_stmt scene_parse_core[] = {
 /* Statement tables consulted in order; a statement file adds its table here. */
 static const scene_parse_stmt *const scene_parse_tables[] = {
     scene_parse_core,
+    scene_attrmap_stmts,
+    scene_pds_stmts,
+    scene_face_stmts,
     NULL
 };
 
-static const scene_parse_stmt *scene_parse_lookup(const scene_lex_tok *kw)
+/* The entry for keyword kw in the NULL-terminated list of tables, or NULL. */
+static const scene_parse_stmt *scene_parse_find(const scene_parse_stmt *const *tables,
+                                                const scene_lex_tok *kw)
 {
     size_t t, i;
-    for (t = 0; scene_parse_tables[t]; t++)
-        for (i = 0; scene_parse_tables[t][i].keyword; i++)
-            if (scene_cur_is(kw, scene_parse_tables[t][i].keyword))
-                return &scene_parse_tables[t][i];
+    for (t = 0; tables[t]; t++)
+        for (i = 0; tables[t][i].keyword; i++)
+            if (scene_cur_is(kw, tables[t][i].keyword))
+                return &tables[t][i];
+    return NULL;
+}
+
+/* The handler for statement kw: inside an open block only the block's body
+ * statements, elsewhere the statement tables. NULL with the error recorded
+ * for anything else (a keyword known in another place is named as such). */
+static const scene_parse_stmt *scene_parse_lookup(scene_parser *p, const scene_lex_tok *kw)
+{
+    const scene_parse_block *b = &p->block;
+    const scene_parse_stmt *e;
+    if (b->body) {
+        const scene_parse_stmt *const body[] = { b->body, NULL };
+        if ((e = scene_parse_find(body, kw)) != NULL)
+            return e;
+        if ((e = scene_parse_find(scene_parse_tables, kw)) != NULL)
+            diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
+                    "%s: not allowed inside %s (END missing?)", e->canon, b->title);
+        else if ((e = scene_parse_find(scene_pds_bodies, kw)) != NULL)
+            diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
+                    "%s: not allowed in %s, a %s block", e->canon, b->title, b->kind);
+    } else {
+        if ((e = scene_parse_find(scene_parse_tables, kw)) != NULL)
+            return e;
+        if ((e = scene_parse_find(scene_pds_bodies, kw)) != NULL)
+            diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
+                    "%s: allowed only inside a PDS block", e->canon);
+    }
+    if (!e)
+        diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col, "unknown statement %s", kw->text);
     return NULL;
 }
 
@@ -697,12 +798,10 @@ int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, dia
         goto done;
     }
     while ((r = scene_lex_next(&p->lex, &p->st, err)) == 1) {
-        const scene_lex_tok *kw = &p->st.tok[0];
-        const scene_parse_stmt *e = scene_parse_lookup(kw);
+        const scene_parse_stmt *e = scene_parse_lookup(p, &p->st.tok[0]);
         scene_cur c;
         if (!e) {
-            r = diag_at(err, DIAG_INPUT, file, kw->line, kw->col, "unknown statement %s",
-                        kw->text);
+            r = err->status;
             goto done;
         }
         scene_cur_init(&c, &p->st, file, e->canon, err);
@@ -713,6 +812,9 @@ int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, dia
     }
     if (r < 0)
         r = err->status;
+    else if (p->block.body)
+        r = diag_at(err, DIAG_INPUT, file, p->block.loc.line, p->block.loc.col, "%s has no END",
+                    p->block.title);
     else
         r = scene_parse_finish(p);
 done:
@@ -720,6 +822,7 @@ done:
         *out = p->s;
         p->s = NULL;
     }
+    scene_parse_close_block(p);
     scene_free(p->s);
     scene_names_free(&p->names);
     mem_free(p->defs);

@@ -22,6 +22,10 @@
 #define SCENE_PARSE_MAX_NEST     64        /* CSG definitions inside each other */
 #define SCENE_PARSE_MAX_PRIMS    100000    /* primitives after expansion */
 #define SCENE_PARSE_MAX_NODES    400000    /* CSG nodes after expansion */
+#define SCENE_PARSE_MAX_MAPS     4096      /* PDS definitions */
+#define SCENE_PARSE_MAX_TEXTURES 4096
+#define SCENE_PARSE_MAX_BUMPS    4096
+#define SCENE_PARSE_MAX_SEED     2147483647L /* BUMP, HASH and SCATTER seeds */
 
 /* A named solid: a primitive (op CSG_LEAF) or a CSG combination of
  * operands[first .. first+count-1]. */
@@ -36,6 +40,11 @@ typedef struct scene_parse_def {
     size_t first, count;      /* CSG: operands */
     size_t leaves;            /* primitives in one expansion (saturated) */
     int depth;                /* nesting: 1 for a primitive */
+    int face_map[SCENE_MAX_FACES];  /* leaf: PDS bound by FACE (index into
+                                       maps), -1 none; copied to each prim */
+    long face_rec[SCENE_MAX_FACES]; /* record of that FACE statement */
+    long placed;              /* record of the first OBJECT that expanded it
+                                 (0: none yet; FACE must come before) */
 } scene_parse_def;
 
 /* One use of a solid: as a CSG operand or by OBJECT. */
@@ -55,6 +64,19 @@ typedef struct scene_parse_stmt {
     scene_parse_fn fn;
 } scene_parse_stmt;
 
+/* An open block (PDS ... END). While body is set only its statements are
+ * accepted, END among them; everything else is refused with a message
+ * naming the block. The statement file that opened it owns state and frees
+ * it through release, also when the parse stops inside the block. */
+typedef struct scene_parse_block {
+    const scene_parse_stmt *body;   /* NULL: no block is open */
+    char title[8 + SCENE_NAME_MAX]; /* "PDS NAME", for messages */
+    const char *kind;               /* "CPG", ...: what its body describes */
+    scene_loc loc;                  /* the opening statement */
+    void *state;
+    void (*release)(void *state);
+} scene_parse_block;
+
 enum { SCENE_PARSE_EYE, SCENE_PARSE_LOOK, SCENE_PARSE_UP, SCENE_PARSE_FOV,
        SCENE_PARSE_SIZE, SCENE_PARSE_AMBIENT, SCENE_PARSE_BACKGROUND,
        SCENE_PARSE_DEPTH, SCENE_PARSE_VIEW_COUNT };
@@ -70,14 +92,42 @@ struct scene_parser {
     scene_parse_def *defs;     size_t ndefs, cap_defs;
     scene_parse_use *operands; size_t noperands, cap_operands;
     size_t cap_attrs, cap_lights, cap_prims, cap_nodes, cap_roots;
+    size_t cap_maps, cap_textures, cap_bumps;
     scene_loc view_loc[SCENE_PARSE_VIEW_COUNT];  /* each view statement; line 0 = none */
+    scene_parse_block block;
 };
+
+/* Statement tables of the statement files, consulted by scene_parse.c. */
+extern const scene_parse_stmt scene_attrmap_stmts[];       /* TEXTURE BUMP */
+extern const scene_parse_stmt scene_pds_stmts[];           /* PDS */
+extern const scene_parse_stmt scene_face_stmts[];          /* FACE */
+extern const scene_parse_stmt *const scene_pds_bodies[];   /* PDS block bodies,
+                                                              NULL-terminated */
+
+scene_loc scene_parse_loc(const scene_lex_tok *t);
+/* Records "out of memory" (DIAG_IO) at t (NULL: no position). */
+int scene_parse_oom(scene_parser *p, const scene_lex_tok *t);
+/* Accepts option keyword kw once; *seen tracks it. Returns 1 if consumed,
+ * 0 if the next item is something else, -1 after an error (given twice). */
+int scene_parse_option(scene_cur *c, const char *kw, int *seen);
+/* Reads a name at the cursor and resolves it in name space `space`
+ * (scene_names.h) to *index ("<name> is used before it is defined"). */
+int scene_parse_ref(scene_parser *p, scene_cur *c, int space, int *index);
 
 /* Reads "ATTR name"'s name at the cursor and resolves it to an attribute
  * index in *attr ("<name> is used before it is defined"). */
 int scene_parse_attr_ref(scene_parser *p, scene_cur *c, int *attr);
 /* Index of the named solid, or -1. */
 int scene_parse_find_solid(const scene_parser *p, const char *name);
+/* Refuses (at `at`, "<what>: images cannot be read here") a deck that names
+ * an image when the parse has no loader; 0 when it has one. */
+int scene_parse_can_read(scene_parser *p, const char *what, scene_loc at);
+/* Reads image `name` (as written at `at`) with `channels` channels through
+ * the loader into *out: "<what>: cannot read NAME: <reason>". */
+int scene_parse_image(scene_parser *p, const char *what, scene_loc at, const char *name,
+                      int channels, image *out);
+/* Ends the open block: releases its state and accepts every statement again. */
+void scene_parse_close_block(scene_parser *p);
 /* Reads the items after a solid's name at a use or definition: any mix of
  * transforms (composed after m) and at most one "ATTR name" (into *attr,
  * which the caller sets to -1). Stops at the first other item. */
