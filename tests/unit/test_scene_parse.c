@@ -12,6 +12,7 @@
 #include <string.h>
 #include <dirent.h>
 #include "scene/scene.h"
+#include "scene/scene_map.h"
 #include "scene/scene_parse.h"
 #include "util/mem.h"
 #include "support.h"
@@ -711,8 +712,18 @@ static void test_scene_parse_oom_sweep(void **state)
     mem_free(text);
 }
 
+/* Images named by the shipped decks live beside them in scenes/. */
+static int scenes_image(void *ctx, const char *name, int channels, image *out, diag *err)
+{
+    char path[512];
+    (void)ctx;
+    snprintf(path, sizeof path, "scenes/%s", name);
+    return image_read_png(path, channels, out, err);
+}
+
 static scene *parse_file(const char *path)
 {
+    scene_loader ld = {scenes_image, NULL};
     size_t len;
     char *text = test_read_file(path, &len);
     recsrc src;
@@ -723,7 +734,7 @@ static scene *parse_file(const char *path)
     assert_non_null(text);
     diag_init(&err);
     recsrc_from_memory(&src, &m, path, text, len);
-    r = scene_parse(&src, &s, &err);
+    r = scene_parse_with(&src, &ld, &s, &err);
     if (r) {
         char buf[1024];
         diag_format(&err, buf, sizeof buf);
@@ -740,13 +751,20 @@ static void test_scene_parse_shipped_scenes(void **state)
     const scene_node *n;
     (void)state;
     s = parse_file("scenes/fig1.scene");
-    assert_int_equal(s->nprims, 3);
-    assert_int_equal(s->nroots, 3);
+    assert_int_equal(s->nprims, 4);
+    assert_int_equal(s->nroots, 4);
     assert_int_equal(s->nlights, 2);
-    assert_int_equal(s->nattrs, 4);
+    assert_int_equal(s->nattrs, 16);
+    assert_int_equal(s->nmaps, 4);
+    assert_int_equal(s->nbumps, 2);
     assert_int_equal(s->prims[0].kind, PRIM_CYLINDER);
-    assert_true(s->attrs[3].mirror == 0.7 && s->attrs[3].exponent == 80);  /* continued card */
+    assert_string_equal(s->attrs[14].name, "CHROME");
+    assert_true(s->attrs[14].mirror == 0.75 && s->attrs[14].exponent == 80);  /* continued card */
     assert_true(s->view.eye[2] > s->prims[0].dim[1]);    /* seen from above the top face */
+    /* the cylinder's SIDE and TOP carry PDS, its BOTTOM does not */
+    assert_string_equal(s->maps[s->prims[0].face_map[0]]->name, "SIDEMAP");
+    assert_string_equal(s->maps[s->prims[0].face_map[1]]->name, "TOPMAP");
+    assert_int_equal(s->prims[0].face_map[2], -1);
     scene_free(s);
 
     s = parse_file("scenes/csg.scene");
