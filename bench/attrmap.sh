@@ -39,6 +39,7 @@ best() {
   done
   echo "$t"
 }
+fail() { echo "attrmap.sh: $*" >&2; exit 1; }
 
 echo "n,primitives_multi,primitives_single,q16_multi_s,q16_single_s,q16_ratio,f64_multi_s,f64_single_s,f64_ratio"
 for n in $ns; do
@@ -51,12 +52,12 @@ for n in $ns; do
   { header
     awk -v n="$n" 'BEGIN { w = 4 / n
       for (j = 0; j < n; j++) for (i = 0; i < n; i++) {
-        printf "BLOCK T%d_%d %.9f 0.2 %.9f ATTR %s TRANSLATE %.9f 0 %.9f\n", i, j, w, w,
+        printf "BLOCK T%d_%d %.9f 0.2 %.9f ATTR %s -\n  TRANSLATE %.9f 0 %.9f\n", i, j, w, w,
           (i + j) % 2 ? "CREAM" : "RED", -2 + i * w, 0.1 + j * w
         printf "OBJECT T%d_%d\n", i, j } }'
   } > "$tmp/single.scene"
-  qm=$(best "$tmp/multi.scene" q16); qs=$(best "$tmp/single.scene" q16)
-  fm=$(best "$tmp/multi.scene" f64); fs=$(best "$tmp/single.scene" f64)
+  qm=$(best "$tmp/multi.scene" q16) && qs=$(best "$tmp/single.scene" q16) &&
+  fm=$(best "$tmp/multi.scene" f64) && fs=$(best "$tmp/single.scene" f64) || fail "a render failed (n=$n)"
   awk -v n="$n" -v qm="$qm" -v qs="$qs" -v fm="$fm" -v fs="$fs" 'BEGIN {
     printf "%d,%d,%d,%s,%s,%.1f,%s,%s,%.1f\n", n, 2, n * n + 1, qm, qs, qs / qm, fm, fs, fs / fm }'
 done
