@@ -42,12 +42,22 @@ deps:
 	@sh tools/deps.sh
 
 # --- compile ---------------------------------------------------------------
-$(BUILD)/obj/%.o: %.c
+# Objects depend on the flags they are built with, so that a package found
+# later by pkg-config (e.g. OSMesa installed by `make deps`) rebuilds them.
+FLAGS_STAMP := $(BUILD)/flags.stamp
+FLAGS_NOW = $(CC) $(CPPFLAGS) $(ALL_CFLAGS) $(LDFLAGS) $(LIBS)
+.PHONY: FORCE
+FORCE:
+$(FLAGS_STAMP): FORCE
+	@mkdir -p $(@D)
+	@echo '$(FLAGS_NOW)' | cmp -s - $@ || echo '$(FLAGS_NOW)' > $@
+
+$(BUILD)/obj/%.o: %.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@
 
 define MODE_RULE
-$(BUILD)/$(1)/%.o: %.c
+$(BUILD)/$(1)/%.o: %.c $(FLAGS_STAMP)
 	@mkdir -p $$(@D)
 	$$(CC) $$(CPPFLAGS) -DNUM_MODE=$(1) -DNUM_MODE_$(1) $$(ALL_CFLAGS) -c $$< -o $$@
 endef
