@@ -81,9 +81,11 @@ int image_read_png_memory(const char *name, const void *data, size_t len, int ch
 {
     png_image pi;
     image img;
+    void *cmap = NULL;
+    int indexed = channels == IMAGE_INDEXED;
     memset(&pi, 0, sizeof pi);
     pi.version = PNG_IMAGE_VERSION;
-    if (channels != 1 && channels != 3)
+    if (channels != 1 && channels != 3 && !indexed)
         return diag_at(err, DIAG_USAGE, name, 0, 0, "internal: bad channel count");
     if (!png_image_begin_read_from_memory(&pi, data, len))
         return diag_at(err, DIAG_INPUT, name, 0, 0, "not a readable PNG: %s", pi.message);
@@ -93,15 +95,31 @@ int image_read_png_memory(const char *name, const void *data, size_t len, int ch
         png_image_free(&pi);
         return DIAG_INPUT;
     }
+    if (indexed) {
+        /* A palette PNG read colour-mapped keeps the file's palette and so
+         * its indices; any other PNG gives its grey values. */
+        channels = 1;
+        if (pi.format & PNG_FORMAT_FLAG_COLORMAP) {
+            pi.format = PNG_FORMAT_RGB_COLORMAP;
+            cmap = mem_alloc(PNG_IMAGE_COLORMAP_SIZE(pi));
+            if (!cmap) {
+                png_image_free(&pi);
+                return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
+            }
+        }
+    }
     if (image_alloc(&img, (int)pi.width, (int)pi.height, channels, name, err)) {
         png_image_free(&pi);
+        mem_free(cmap);
         return err->status;
     }
-    pi.format = channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
-    if (!png_image_finish_read(&pi, NULL, img.px, img.width * channels, NULL)) {
+    pi.format = cmap ? PNG_FORMAT_RGB_COLORMAP : channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+    if (!png_image_finish_read(&pi, NULL, img.px, img.width * channels, cmap)) {
         image_free(&img);
+        mem_free(cmap);
         return diag_at(err, DIAG_INPUT, name, 0, 0, "corrupt PNG: %s", pi.message);
     }
+    mem_free(cmap);
     *out = img;
     return 0;
 }

@@ -28,7 +28,10 @@ int image_write_png(const char *path, const image *img, diag *err);
 int image_write_png_palette(const char *path, int width, int height, const uint8_t *index,
                             const uint8_t *palette, int ncolors, diag *err);
 /* Reads any PNG, converted to `channels` (1 or 3) 8-bit channels; alpha is
- * composited over black. Refuses files over 1 GiB and sizes over the limits. */
+ * composited over black. With channels IMAGE_INDEXED the result has one
+ * channel holding a palette PNG's palette indices, or another PNG's grey
+ * values. Refuses files over 1 GiB and sizes over the limits. */
+#define IMAGE_INDEXED 0
 int image_read_png(const char *path, int channels, image *out, diag *err);
 /* The same from memory (name is used in diagnostics). */
 int image_read_png_memory(const char *name, const void *data, size_t len, int channels,

@@ -1,13 +1,12 @@
 /* pds_image — pixel-array PDS definitions from a raster (src/image), e.g. a
  * PNG named by the deck. The parser reads the PNG (image_read_png) and maps
  * its pixels to region attribute ids here:
- *   grey image (1 channel): the grey value g is an index; with an index
- *     table the id is index_attr[g], otherwise g itself;
+ *   index image (1 channel, read with IMAGE_INDEXED: a palette PNG's
+ *     palette indices, or another PNG's grey values): g is an index; with an
+ *     index table the id is index_attr[g], otherwise g itself;
  *   RGB image (3 channels): each colour must appear in the colour map
  *     (rgb[3k..3k+2] -> rgb_attr[k]); an unlisted colour is an error.
- * Image rows run top to bottom, which is the order pds_pixels expects.
- * Note: image_read_png expands palette PNGs to grey or RGB, so a palette
- * index is available only when the PNG's palette is a grey ramp. */
+ * Image rows run top to bottom, which is the order pds_pixels expects. */
 #ifndef PDS_IMAGE_H
 #define PDS_IMAGE_H
 #include <stddef.h>

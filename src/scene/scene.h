@@ -138,8 +138,9 @@ typedef struct scene {
 
 /* Reads files a deck names (TEXTURE and PIXELS images). image() reads the
  * image `name` as written in the deck into *out with `channels` (1 or 3)
- * channels, or returns a diag status with err saying why; the parser adds
- * the record and column. */
+ * channels, or IMAGE_INDEXED for one channel of palette indices (see
+ * image_read_png), or returns a diag status with err saying why; the parser
+ * adds the record and column. */
 typedef struct scene_loader {
     int (*image)(void *ctx, const char *name, int channels, image *out, diag *err);
     void *ctx;

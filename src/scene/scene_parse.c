@@ -73,6 +73,8 @@ int scene_parse_image(scene_parser *p, const char *what, scene_loc at, const cha
         return DIAG_INPUT;
     diag_init(&e);
     r = p->loader->image(p->loader->ctx, name, channels, &img, &e);
+    if (channels == IMAGE_INDEXED)
+        channels = 1;
     if (r == 0 && (img.channels != channels || img.width < 1 || img.height < 1 || !img.px)) {
         /* a loader that breaks its contract must not reach the builders */
         snprintf(e.msg, sizeof e.msg, "not a %d-channel image", channels);

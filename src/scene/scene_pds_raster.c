@@ -2,8 +2,9 @@
  *   PDS name PIXELS|QUADTREE w h       KEY c attr lines, then h ROW lines
  *                                      (top row first) of w KEY characters
  *   PDS name PIXELS|QUADTREE IMAGE f   KEY #RRGGBB attr lines (colour image)
- *                                      or one INDEX a0 a1 ... line (grey value
- *                                      g -> a_g), the image read at END
+ *                                      or one INDEX a0 a1 ... line (palette
+ *                                      index or grey value g -> a_g), the
+ *                                      image read at END
  *   PDS name QUADTREE                  CODE lines: ids, NONE or SPLIT in
  *                                      preorder (children SW SE NW NE)
  * Cells and code gather in the block and reach the definition at END. */
@@ -150,7 +151,8 @@ static int raster_row(scene_parser *p, scene_cur *c)
     return 0;
 }
 
-/* INDEX a0 a1 ...: grey value g of the image is region a_g (at most 256). */
+/* INDEX a0 a1 ...: palette index (palette PNG) or grey value g of the
+ * image is region a_g (at most 256). */
 static int raster_index(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
@@ -207,7 +209,7 @@ static int raster_finish(scene_parser *p, scene_pds_block *b)
     if (!b->nrgb && !b->index_rec)
         return diag_at(p->err, DIAG_INPUT, p->file, d->loc.line, d->loc.col,
                        "%s: IMAGE needs KEY #RRGGBB lines or an INDEX line", p->block.title);
-    if (scene_parse_image(p, "PDS", b->file_loc, b->file, b->nrgb ? 3 : 1, &img))
+    if (scene_parse_image(p, "PDS", b->file_loc, b->file, b->nrgb ? 3 : IMAGE_INDEXED, &img))
         return DIAG_INPUT;
     memset(&m, 0, sizeof m);
     m.index_attr = b->index;

@@ -21,6 +21,8 @@ static int fuzz_image(void *ctx, const char *name, int channels, image *out, dia
         return diag_at(err, DIAG_INPUT, name, 0, 0, "cannot open");
     for (i = 0; name[i]; i++)
         h = (h ^ (unsigned char)name[i]) * 16777619u;
+    if (channels == IMAGE_INDEXED)
+        channels = 1;
     r = image_alloc(out, 1 + (int)(h % 5), 1 + (int)(h / 5 % 4), channels, name, err);
     if (r)
         return r;

@@ -90,6 +90,41 @@ static void test_image_palette_png_reads_back_as_colours(void **state)
     assert_string_equal(err.msg, "palette of 0 colours (1..256 allowed)");
 }
 
+/* IMAGE_INDEXED keeps a palette PNG's own indices, even where the palette
+ * repeats a colour or is in no order, and gives another PNG's grey values. */
+static void test_image_palette_indices_kept(void **state)
+{
+    uint8_t palette[3 * 200], index[20 * 10];
+    const uint8_t grey[6] = {0, 7, 200, 255, 1, 2};
+    char path[128];
+    image b;
+    diag err;
+    size_t i;
+    (void)state;
+    diag_init(&err);
+    for (i = 0; i < 200; i++) {              /* colours repeat every 7 entries */
+        palette[3 * i] = (uint8_t)(i % 7 * 30);
+        palette[3 * i + 1] = (uint8_t)(255 - i % 7 * 30);
+        palette[3 * i + 2] = 9;
+    }
+    for (i = 0; i < sizeof index; i++)
+        index[i] = (uint8_t)((i * 37 + 11) % 200);
+    snprintf(path, sizeof path, "%s/idx.png", dir);
+    assert_int_equal(image_write_png_palette(path, 20, 10, index, palette, 200, &err), 0);
+    assert_int_equal(image_read_png(path, IMAGE_INDEXED, &b, &err), 0);
+    assert_int_equal(b.channels, 1);
+    assert_memory_equal(b.px, index, sizeof index);
+    image_free(&b);
+    b.width = 3;
+    b.height = 2;
+    b.channels = 1;
+    b.px = (uint8_t *)grey;
+    assert_int_equal(image_write_png(path, &b, &err), 0);
+    assert_int_equal(image_read_png(path, IMAGE_INDEXED, &b, &err), 0);
+    assert_memory_equal(b.px, grey, 6);
+    image_free(&b);
+}
+
 static void test_image_bad_inputs_are_reported(void **state)
 {
     char path[128], buf[600];
@@ -186,6 +221,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_image_png_round_trip_rgb_and_grey),
         cmocka_unit_test(test_image_palette_png_reads_back_as_colours),
+        cmocka_unit_test(test_image_palette_indices_kept),
         cmocka_unit_test(test_image_bad_inputs_are_reported),
         cmocka_unit_test(test_image_diff_matches_direct_formula),
         cmocka_unit_test(test_image_outfile_commits_only_on_success),
