@@ -16,48 +16,13 @@
 #include "scene/scene_parse.h"
 #include "util/mem.h"
 #include "support.h"
+#include "scene_test.h"
 
 /* A complete view, light and object, appended where a test needs a valid deck. */
 #define TAIL "EYE 0 -10 0\nLOOKAT 0 0 0\nLIGHT 0 -10 10\n"
 
-static int parse_text(const char *text, scene **out, diag *err)
-{
-    recsrc src;
-    recsrc_mem m;
-    diag_init(err);
-    recsrc_from_memory(&src, &m, "t.scene", text, strlen(text));
-    return scene_parse(&src, out, err);
-}
-
-static scene *parse_ok(const char *text)
-{
-    scene *s = NULL;
-    diag err;
-    int r = parse_text(text, &s, &err);
-    if (r) {
-        char buf[1024];
-        diag_format(&err, buf, sizeof buf);
-        fprintf(stderr, "unexpected error: %s\n", buf);
-    }
-    assert_int_equal(r, 0);
-    assert_non_null(s);
-    return s;
-}
-
-static void expect_error(const char *text, const char *want)
-{
-    scene *s = (scene *)(void *)&s;     /* must stay untouched */
-    scene *sentinel = s;
-    diag err;
-    char buf[1024];
-    int r = parse_text(text, &s, &err);
-    diag_format(&err, buf, sizeof buf);
-    if (strcmp(buf, want) != 0)
-        fprintf(stderr, "deck:\n%s\nwant: %s\ngot:  %s\n", text, want, buf);
-    assert_int_equal(r, DIAG_INPUT);
-    assert_ptr_equal(s, sentinel);
-    assert_string_equal(buf, want);
-}
+static scene *parse_ok(const char *text) { return st_parse_ok(text, NULL); }
+static void expect_error(const char *text, const char *want) { st_expect_error(text, NULL, want); }
 
 /* Appends a printf-formatted line to a growing buffer (test helper). */
 static void addf(char **buf, size_t *len, size_t *cap, const char *fmt, ...)

@@ -17,6 +17,7 @@
 #include "scene/scene_parse.h"
 #include "util/mem.h"
 #include "support.h"
+#include "scene_test.h"
 
 /* A complete view, light and object, so that a deck parses to the end. */
 #define TAIL "EYE 0 -10 0\nLOOKAT 0 0 0\nLIGHT 0 -10 10\nSPHERE S 1\nOBJECT S\n"
@@ -53,44 +54,7 @@ static int stub_image(void *ctx, const char *name, int channels, image *out, dia
 
 static const scene_loader stub = { stub_image, NULL };
 
-static int parse_with(const char *text, const scene_loader *ld, scene **out, diag *err)
-{
-    recsrc src;
-    recsrc_mem m;
-    diag_init(err);
-    recsrc_from_memory(&src, &m, "t.scene", text, strlen(text));
-    return scene_parse_with(&src, ld, out, err);
-}
-
-static scene *parse_ok(const char *text)
-{
-    scene *s = NULL;
-    diag err;
-    int r = parse_with(text, &stub, &s, &err);
-    if (r) {
-        char buf[1024];
-        diag_format(&err, buf, sizeof buf);
-        fprintf(stderr, "unexpected error: %s\n", buf);
-    }
-    assert_int_equal(r, 0);
-    assert_non_null(s);
-    return s;
-}
-
-static void expect_error_with(const char *text, const scene_loader *ld, const char *want)
-{
-    scene *s = (scene *)(void *)&s;     /* must stay untouched */
-    scene *sentinel = s;
-    diag err;
-    char buf[1024];
-    int r = parse_with(text, ld, &s, &err);
-    diag_format(&err, buf, sizeof buf);
-    if (strcmp(buf, want) != 0)
-        fprintf(stderr, "deck:\n%s\nwant: %s\ngot:  %s\n", text, want, buf);
-    assert_int_equal(r, DIAG_INPUT);
-    assert_ptr_equal(s, sentinel);
-    assert_string_equal(buf, want);
-}
+static scene *parse_ok(const char *text) { return st_parse_ok(text, &stub); }
 
 static const scene_map *map_named(const scene *s, const char *name)
 {
@@ -677,7 +641,7 @@ static void test_scene_pds_error_texts(void **state)
     size_t i;
     (void)state;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
-        expect_error_with(cases[i].deck, NULL, cases[i].want);
+        st_expect_error(cases[i].deck, NULL, cases[i].want);
 }
 
 /* Errors that involve reading images through the stub loader. */
@@ -723,7 +687,7 @@ static void test_scene_pds_image_errors(void **state)
     size_t i;
     (void)state;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
-        expect_error_with(cases[i].deck, &stub, cases[i].want);
+        st_expect_error(cases[i].deck, &stub, cases[i].want);
 }
 
 /* An INDEX line of 257 entries, and more seeds than a mosaic may hold. */
@@ -737,11 +701,11 @@ static void test_scene_pds_limits(void **state)
     for (i = 0; i < 257; i++)
         len += (size_t)sprintf(deck + len, " NONE%s", i % 10 == 9 ? " -\n" : "");
     sprintf(deck + len, "\n");
-    expect_error_with(deck, &stub, "t.scene:27:32: error: INDEX: more than 256 entries (grey values 0..255)");
+    st_expect_error(deck, &stub, "t.scene:27:32: error: INDEX: more than 256 entries (grey values 0..255)");
     len = (size_t)sprintf(deck, "PDS M MOSAIC\n");
     for (i = 0; i < 17; i++)
         len += (size_t)sprintf(deck + len, "SCATTER 65536 %zu NONE\n", i);
-    expect_error_with(deck, NULL, "t.scene:18:9: error: SCATTER: the mosaic would have more than 1048576 seeds");
+    st_expect_error(deck, NULL, "t.scene:18:9: error: SCATTER: the mosaic would have more than 1048576 seeds");
     free(deck);
 }
 
