@@ -94,6 +94,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     csg_hit h;
     vec3 p, nsn;
     double d[3], ns[3], dn, refl, c[3], color[3], pass[CSCENE_MAX_LIGHTS];
+    double ldir[CSCENE_MAX_LIGHTS][3];        /* unit direction to each light */
     size_t li;
     int i, inside, far;
 
@@ -130,7 +131,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     for (li = 0; li < cs->nlights; li++) {
         vec3 l;
         num dist;
-        double ld[3];
+        double *ld = ldir[li];
         pass[li] = 0;
         if (vec3_normalize(vec3_sub(cs->lights[li].pos, p), &l, &dist))
             continue;
@@ -161,11 +162,10 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     for (i = 0; i < 3; i++)
         c[i] = at->ambient * color[i] * sc->ambient[i];
     for (li = 0; li < cs->nlights; li++) {
-        vec3 l;
-        double ld[3], ndl, spec = 0;
-        if (pass[li] <= 0 || vec3_normalize(vec3_sub(cs->lights[li].pos, p), &l, NULL))
+        const double *ld = ldir[li];
+        double ndl, spec = 0;
+        if (pass[li] <= 0)
             continue;
-        vec3_to_d(l, ld);
         ndl = ns[0] * ld[0] + ns[1] * ld[1] + ns[2] * ld[2];
         if (ndl <= 0)
             continue;
