@@ -9,6 +9,7 @@
 #include "vm_cms_shim/cms_name.h"
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 const char cli_files_help[] =
     "  --disk L=DIR          CMS disk L is host directory DIR (repeatable; else\n"
@@ -88,7 +89,6 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
     char *path;
     size_t n;
     int st;
-    FILE *probe;
     if (name[0] == '/' || !im->dir[0])
         return image_read_png(name, channels, out, err);
     n = strlen(im->dir) + strlen(name) + 2;
@@ -96,7 +96,7 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
     snprintf(path, n, "%s/%s", im->dir, name);
     /* A deck on a CMS disk may name its image by fileid in any case. */
-    if (!(probe = fopen(path, "rb")) && cli_images_fileid(name, im->mode, fid, sizeof fid)) {
+    if (access(path, F_OK) != 0 && cli_images_fileid(name, im->mode, fid, sizeof fid)) {
         cms_name cn;
         diag e2;
         diag_init(&e2);
@@ -107,8 +107,6 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
             cms_name_free(&cn);
         }
     }
-    if (probe)
-        fclose(probe);
     st = image_read_png(path, channels, out, err);
     mem_free(path);
     return st;

@@ -22,6 +22,7 @@
 
 #define SCENE_NAME_MAX 16     /* significant characters of a name */
 #define SCENE_MAX_FACES 6
+#define SCENE_MAX_LIGHTS 64   /* lights in a scene (parser and renderer) */
 
 typedef enum prim_kind {
     PRIM_SPHERE, PRIM_CYLINDER, PRIM_BLOCK, PRIM_CONE, PRIM_HALFSPACE,

@@ -275,8 +275,8 @@ static int scene_parse_light(scene_parser *p, scene_cur *c)
     scene_light l;
     int seen_color = 0, seen_int = 0, r;
     const scene_lex_tok *kw = &c->st->tok[0];
-    if (p->s->nlights >= SCENE_PARSE_MAX_LIGHTS)
-        return scene_cur_error(c, kw, "more than %d lights", SCENE_PARSE_MAX_LIGHTS);
+    if (p->s->nlights >= SCENE_MAX_LIGHTS)
+        return scene_cur_error(c, kw, "more than %d lights", SCENE_MAX_LIGHTS);
     if (scene_cur_numbers(c, l.pos, 3))
         return DIAG_INPUT;
     l.color[0] = l.color[1] = l.color[2] = 1;

@@ -15,7 +15,6 @@
 #include "scene/scene_names.h"
 
 /* Documented limits (docs/scene-format.md). */
-#define SCENE_PARSE_MAX_LIGHTS   64
 #define SCENE_PARSE_MAX_ATTRS    4096
 #define SCENE_PARSE_MAX_DEFS     65536     /* named solids */
 #define SCENE_PARSE_MAX_OPERANDS 100000    /* operands of all CSG statements */

@@ -195,9 +195,9 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         if (a->transmit > 0)
             cs->transparent = 1;
     }
-    if (sc->nlights > CSCENE_MAX_LIGHTS) {
+    if (sc->nlights > SCENE_MAX_LIGHTS) {
         status = diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0, "more than %d lights",
-                         CSCENE_MAX_LIGHTS);
+                         SCENE_MAX_LIGHTS);
         goto fail;
     }
     if (sc->nlights) {

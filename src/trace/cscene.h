@@ -1,14 +1,14 @@
 /* cscene — a scene compiled for one numeric mode: the normalisation into the
  * fixed-point range, compiled primitives, the CSG tree, lights and camera.
  * Built from the double-precision scene model, which must outlive it (the
- * attributes, textures and bump patterns are read from it). Modal: compiled per numeric mode. */
+ * attributes, textures and bump patterns are read from it). Modal: compiled
+ * per numeric mode. */
 #ifndef TRACE_CSCENE_H
 #define TRACE_CSCENE_H
 #include "geom/csg.h"
 #include "pds/pds.h"
 
 #define CSCENE_MAX_DEPTH 32   /* recursion limit applied to scene max_depth */
-#define CSCENE_MAX_LIGHTS 64  /* lights a compiled scene may have */
 
 typedef struct cscene_light {
     vec3 pos;                 /* normalised world */

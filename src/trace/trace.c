@@ -93,8 +93,8 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     geom_surface sf;
     csg_hit h;
     vec3 p, nsn;
-    double d[3], ns[3], dn, refl, c[3], color[3], pass[CSCENE_MAX_LIGHTS];
-    double ldir[CSCENE_MAX_LIGHTS][3];        /* unit direction to each light */
+    double d[3], ns[3], dn, refl, c[3], color[3], pass[SCENE_MAX_LIGHTS];
+    double ldir[SCENE_MAX_LIGHTS][3];        /* unit direction to each light */
     size_t li;
     int i, inside, far;
 
