@@ -14,7 +14,7 @@
 #include <string.h>
 #include <time.h>
 #include "pds/pds_modes.h"
-#include "scene/pds_def.h"
+#include "model/pds_def.h"
 #include "util/mem.h"
 
 #define NPTS 65536

@@ -1,4 +1,5 @@
 /* dl_render — display list to frame to PNG (see dl_render.h). */
+#include "image/image_png.h"
 #include "display5080/dl_render.h"
 #include "display5080/dl_interp.h"
 #include "display5080/dl_raster.h"

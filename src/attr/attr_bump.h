@@ -4,7 +4,7 @@
 #ifndef ATTR_BUMP_H
 #define ATTR_BUMP_H
 #include "geom/geom.h"
-#include "scene/scene.h"
+#include "model/scene.h"
 
 /* Height of pattern b at (u,v), in [-1, 1] (before the amplitude). */
 double attr_bump_height(const scene_bump *b, double u, double v);

@@ -3,7 +3,7 @@
  * runs in double in every numeric mode. */
 #ifndef ATTR_TEXTURE_H
 #define ATTR_TEXTURE_H
-#include "scene/scene.h"
+#include "model/scene.h"
 
 /* Bilinear sample of t at (u,v) in [0,1]^2 (u to the right along the image's
  * rows, v up from its bottom row), tiled repeat[] times and wrapping at the

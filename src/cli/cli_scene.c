@@ -1,7 +1,8 @@
 /* cli_scene — file naming and deck loading for the CLI (see cli_scene.h). */
 #include "cli/cli_scene.h"
 #include "cli/cli.h"
-#include "image/image.h"
+#include "image/image_png.h"
+#include "scene/scene_parse.h"
 #include "util/mem.h"
 #include "vm_cms_shim/cms_cp.h"
 #include "vm_cms_shim/cms_deck.h"

@@ -5,7 +5,7 @@
  * EBCDIC cards, V streams, punch decks). */
 #ifndef CLI_SCENE_H
 #define CLI_SCENE_H
-#include "scene/scene.h"
+#include "model/scene.h"
 #include "vm_cms_shim/cms_disk.h"
 #include "vm_cms_shim/cms_recs.h"
 

@@ -4,7 +4,7 @@
 #include "display5080/dl_dump.h"
 #include "display5080/dl_image.h"
 #include "display5080/dl_validate.h"
-#include "image/image.h"
+#include "image/image_png.h"
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <string.h>

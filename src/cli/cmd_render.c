@@ -1,5 +1,6 @@
 /* cmd_render — `maprt render`: scene deck -> compiled scene for one numeric
  * mode -> tiled render -> PNG (and, later, a DL5080 display list). */
+#include "image/image_png.h"
 #include "cli/cli.h"
 #include "cli/cli_scene.h"
 #include "render/render.h"

@@ -1,4 +1,5 @@
 /* compare — the comparison pipeline (see compare.h). */
+#include "image/image_png.h"
 #include "compare/compare.h"
 #include "compare/diffpic.h"
 #include "compare/imgload.h"

@@ -1,4 +1,5 @@
 /* imgload — PNG or PNM by content (see imgload.h). */
+#include "image/image_png.h"
 #include "compare/imgload.h"
 #include "image/pnm.h"
 #include "util/mem.h"

@@ -473,7 +473,7 @@ int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tm
         e[0] = &s[i].a;
         e[1] = &s[i].b;
         for (k = 0; k < 2; k++) {
-            if (e[k]->t <= NUM_ZERO || e[k]->face == GEOM_FACE_NONE)
+            if (e[k]->t <= NUM_ZERO || e[k]->face == PRIM_FACE_NONE)
                 continue;
             if (e[k]->t > tmax) {
                 i = n;

@@ -1,11 +1,11 @@
 /* geom — mode-independent geometry definitions shared by the per-mode
  * geometry code (src/geom), the tracer (src/trace) and their callers:
- * face numbering per primitive kind, the scene normalisation, and the
+ * the scene normalisation and the
  * double-precision surface record handed to shading and attribute lookup.
  * Face mappings are documented in docs/primitives.md. */
 #ifndef GEOM_H
 #define GEOM_H
-#include "scene/scene.h"
+#include "model/prim_face.h"
 
 /* Normalised world: the bounded part of the scene and the eye are scaled
  * and translated into the cube [-GEOM_W, GEOM_W]^3 (see docs/numerics.md).
@@ -15,32 +15,6 @@
 #define GEOM_TMAX  4096
 #define GEOM_TBIG  16384
 #define GEOM_LIGHT_MAX 1024.0   /* lights farther from the centre are pulled in */
-
-enum { GEOM_FACE_NONE = -1 };
-enum { GEOM_FACE_SPHERE_SURFACE = 0 };
-enum { GEOM_FACE_CYL_SIDE = 0, GEOM_FACE_CYL_TOP = 1, GEOM_FACE_CYL_BOTTOM = 2 };
-enum { GEOM_FACE_CONE_SIDE = 0, GEOM_FACE_CONE_TOP = 1, GEOM_FACE_CONE_BOTTOM = 2 };
-enum { GEOM_FACE_BLOCK_XMIN = 0, GEOM_FACE_BLOCK_XMAX, GEOM_FACE_BLOCK_YMIN, GEOM_FACE_BLOCK_YMAX,
-       GEOM_FACE_BLOCK_ZMIN, GEOM_FACE_BLOCK_ZMAX };
-enum { GEOM_FACE_HALFSPACE_PLANE = 0 };
-
-/* Number of faces of a primitive kind, and a face's name ("SIDE", "XMIN",
- * ...; NULL when out of range). */
-static inline int geom_face_count(int kind)
-{
-    static const int n[PRIM_KIND_COUNT] = {1, 3, 6, 3, 1};
-    return kind >= 0 && kind < PRIM_KIND_COUNT ? n[kind] : 0;
-}
-static inline const char *geom_face_name(int kind, int face)
-{
-    static const char *const names[PRIM_KIND_COUNT][6] = {
-        {"SURFACE"}, {"SIDE", "TOP", "BOTTOM"},
-        {"XMIN", "XMAX", "YMIN", "YMAX", "ZMIN", "ZMAX"},
-        {"SIDE", "TOP", "BOTTOM"}, {"PLANE"}};
-    if (face < 0 || face >= geom_face_count(kind))
-        return NULL;
-    return names[kind][face];
-}
 
 /* p_normalised = scale * p_deck + off. Distances scale by `scale`. */
 typedef struct geom_norm {

@@ -124,12 +124,12 @@ static int prim_fail(diag *err, const char *file, const scene_prim *sp, const ch
 typedef struct prim_cplane { double n[3], p[3]; int face; } prim_cplane;
 
 static const prim_cplane prim_block_planes[6] = {
-    {{-1, 0, 0}, {0, 0, 0}, GEOM_FACE_BLOCK_XMIN}, {{1, 0, 0}, {1, 0, 0}, GEOM_FACE_BLOCK_XMAX},
-    {{0, -1, 0}, {0, 0, 0}, GEOM_FACE_BLOCK_YMIN}, {{0, 1, 0}, {0, 1, 0}, GEOM_FACE_BLOCK_YMAX},
-    {{0, 0, -1}, {0, 0, 0}, GEOM_FACE_BLOCK_ZMIN}, {{0, 0, 1}, {0, 0, 1}, GEOM_FACE_BLOCK_ZMAX}};
+    {{-1, 0, 0}, {0, 0, 0}, PRIM_FACE_BLOCK_XMIN}, {{1, 0, 0}, {1, 0, 0}, PRIM_FACE_BLOCK_XMAX},
+    {{0, -1, 0}, {0, 0, 0}, PRIM_FACE_BLOCK_YMIN}, {{0, 1, 0}, {0, 1, 0}, PRIM_FACE_BLOCK_YMAX},
+    {{0, 0, -1}, {0, 0, 0}, PRIM_FACE_BLOCK_ZMIN}, {{0, 0, 1}, {0, 0, 1}, PRIM_FACE_BLOCK_ZMAX}};
 static const prim_cplane prim_cap_planes[2] = {
-    {{0, 0, 1}, {0, 0, 1}, GEOM_FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, GEOM_FACE_CYL_BOTTOM}};
-static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, GEOM_FACE_HALFSPACE_PLANE}};
+    {{0, 0, 1}, {0, 0, 1}, PRIM_FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, PRIM_FACE_CYL_BOTTOM}};
+static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, PRIM_FACE_HALFSPACE_PLANE}};
 
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
                      const char *file, diag *err)
@@ -313,7 +313,7 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     vec3 du, cl, rel;
     num L, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];
-    int npc = 1, k, side = p->kind == PRIM_SPHERE ? GEOM_FACE_SPHERE_SURFACE : GEOM_FACE_CYL_SIDE;
+    int npc = 1, k, side = p->kind == PRIM_SPHERE ? PRIM_FACE_SPHERE_SURFACE : PRIM_FACE_CYL_SIDE;
 
     if (vec3_normalize(mat3_mul(&p->minv_s, r->d), &du, &L))
         return 0;
@@ -405,8 +405,8 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
         span w = *s;
         num t0 = num_add(tc, num_mul(num_add(sh, pc[k].s0), ratio));
         num t1 = num_add(tc, num_mul(num_add(sh, pc[k].s1), ratio));
-        if (t0 > w.a.t) { w.a.t = t0; w.a.face = pc[k].f0 ? side : GEOM_FACE_NONE; }
-        if (t1 < w.b.t) { w.b.t = t1; w.b.face = pc[k].f1 ? side : GEOM_FACE_NONE; }
+        if (t0 > w.a.t) { w.a.t = t0; w.a.face = pc[k].f0 ? side : PRIM_FACE_NONE; }
+        if (t1 < w.b.t) { w.b.t = t1; w.b.face = pc[k].f1 ? side : PRIM_FACE_NONE; }
         if (w.a.t < w.b.t) {
             *s = w;
             return 1;
@@ -423,7 +423,7 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
     s.a.t = num_neg(big);
     s.b.t = big;
     s.a.prim = s.b.prim = p->id;
-    s.a.face = s.b.face = GEOM_FACE_NONE;
+    s.a.face = s.b.face = PRIM_FACE_NONE;
     if (p->bounded) {
         /* The bound only rejects: span ends always come from faces, so a
          * rounding difference between bound and face cannot hide a face. */
@@ -478,7 +478,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
     case PRIM_CONE: {
         double a = num_to_d(p->cone_a), k = num_to_d(p->cone_k), rf;
         if (p->kind == PRIM_CYLINDER) { a = 1; k = 0; }
-        if (face == GEOM_FACE_CYL_SIDE) {
+        if (face == PRIM_FACE_CYL_SIDE) {
             planar = 0;
             u = th / (2 * PRIM_PI);
             v = l[2];
@@ -486,26 +486,26 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
             du[0] = -2 * PRIM_PI * l[1]; du[1] = 2 * PRIM_PI * l[0];
             dv[0] = k * cos(th); dv[1] = k * sin(th); dv[2] = 1;
         } else {
-            rf = face == GEOM_FACE_CYL_TOP ? a + k : a;
+            rf = face == PRIM_FACE_CYL_TOP ? a + k : a;
             if (rf <= 0) {
                 u = v = 0.5;
-            } else if (face == GEOM_FACE_CYL_TOP) {
+            } else if (face == PRIM_FACE_CYL_TOP) {
                 u = (l[0] / rf + 1) / 2; v = (l[1] / rf + 1) / 2;
             } else {
                 u = (1 - l[0] / rf) / 2; v = (l[1] / rf + 1) / 2;
             }
-            du[0] = face == GEOM_FACE_CYL_TOP ? 2 * rf : -2 * rf;
+            du[0] = face == PRIM_FACE_CYL_TOP ? 2 * rf : -2 * rf;
             dv[1] = 2 * rf;
         }
         break;
     }
     case PRIM_BLOCK:
         switch (face) {
-        case GEOM_FACE_BLOCK_XMIN: u = 1 - l[1]; v = l[2]; du[1] = -1; dv[2] = 1; break;
-        case GEOM_FACE_BLOCK_XMAX: u = l[1]; v = l[2]; du[1] = 1; dv[2] = 1; break;
-        case GEOM_FACE_BLOCK_YMIN: u = l[0]; v = l[2]; du[0] = 1; dv[2] = 1; break;
-        case GEOM_FACE_BLOCK_YMAX: u = 1 - l[0]; v = l[2]; du[0] = -1; dv[2] = 1; break;
-        case GEOM_FACE_BLOCK_ZMIN: u = 1 - l[0]; v = l[1]; du[0] = -1; dv[1] = 1; break;
+        case PRIM_FACE_BLOCK_XMIN: u = 1 - l[1]; v = l[2]; du[1] = -1; dv[2] = 1; break;
+        case PRIM_FACE_BLOCK_XMAX: u = l[1]; v = l[2]; du[1] = 1; dv[2] = 1; break;
+        case PRIM_FACE_BLOCK_YMIN: u = l[0]; v = l[2]; du[0] = 1; dv[2] = 1; break;
+        case PRIM_FACE_BLOCK_YMAX: u = 1 - l[0]; v = l[2]; du[0] = -1; dv[2] = 1; break;
+        case PRIM_FACE_BLOCK_ZMIN: u = 1 - l[0]; v = l[1]; du[0] = -1; dv[1] = 1; break;
         default:              u = l[0]; v = l[1]; du[0] = 1; dv[1] = 1; break;
         }
         break;

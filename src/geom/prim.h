@@ -58,7 +58,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
 /* Intersects r with p; the bounding test rejects p when it lies wholly
  * outside the parameters [tmin, tmax] (the span itself is not clipped).
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
- * and carry GEOM_FACE_NONE) or 0 when the ray misses. */
+ * and carry PRIM_FACE_NONE) or 0 when the ray misses. */
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
 
 /* Surface data of face `face` of p at world point pt (a hit point). */

@@ -7,12 +7,12 @@
 #ifndef GEOM_SPAN_H
 #define GEOM_SPAN_H
 #include "num/num.h"
-#include "scene/scene.h"
+#include "model/scene.h"
 
 typedef struct span_end {
     num t;
     int prim;          /* primitive index, -1 for an unbounded end */
-    int face;          /* face id (geom.h), GEOM_FACE_NONE for an unbounded end */
+    int face;          /* face id (geom.h), PRIM_FACE_NONE for an unbounded end */
 } span_end;
 
 typedef struct span {

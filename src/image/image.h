@@ -1,6 +1,6 @@
-/* image — an 8-bit raster (grey or RGB) and its PNG input/output through
- * libpng's simplified API. Shared by the renderer (true-colour output), the
- * display shim (palette output) and compare (reading references). */
+/* image — an 8-bit raster (grey or RGB), with no file I/O: the type the
+ * scene model (textures), the renderer (framebuffer), the display shim and
+ * compare share. Its file formats are image_png.h and pnm.h. */
 #ifndef IMAGE_H
 #define IMAGE_H
 #include <stddef.h>
@@ -20,20 +20,4 @@ typedef struct image {
  * runs out. `what` names the image in the diagnostic. */
 int image_alloc(image *img, int width, int height, int channels, const char *what, diag *err);
 void image_free(image *img);
-
-/* Writes img as an 8-bit grey or RGB PNG, committed on close. */
-int image_write_png(const char *path, const image *img, diag *err);
-/* Writes an 8-bit palette PNG: index has width*height entries (top row
- * first); palette holds ncolors RGB triples (1..256). */
-int image_write_png_palette(const char *path, int width, int height, const uint8_t *index,
-                            const uint8_t *palette, int ncolors, diag *err);
-/* Reads any PNG, converted to `channels` (1 or 3) 8-bit channels; alpha is
- * composited over black. With channels IMAGE_INDEXED the result has one
- * channel holding a palette PNG's palette indices, or another PNG's grey
- * values. Refuses files over 1 GiB and sizes over the limits. */
-#define IMAGE_INDEXED 0
-int image_read_png(const char *path, int channels, image *out, diag *err);
-/* The same from memory (name is used in diagnostics). */
-int image_read_png_memory(const char *name, const void *data, size_t len, int channels,
-                          image *out, diag *err);
 #endif

@@ -16,7 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "num/num.h"
-#include "scene/pds_def.h"
+#include "model/pds_def.h"
 #include "util/diag.h"
 #include "pds/pds_kind.h"
 

@@ -13,7 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "num/num.h"
-#include "scene/pds_def.h"
+#include "model/pds_def.h"
 #include "util/diag.h"
 
 typedef struct NS(pds_kind_ops) {

@@ -6,7 +6,7 @@
 #define PDS_MODES_H
 #include <stddef.h>
 #include <stdint.h>
-#include "scene/pds_def.h"
+#include "model/pds_def.h"
 #include "util/diag.h"
 
 typedef struct pds_mode_ops {

@@ -6,7 +6,7 @@
 #ifndef RENDER_H
 #define RENDER_H
 #include <stdint.h>
-#include "scene/scene.h"
+#include "model/scene.h"
 #include "image/image.h"
 #include "util/diag.h"
 

@@ -5,7 +5,7 @@
  * Each has a name space of its own. The image is read through the parse's
  * loader once the statement is known to be well formed. */
 #include <string.h>
-#include "scene/scene_parse.h"
+#include "scene/scene_parser.h"
 #include "util/mem.h"
 
 /* Reads the new name of a texture or bump (name space `space`, `count` of

@@ -9,7 +9,7 @@
 #ifndef SCENE_CUR_H
 #define SCENE_CUR_H
 #include <stddef.h>
-#include "scene/scene.h"
+#include "model/scene.h"
 #include "scene/scene_lex.h"
 #include "util/diag.h"
 

@@ -1,11 +1,11 @@
 /* scene_face — FACE solid face pdsname: binds a PDS closed earlier to one
- * face of a primitive definition (face names from geom_face_name). The
+ * face of a primitive definition (face names from prim_face_name). The
  * binding is kept with the definition and copied into every primitive an
  * OBJECT expands from it afterwards (scene_prim.face_map), so FACE must come
  * before the first OBJECT that places the primitive. */
 #include <stdio.h>
-#include "geom/geom.h"
-#include "scene/scene_parse.h"
+#include "model/prim_face.h"
+#include "scene/scene_parser.h"
 
 /* Statement keywords of the primitive kinds, in prim_kind order. */
 static const char *const face_kind_names[PRIM_KIND_COUNT] = {
@@ -18,18 +18,18 @@ static int face_name(scene_cur *c, int kind, int *face)
     const scene_lex_tok *t = scene_cur_peek(c);
     char list[80] = "";
     size_t len = 0;
-    int f, n = geom_face_count(kind);
+    int f, n = prim_face_count(kind);
     if (!t)
         return scene_cur_error(c, NULL, "missing face name");
     for (f = 0; f < n; f++)
-        if (scene_cur_is(t, geom_face_name(kind, f))) {
+        if (scene_cur_is(t, prim_face_name(kind, f))) {
             *face = f;
             c->pos++;
             return 0;
         }
     for (f = 0; f < n && len < sizeof list; f++)
         len += (size_t)snprintf(list + len, sizeof list - len, "%s%s", f ? ", " : "",
-                                geom_face_name(kind, f));
+                                prim_face_name(kind, f));
     return scene_cur_error(c, t, "a %s has no face %s (it has %s)", face_kind_names[kind], t->text,
                            list);
 }
@@ -56,7 +56,7 @@ static int face_statement(scene_parser *p, scene_cur *c)
         return DIAG_INPUT;
     if (d->face_map[f] >= 0)
         return scene_cur_error(c, ft, "%s of %s is already bound on record %ld",
-                               geom_face_name(d->kind, f), st->text, d->face_rec[f]);
+                               prim_face_name(d->kind, f), st->text, d->face_rec[f]);
     if (scene_parse_ref(p, c, SCENE_NAMES_PDS, &m) || scene_cur_finish(c))
         return DIAG_INPUT;
     d->face_map[f] = m;

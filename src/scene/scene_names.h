@@ -5,7 +5,7 @@
 #ifndef SCENE_NAMES_H
 #define SCENE_NAMES_H
 #include <stddef.h>
-#include "scene/scene.h"
+#include "model/scene.h"
 
 /* The deck's name spaces; a PDS block's own table holds its CPG nodes and
  * its KEY colours. */

@@ -13,8 +13,8 @@
 #define SCENE_PDS_H
 #include <stddef.h>
 #include <stdint.h>
-#include "scene/scene_map.h"
-#include "scene/scene_parse.h"
+#include "model/scene_map.h"
+#include "scene/scene_parser.h"
 
 /* The block being defined (scene_parse_block.state). */
 typedef struct scene_pds_block {

@@ -8,11 +8,12 @@
  *   PDS name QUADTREE                  CODE lines: ids, NONE or SPLIT in
  *                                      preorder (children SW SE NW NE)
  * Cells and code gather in the block and reach the definition at END. */
+#include "image/image_png.h"
 #include "scene/scene_pds.h"
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
-#include "scene/pds_image.h"
+#include "model/pds_image.h"
 #include "util/mem.h"
 
 static pds_pixels *raster_pixels(pds_def *d)

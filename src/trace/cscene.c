@@ -1,6 +1,6 @@
 /* cscene — scene analysis and per-mode compilation (see cscene.h). */
 #include "trace/cscene.h"
-#include "scene/scene_map.h"
+#include "model/scene_map.h"
 #include "util/mem.h"
 #include <math.h>
 #include <string.h>

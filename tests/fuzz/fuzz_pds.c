@@ -6,7 +6,7 @@
 #include <stdint.h>
 #include <string.h>
 #include "pds/pds_modes.h"
-#include "scene/pds_def.h"
+#include "model/pds_def.h"
 
 typedef struct stream { const uint8_t *p; size_t n; } stream;
 

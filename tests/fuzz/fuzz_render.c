@@ -4,7 +4,7 @@
  * scenes/ and bench/. */
 #include <stddef.h>
 #include <stdint.h>
-#include "scene/scene.h"
+#include "scene/scene_parse.h"
 #include "render/render.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

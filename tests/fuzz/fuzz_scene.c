@@ -6,8 +6,9 @@
  * attribute-mapping decks. */
 #include <stddef.h>
 #include <stdint.h>
-#include "scene/scene.h"
-#include "scene/scene_map.h"
+#include "image/image_png.h"
+#include "scene/scene_parse.h"
+#include "model/scene_map.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

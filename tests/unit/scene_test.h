@@ -5,7 +5,7 @@
 #define SCENE_TEST_H
 #include <stdio.h>
 #include <string.h>
-#include "scene/scene.h"
+#include "scene/scene_parse.h"
 #include "util/recsrc.h"
 
 /* Parses text as deck "t.scene" through ld (NULL: no images). */

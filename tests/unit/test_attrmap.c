@@ -10,7 +10,7 @@
 #include "tracer_test.h"
 #include "attr/attr_bump.h"
 #include "attr/attr_texture.h"
-#include "scene/scene_map.h"
+#include "model/scene_map.h"
 #include "util/mem.h"
 
 static double at_dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -307,7 +307,7 @@ static void test_render_face_pds_lookup(void **state)
     assert_true(pds_cpg_rect(&m->def, 0, 0, 0.5, 1, 2, loc) >= 0);   /* attrs[2] = RED */
     sc->maps[0] = m;
     sc->nmaps = 1;
-    sc->prims[0].face_map[GEOM_FACE_BLOCK_YMIN] = 0;
+    sc->prims[0].face_map[PRIM_FACE_BLOCK_YMIN] = 0;
     for (i = 0; i < 4; i++) {
         render_fb fb;
         render_stats st;

@@ -358,8 +358,8 @@ static void test_csg_coincident_oblique_rays(void **state)
                 d[i] = tgt[i] - o[i];
             if (!ops->hit(cs, o, d, &h))
                 continue;
-            if ((h.prim == plate && h.face == GEOM_FACE_BLOCK_ZMAX && z == 1.0)
-                || (h.prim == plug && h.face != GEOM_FACE_CYL_SIDE))
+            if ((h.prim == plate && h.face == PRIM_FACE_BLOCK_ZMAX && z == 1.0)
+                || (h.prim == plug && h.face != PRIM_FACE_CYL_SIDE))
                 wrong++;
             if (h.prim == plug) {
                 /* the wall is seen from inside the cylinder: normal flipped */

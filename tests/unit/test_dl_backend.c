@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include "image/image_png.h"
 #include "display5080/dl_encode.h"
 #include "display5080/dl_render.h"
 #include "util/mem.h"

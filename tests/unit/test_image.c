@@ -11,7 +11,7 @@
 #include <unistd.h>
 #include <dirent.h>
 #include <sys/stat.h>
-#include "image/image.h"
+#include "image/image_png.h"
 #include "image/image_diff.h"
 #include "util/mem.h"
 #include "util/outfile.h"

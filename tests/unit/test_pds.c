@@ -14,9 +14,9 @@
 #include <string.h>
 #include "num/fx.h"
 #include "pds/pds_modes.h"
-#include "scene/pds_curve.h"
-#include "scene/pds_def.h"
-#include "scene/pds_image.h"
+#include "model/pds_curve.h"
+#include "model/pds_def.h"
+#include "model/pds_image.h"
 #include "util/mem.h"
 #include "support.h"
 

@@ -69,7 +69,7 @@ static void prim_check_scene(const probe_ops *ops, const scene *sc, uint64_t *s,
         tt_to_object(sp, h.p, q);
         sd = tt_sdf(sp, q);
         /* the direction is rounded too, so the error grows with distance */
-        if (fabs(sd) > 2 * tol * (1 + h.t / 10) || h.face < 0 || h.face >= geom_face_count(sp->kind)) {
+        if (fabs(sd) > 2 * tol * (1 + h.t / 10) || h.face < 0 || h.face >= prim_face_count(sp->kind)) {
             if (f->surf++ < 3)
                 printf("# %s kind %d: hit off the surface by %.3g (face %d)\n", ops->name, sp->kind, sd, h.face);
         }
@@ -134,21 +134,21 @@ static void test_prim_face_mapping(void **state)
         int face;
         double u, v;
     } c[] = {
-        {"CYLINDER P 1 2", {0.5, 0.5, 5}, {0, 0, -1}, GEOM_FACE_CYL_TOP, 0.75, 0.75},
-        {"CYLINDER P 1 2", {0.5, 0.5, -5}, {0, 0, 1}, GEOM_FACE_CYL_BOTTOM, 0.25, 0.75},
-        {"CYLINDER P 1 2", {5, 0, 0.5}, {-1, 0, 0}, GEOM_FACE_CYL_SIDE, 0.0, 0.25},
-        {"CYLINDER P 1 2", {0, 5, 1}, {0, -1, 0}, GEOM_FACE_CYL_SIDE, 0.25, 0.5},
-        {"BLOCK P 2 4 8", {5, 1, 2}, {-1, 0, 0}, GEOM_FACE_BLOCK_XMAX, 0.25, 0.25},
-        {"BLOCK P 2 4 8", {-5, 1, 2}, {1, 0, 0}, GEOM_FACE_BLOCK_XMIN, 0.75, 0.25},
-        {"BLOCK P 2 4 8", {0.5, -5, 2}, {0, 1, 0}, GEOM_FACE_BLOCK_YMIN, 0.25, 0.25},
-        {"BLOCK P 2 4 8", {0.5, 9, 2}, {0, -1, 0}, GEOM_FACE_BLOCK_YMAX, 0.75, 0.25},
-        {"BLOCK P 2 4 8", {0.5, 1, 20}, {0, 0, -1}, GEOM_FACE_BLOCK_ZMAX, 0.25, 0.25},
-        {"BLOCK P 2 4 8", {0.5, 1, -20}, {0, 0, 1}, GEOM_FACE_BLOCK_ZMIN, 0.75, 0.25},
-        {"SPHERE P 2", {0, 0, 9}, {0, 0, -1}, GEOM_FACE_SPHERE_SURFACE, 0.0, 1.0},
-        {"SPHERE P 2", {0, -9, 0}, {0, 1, 0}, GEOM_FACE_SPHERE_SURFACE, 0.75, 0.5},
-        {"CONE P 2 1 3", {0.5, 0, 9}, {0, 0, -1}, GEOM_FACE_CONE_TOP, 0.75, 0.5},
-        {"CONE P 2 1 3", {9, 0, 1.5}, {-1, 0, 0}, GEOM_FACE_CONE_SIDE, 0.0, 0.5},
-        {"HALFSPACE P", {2.25, -3.5, 9}, {0, 0, -1}, GEOM_FACE_HALFSPACE_PLANE, 0.25, 0.5},
+        {"CYLINDER P 1 2", {0.5, 0.5, 5}, {0, 0, -1}, PRIM_FACE_CYL_TOP, 0.75, 0.75},
+        {"CYLINDER P 1 2", {0.5, 0.5, -5}, {0, 0, 1}, PRIM_FACE_CYL_BOTTOM, 0.25, 0.75},
+        {"CYLINDER P 1 2", {5, 0, 0.5}, {-1, 0, 0}, PRIM_FACE_CYL_SIDE, 0.0, 0.25},
+        {"CYLINDER P 1 2", {0, 5, 1}, {0, -1, 0}, PRIM_FACE_CYL_SIDE, 0.25, 0.5},
+        {"BLOCK P 2 4 8", {5, 1, 2}, {-1, 0, 0}, PRIM_FACE_BLOCK_XMAX, 0.25, 0.25},
+        {"BLOCK P 2 4 8", {-5, 1, 2}, {1, 0, 0}, PRIM_FACE_BLOCK_XMIN, 0.75, 0.25},
+        {"BLOCK P 2 4 8", {0.5, -5, 2}, {0, 1, 0}, PRIM_FACE_BLOCK_YMIN, 0.25, 0.25},
+        {"BLOCK P 2 4 8", {0.5, 9, 2}, {0, -1, 0}, PRIM_FACE_BLOCK_YMAX, 0.75, 0.25},
+        {"BLOCK P 2 4 8", {0.5, 1, 20}, {0, 0, -1}, PRIM_FACE_BLOCK_ZMAX, 0.25, 0.25},
+        {"BLOCK P 2 4 8", {0.5, 1, -20}, {0, 0, 1}, PRIM_FACE_BLOCK_ZMIN, 0.75, 0.25},
+        {"SPHERE P 2", {0, 0, 9}, {0, 0, -1}, PRIM_FACE_SPHERE_SURFACE, 0.0, 1.0},
+        {"SPHERE P 2", {0, -9, 0}, {0, 1, 0}, PRIM_FACE_SPHERE_SURFACE, 0.75, 0.5},
+        {"CONE P 2 1 3", {0.5, 0, 9}, {0, 0, -1}, PRIM_FACE_CONE_TOP, 0.75, 0.5},
+        {"CONE P 2 1 3", {9, 0, 1.5}, {-1, 0, 0}, PRIM_FACE_CONE_SIDE, 0.0, 0.5},
+        {"HALFSPACE P", {2.25, -3.5, 9}, {0, 0, -1}, PRIM_FACE_HALFSPACE_PLANE, 0.25, 0.5},
     };
     size_t i;
     (void)state;
@@ -242,14 +242,14 @@ static void test_prim_stress_grazing(void **state)
 static void test_prim_face_names(void **state)
 {
     (void)state;
-    assert_string_equal(geom_face_name(PRIM_CYLINDER, GEOM_FACE_CYL_TOP), "TOP");
-    assert_string_equal(geom_face_name(PRIM_BLOCK, GEOM_FACE_BLOCK_ZMAX), "ZMAX");
-    assert_string_equal(geom_face_name(PRIM_CONE, GEOM_FACE_CONE_SIDE), "SIDE");
-    assert_string_equal(geom_face_name(PRIM_SPHERE, 0), "SURFACE");
-    assert_string_equal(geom_face_name(PRIM_HALFSPACE, 0), "PLANE");
-    assert_null(geom_face_name(PRIM_SPHERE, 1));
-    assert_null(geom_face_name(PRIM_BLOCK, -1));
-    assert_int_equal(geom_face_count(PRIM_BLOCK), 6);
+    assert_string_equal(prim_face_name(PRIM_CYLINDER, PRIM_FACE_CYL_TOP), "TOP");
+    assert_string_equal(prim_face_name(PRIM_BLOCK, PRIM_FACE_BLOCK_ZMAX), "ZMAX");
+    assert_string_equal(prim_face_name(PRIM_CONE, PRIM_FACE_CONE_SIDE), "SIDE");
+    assert_string_equal(prim_face_name(PRIM_SPHERE, 0), "SURFACE");
+    assert_string_equal(prim_face_name(PRIM_HALFSPACE, 0), "PLANE");
+    assert_null(prim_face_name(PRIM_SPHERE, 1));
+    assert_null(prim_face_name(PRIM_BLOCK, -1));
+    assert_int_equal(prim_face_count(PRIM_BLOCK), 6);
 }
 
 /* A scene model built in C with a bad primitive: exact diagnostic. */

@@ -6,6 +6,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <stdlib.h>
+#include "image/image_png.h"
 #include "tracer_test.h"
 #include "util/mem.h"
 #include "util/outfile.h"

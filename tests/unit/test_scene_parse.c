@@ -11,9 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <dirent.h>
-#include "scene/scene.h"
-#include "scene/scene_map.h"
+#include "image/image_png.h"
 #include "scene/scene_parse.h"
+#include "model/scene_map.h"
+#include "scene/scene_parser.h"
 #include "util/mem.h"
 #include "support.h"
 #include "scene_test.h"

@@ -12,9 +12,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "scene/scene.h"
-#include "scene/scene_map.h"
+#include "image/image_png.h"
 #include "scene/scene_parse.h"
+#include "model/scene_map.h"
+#include "scene/scene_parser.h"
 #include "util/mem.h"
 #include "support.h"
 #include "scene_test.h"

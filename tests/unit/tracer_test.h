@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "scene/scene.h"
+#include "scene/scene_parse.h"
 #include "trace/probe.h"
 #include "render/render.h"
 #include "util/recsrc.h"

@@ -1,5 +1,5 @@
 /* scene — the scene model, in double precision, exactly as the scene deck
- * describes it. The parser builds it (scene_parse.c), analysis and the
+ * describes it. The deck parser (src/scene) builds it, analysis and the
  * per-mode compilers read it; it is never modified after parsing.
  *
  * Geometry conventions (documented in docs/primitives.md):
@@ -13,11 +13,10 @@
  *   - world_from_object is a 4x4 affine matrix, row-major, acting on column
  *     vectors (p_world = M * p_object), composed from the deck's transforms.
  * All arrays are owned by the scene and released by scene_free. */
-#ifndef SCENE_H
-#define SCENE_H
+#ifndef MODEL_SCENE_H
+#define MODEL_SCENE_H
 #include <stddef.h>
 #include "util/diag.h"
-#include "util/recsrc.h"
 #include "image/image.h"
 
 #define SCENE_NAME_MAX 16     /* significant characters of a name */
@@ -137,22 +136,6 @@ typedef struct scene {
     scene_bump *bumps;             size_t nbumps;
 } scene;
 
-/* Reads files a deck names (TEXTURE and PIXELS images). image() reads the
- * image `name` as written in the deck into *out with `channels` (1 or 3)
- * channels, or IMAGE_INDEXED for one channel of palette indices (see
- * image_read_png), or returns a diag status with err saying why; the parser
- * adds the record and column. */
-typedef struct scene_loader {
-    int (*image)(void *ctx, const char *name, int channels, image *out, diag *err);
-    void *ctx;
-} scene_loader;
-
-/* Parses a scene deck. On success *out owns a new scene and 0 is returned;
- * otherwise err holds the first error (file:record:column) and *out is
- * untouched. Never crashes, hangs or allocates without bound. */
-int scene_parse(const recsrc *src, scene **out, diag *err);
-/* The same, reading the files the deck names through ld (NULL: a deck that
- * names an image is refused). */
-int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, diag *err);
+/* Frees s and every array it owns; NULL is allowed. */
 void scene_free(scene *s);
 #endif

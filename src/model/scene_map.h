@@ -5,8 +5,8 @@
  * scene_prim.face_map. */
 #ifndef SCENE_MAP_H
 #define SCENE_MAP_H
-#include "scene/pds_def.h"
-#include "scene/scene.h"
+#include "model/pds_def.h"
+#include "model/scene.h"
 
 typedef struct scene_map {
     char name[SCENE_NAME_MAX + 1];

@@ -1,5 +1,5 @@
 /* pds_image — raster to pixel-array PDS definition (see pds_image.h). */
-#include "scene/pds_image.h"
+#include "model/pds_image.h"
 #include <stdlib.h>
 #include "util/mem.h"
 

@@ -1,7 +1,7 @@
 /* scene — releasing a parsed scene (the model is in scene.h; scene_parse.c
  * builds it). */
-#include "scene/scene.h"
-#include "scene/scene_map.h"
+#include "model/scene.h"
+#include "model/scene_map.h"
 #include "util/mem.h"
 
 /* Frees s and every array it owns; NULL is allowed. */

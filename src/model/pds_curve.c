@@ -1,5 +1,5 @@
 /* pds_curve — B-spline flattening and polyline simplicity (see pds_curve.h). */
-#include "scene/pds_curve.h"
+#include "model/pds_curve.h"
 #include <math.h>
 #include <stdlib.h>
 #include "util/mem.h"

@@ -14,7 +14,7 @@
 #define PDS_DEF_H
 #include <stddef.h>
 #include <stdint.h>
-#include "scene/scene.h"
+#include "model/scene.h"
 #include "util/diag.h"
 
 #define PDS_NONE     (-1)     /* "no region": the face's base attribute */

@@ -12,7 +12,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "image/image.h"
-#include "scene/pds_def.h"
+#include "model/pds_def.h"
 
 typedef struct pds_image_map {
     const int32_t *index_attr; size_t nindex;  /* grey: optional table */

@@ -1,10 +1,10 @@
 /* pds_def — PDS definitions: builders, placement algebra and validation
  * (see pds_def.h; the error texts are listed in docs/pds.md). */
-#include "scene/pds_def.h"
+#include "model/pds_def.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "scene/pds_curve.h"
+#include "model/pds_curve.h"
 #include "util/mem.h"
 
 static const double identity[6] = { 1, 0, 0, 0, 1, 0 };

@@ -1,0 +1,114 @@
+/* image_png — PNG input and output of 8-bit rasters through libpng's
+ * simplified API (no setjmp); outputs are committed through outfile. */
+#include "image/image_png.h"
+#include "util/mem.h"
+#include "util/outfile.h"
+#include <png.h>
+#include <string.h>
+
+/* Encodes a prepared png_image to memory, then commits it through outfile. */
+static int image_png_commit(const char *path, png_image *pi, const void *px, int row_stride,
+                            const void *colormap, diag *err)
+{
+    png_alloc_size_t size = 0;
+    void *buf;
+    int rc;
+    if (!png_image_write_to_memory(pi, NULL, &size, 0, px, row_stride, colormap))
+        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
+    buf = mem_alloc(size);
+    if (!buf)
+        return diag_at(err, DIAG_IO, path, 0, 0, "out of memory");
+    if (!png_image_write_to_memory(pi, buf, &size, 0, px, row_stride, colormap)) {
+        mem_free(buf);
+        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
+    }
+    rc = outfile_write_all(path, buf, size, err);
+    mem_free(buf);
+    return rc;
+}
+
+int image_write_png(const char *path, const image *img, diag *err)
+{
+    png_image pi;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = (png_uint_32)img->width;
+    pi.height = (png_uint_32)img->height;
+    pi.format = img->channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+    return image_png_commit(path, &pi, img->px, img->width * img->channels, NULL, err);
+}
+
+int image_write_png_palette(const char *path, int width, int height, const uint8_t *index,
+                            const uint8_t *palette, int ncolors, diag *err)
+{
+    png_image pi;
+    if (ncolors < 1 || ncolors > 256)
+        return diag_at(err, DIAG_INPUT, path, 0, 0, "palette of %d colours (1..256 allowed)", ncolors);
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    pi.width = (png_uint_32)width;
+    pi.height = (png_uint_32)height;
+    pi.format = PNG_FORMAT_RGB_COLORMAP;
+    pi.colormap_entries = (png_uint_32)ncolors;
+    return image_png_commit(path, &pi, index, width, palette, err);
+}
+
+int image_read_png_memory(const char *name, const void *data, size_t len, int channels,
+                          image *out, diag *err)
+{
+    png_image pi;
+    image img;
+    void *cmap = NULL;
+    int indexed = channels == IMAGE_INDEXED;
+    memset(&pi, 0, sizeof pi);
+    pi.version = PNG_IMAGE_VERSION;
+    if (channels != 1 && channels != 3 && !indexed)
+        return diag_at(err, DIAG_USAGE, name, 0, 0, "internal: bad channel count");
+    if (!png_image_begin_read_from_memory(&pi, data, len))
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "not a readable PNG: %s", pi.message);
+    if (pi.width > IMAGE_MAX_SIDE || pi.height > IMAGE_MAX_SIDE) {
+        diag_at(err, DIAG_INPUT, name, 0, 0, "image size %lux%lu is outside 1..%d per side",
+                (unsigned long)pi.width, (unsigned long)pi.height, IMAGE_MAX_SIDE);
+        png_image_free(&pi);
+        return DIAG_INPUT;
+    }
+    if (indexed) {
+        /* A palette PNG read colour-mapped keeps the file's palette and so
+         * its indices; any other PNG gives its grey values. */
+        channels = 1;
+        if (pi.format & PNG_FORMAT_FLAG_COLORMAP) {
+            pi.format = PNG_FORMAT_RGB_COLORMAP;
+            cmap = mem_alloc(PNG_IMAGE_COLORMAP_SIZE(pi));
+            if (!cmap) {
+                png_image_free(&pi);
+                return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
+            }
+        }
+    }
+    if (image_alloc(&img, (int)pi.width, (int)pi.height, channels, name, err)) {
+        png_image_free(&pi);
+        mem_free(cmap);
+        return err->status;
+    }
+    pi.format = cmap ? PNG_FORMAT_RGB_COLORMAP : channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+    if (!png_image_finish_read(&pi, NULL, img.px, img.width * channels, cmap)) {
+        image_free(&img);
+        mem_free(cmap);
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "corrupt PNG: %s", pi.message);
+    }
+    mem_free(cmap);
+    *out = img;
+    return 0;
+}
+
+int image_read_png(const char *path, int channels, image *out, diag *err)
+{
+    char *data;
+    size_t len;
+    int rc;
+    if (infile_read_all(path, (size_t)1 << 30, &data, &len, err))
+        return err->status;
+    rc = image_read_png_memory(path, data, len, channels, out, err);
+    mem_free(data);
+    return rc;
+}

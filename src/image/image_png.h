@@ -1,0 +1,26 @@
+/* image_png — PNG input and output of 8-bit rasters through libpng's
+ * simplified API. Shared by the renderer (true-colour output), the display
+ * shim (palette output) and compare (reading references). */
+#ifndef IMAGE_PNG_H
+#define IMAGE_PNG_H
+#include <stddef.h>
+#include <stdint.h>
+#include "image/image.h"
+#include "util/diag.h"
+
+/* Writes img as an 8-bit grey or RGB PNG, committed on close. */
+int image_write_png(const char *path, const image *img, diag *err);
+/* Writes an 8-bit palette PNG: index has width*height entries (top row
+ * first); palette holds ncolors RGB triples (1..256). */
+int image_write_png_palette(const char *path, int width, int height, const uint8_t *index,
+                            const uint8_t *palette, int ncolors, diag *err);
+/* Reads any PNG, converted to `channels` (1 or 3) 8-bit channels; alpha is
+ * composited over black. With channels IMAGE_INDEXED the result has one
+ * channel holding a palette PNG's palette indices, or another PNG's grey
+ * values. Refuses files over 1 GiB and sizes over the limits. */
+#define IMAGE_INDEXED 0
+int image_read_png(const char *path, int channels, image *out, diag *err);
+/* The same from memory (name is used in diagnostics). */
+int image_read_png_memory(const char *name, const void *data, size_t len, int channels,
+                          image *out, diag *err);
+#endif
