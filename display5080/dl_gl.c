@@ -1,5 +1,6 @@
 /* dl_gl — shared OpenGL drawing for the GL backends (see dl_gl.h). */
 #include "display5080/dl_gl.h"
+#include "util/dmath.h"
 #include "display5080/dl_logic.h"
 #include "display5080/dl_format.h"
 #include "util/mem.h"
@@ -311,10 +312,10 @@ static int dl_gl_circle(void *dev, const dl_gc *gc, int cx, int cy, unsigned r, 
     double rad = fill ? r + 0.5 : r, step;
     int k, n;
     (void)err;
-    n = rad < 1 ? 4 : (int)ceil(3.14159265358979 / acos(1 - 0.1 / (rad + 0.1)));
+    n = rad < 1 ? 4 : (int)ceil(DMATH_PI / acos(1 - 0.1 / (rad + 0.1)));
     if (n < 8) n = 8;
     if (n > 4096) n = 4096;
-    step = 2 * 3.14159265358979 / n;
+    step = 2 * DMATH_PI / n;
     dl_gl_cover_begin(g, gc, GLc_REPLACE);
     g->gl.Begin(fill ? GLc_TRIANGLE_FAN : GLc_LINE_LOOP);
     for (k = 0; k < n; k++)

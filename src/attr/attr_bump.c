@@ -1,9 +1,9 @@
 /* attr_bump — bump patterns and perturbed normals (see attr_bump.h). */
 #include "attr/attr_bump.h"
+#include "util/dmath.h"
 #include <math.h>
 #include <stdint.h>
 
-#define ATTR_BUMP_PI 3.14159265358979323846
 #define ATTR_BUMP_EPS 1e-4                /* (u,v) step of the differences */
 #define ATTR_BUMP_DIMPLE_R 0.4            /* dimple radius, fraction of a cell */
 
@@ -33,7 +33,7 @@ static double attr_bump_noise1(double x, double y, uint32_t seed)
     iy = (int32_t)fy;
     for (k = 0; k < 4; k++) {
         int dx = k & 1, dy = k >> 1;
-        double a = (attr_bump_hash(ix + dx, iy + dy, seed) >> 8) * (2 * ATTR_BUMP_PI / 16777216.0);
+        double a = (attr_bump_hash(ix + dx, iy + dy, seed) >> 8) * (2 * DMATH_PI / 16777216.0);
         g[k] = cos(a) * (tx - dx) + sin(a) * (ty - dy);
     }
     return 1.4142135623730951 * ((g[0] + (g[1] - g[0]) * sx) * (1 - sy) + (g[2] + (g[3] - g[2]) * sx) * sy);
@@ -44,9 +44,9 @@ double attr_bump_height(const scene_bump *b, double u, double v)
     double x = b->freq[0] * u, y = b->freq[1] * v, h;
     switch (b->pattern) {
     case BUMP_WAVES:
-        return sin(2 * ATTR_BUMP_PI * (x + y));
+        return sin(2 * DMATH_PI * (x + y));
     case BUMP_BUMPS:
-        return sin(2 * ATTR_BUMP_PI * x) * sin(2 * ATTR_BUMP_PI * y);
+        return sin(2 * DMATH_PI * x) * sin(2 * DMATH_PI * y);
     case BUMP_DIMPLES: {
         double cx = x - floor(x) - 0.5, cy = y - floor(y) - 0.5;
         double r2 = ATTR_BUMP_DIMPLE_R * ATTR_BUMP_DIMPLE_R - cx * cx - cy * cy;
@@ -63,18 +63,6 @@ double attr_bump_height(const scene_bump *b, double u, double v)
     }
 }
 
-static void attr_bump_cross(const double *a, const double *b, double *c)
-{
-    c[0] = a[1] * b[2] - a[2] * b[1];
-    c[1] = a[2] * b[0] - a[0] * b[2];
-    c[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-static double attr_bump_dot(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /* P' = P + H n with H = A s h(u,v); to first order (Blinn's approximation,
  * dropping the derivatives of n) P'_u = P_u + H_u n and P'_v = P_v + H_v n,
  * so N' = P_u x P_v + H_u (n x P_v) + H_v (P_u x n), oriented like n. */
@@ -84,31 +72,31 @@ void attr_bump_normal(const scene_bump *b, double scale, const geom_surface *sf,
     int i;
     for (i = 0; i < 3; i++)
         n[i] = sf->n[i];
-    attr_bump_cross(sf->dpdu, sf->dpdv, n0);
-    len0 = sqrt(attr_bump_dot(n0, n0));
+    dmath_cross3(sf->dpdu, sf->dpdv, n0);
+    len0 = sqrt(dmath_dot3(n0, n0));
     if (!(len0 > 1e-12) || !isfinite(len0))
         return;
-    sgn = attr_bump_dot(n0, sf->n) < 0 ? -1 : 1;
+    sgn = dmath_dot3(n0, sf->n) < 0 ? -1 : 1;
     a = b->amplitude * scale / (2 * ATTR_BUMP_EPS);
     hu = a * (attr_bump_height(b, sf->u + ATTR_BUMP_EPS, sf->v) - attr_bump_height(b, sf->u - ATTR_BUMP_EPS, sf->v));
     hv = a * (attr_bump_height(b, sf->u, sf->v + ATTR_BUMP_EPS) - attr_bump_height(b, sf->u, sf->v - ATTR_BUMP_EPS));
-    attr_bump_cross(sf->n, sf->dpdv, t1);
-    attr_bump_cross(sf->dpdu, sf->n, t2);
+    dmath_cross3(sf->n, sf->dpdv, t1);
+    dmath_cross3(sf->dpdu, sf->n, t2);
     for (i = 0; i < 3; i++)
         n0[i] = sgn * (n0[i] + hu * t1[i] + hv * t2[i]);
-    len = sqrt(attr_bump_dot(n0, n0));
+    len = sqrt(dmath_dot3(n0, n0));
     if (!(len > 0) || !isfinite(len))
         return;
     for (i = 0; i < 3; i++)
         n0[i] /= len;
     /* Keep the normal on the outside: a too-steep one is turned, within the
      * plane of n and itself, to the steepest allowed angle. */
-    c = attr_bump_dot(n0, sf->n);
+    c = dmath_dot3(n0, sf->n);
     if (c < ATTR_BUMP_MIN_COS) {
         double t[3], tl, s = sqrt(1 - ATTR_BUMP_MIN_COS * ATTR_BUMP_MIN_COS);
         for (i = 0; i < 3; i++)
             t[i] = n0[i] - c * sf->n[i];
-        tl = sqrt(attr_bump_dot(t, t));
+        tl = sqrt(dmath_dot3(t, t));
         if (!(tl > 1e-12))
             return;
         for (i = 0; i < 3; i++)

@@ -1,5 +1,6 @@
 /* align — coarse-to-fine registration on edge pyramids (see align.h). */
 #include "compare/align.h"
+#include "util/dmath.h"
 #include "util/mem.h"
 #include <math.h>
 #include <stdlib.h>
@@ -92,7 +93,7 @@ static int align_level(const align_ctx *c, double scale, double target)
 static double align_eval(const align_ctx *c, const warp_params *p, int l)
 {
     const plane *fr = &c->r.lv[l], *ft;
-    double f = ldexp(1.0, l), g, a = p->angle * 3.14159265358979323846 / 180.0;
+    double f = ldexp(1.0, l), g, a = dmath_rad(p->angle);
     double cs = cos(a) / p->scale, sn = sin(a) / p->scale;
     double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0, minx = 1e300, maxx = -1e300, miny = 1e300,
            maxy = -1e300, area, va, vb, bt, ncov = 0;
@@ -359,7 +360,7 @@ static void align_refine(const align_ctx *c, const align_opts *o, align_cand *ca
     int d, evals = 0, nd = o->max_angle > 0 ? 4 : 3;
     st[0] = 1.0 / m;
     st[1] = st[2] = f;
-    st[3] = 2.0 / m * 180.0 / 3.14159265358979323846;
+    st[3] = dmath_deg(2.0 / m);
     x[0] = log(cand->p.scale);
     warp_to_ref(&cand->p, c->tw / 2.0, c->th / 2.0, &x[1], &x[2]);
     x[3] = cand->p.angle;

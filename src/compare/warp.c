@@ -1,19 +1,19 @@
 /* warp — similarity transform and resampling into the reference frame (see warp.h). */
 #include "compare/warp.h"
+#include "util/dmath.h"
 #include <math.h>
 
-#define WARP_PI 3.14159265358979323846
 
 void warp_to_ref(const warp_params *p, double xt, double yt, double *xr, double *yr)
 {
-    double a = p->angle * WARP_PI / 180.0, c = cos(a), s = sin(a);
+    double a = dmath_rad(p->angle), c = cos(a), s = sin(a);
     *xr = p->scale * (c * xt + s * yt) + p->dx;
     *yr = p->scale * (-s * xt + c * yt) + p->dy;
 }
 
 void warp_to_test(const warp_params *p, double xr, double yr, double *xt, double *yt)
 {
-    double a = p->angle * WARP_PI / 180.0, c = cos(a), s = sin(a);
+    double a = dmath_rad(p->angle), c = cos(a), s = sin(a);
     double u = (xr - p->dx) / p->scale, v = (yr - p->dy) / p->scale;
     *xt = c * u - s * v;
     *yt = s * u + c * v;

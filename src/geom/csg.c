@@ -1,6 +1,7 @@
 /* csg — tree compilation (flatten, balance, bound) and span-list
  * classification along a ray (see csg.h). */
 #include "geom/csg.h"
+#include "util/dmath.h"
 #include "util/mem.h"
 #include <math.h>
 #include <stdlib.h>
@@ -49,7 +50,7 @@ static void csg_set_box(csg_node *nd, const csg_bound *b)
     }
     nd->lo = vec3_from_d(lo);
     nd->hi = vec3_from_d(hi);
-    nd->use_box = vbox < 0.5 * 4.18879 * b->r * b->r * b->r;
+    nd->use_box = vbox < 0.5 * dmath_sphere_volume(b->r);
 }
 
 /* Appends a compiled node; its bound follows from the children. Returns the
@@ -108,7 +109,7 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
             int i;
             for (i = 0; i < 3; i++)
                 d[i] = br->c[i] - bl->c[i];
-            dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            dist = dmath_len3(d);
             b->bounded = 1;
             for (i = 0; i < 3; i++) {
                 b->lo[i] = bl->lo[i] < br->lo[i] ? bl->lo[i] : br->lo[i];

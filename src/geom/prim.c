@@ -1,80 +1,11 @@
 /* prim — compile, intersect and evaluate the five primitives (see prim.h,
  * docs/primitives.md for the face mappings, docs/numerics.md for ranges). */
 #include "geom/prim.h"
+#include "util/dmath.h"
 #include <math.h>
 #include <string.h>
 
-#define PRIM_PI 3.14159265358979323846
-
 /* ---- compile (double precision) ------------------------------------- */
-
-static void m3d_mul_v(const double *m, const double *v, double *out)
-{
-    int i;
-    for (i = 0; i < 3; i++)
-        out[i] = m[3 * i] * v[0] + m[3 * i + 1] * v[1] + m[3 * i + 2] * v[2];
-}
-
-static void m3d_tmul_v(const double *m, const double *v, double *out)
-{
-    int i;
-    for (i = 0; i < 3; i++)
-        out[i] = m[i] * v[0] + m[3 + i] * v[1] + m[6 + i] * v[2];
-}
-
-static double v3d_len(const double *v) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
-/* Inverse of a 3x3 matrix by cofactors; -1 when it is singular relative to
- * its own scale (|det| tiny against the product of its row norms). */
-static int m3d_inverse(const double *m, double *inv)
-{
-    double c[9], det, scale = 1.0;
-    int i;
-    c[0] = m[4] * m[8] - m[5] * m[7];
-    c[1] = m[2] * m[7] - m[1] * m[8];
-    c[2] = m[1] * m[5] - m[2] * m[4];
-    c[3] = m[5] * m[6] - m[3] * m[8];
-    c[4] = m[0] * m[8] - m[2] * m[6];
-    c[5] = m[2] * m[3] - m[0] * m[5];
-    c[6] = m[3] * m[7] - m[4] * m[6];
-    c[7] = m[1] * m[6] - m[0] * m[7];
-    c[8] = m[0] * m[4] - m[1] * m[3];
-    det = m[0] * c[0] + m[1] * c[3] + m[2] * c[6];
-    for (i = 0; i < 3; i++)
-        scale *= v3d_len(m + 3 * i);
-    if (!(fabs(det) > 1e-12 * scale) || !isfinite(det))
-        return -1;
-    for (i = 0; i < 9; i++)
-        inv[i] = c[i] / det;
-    return 0;
-}
-
-/* Largest singular value of m: square root of the largest eigenvalue of the
- * symmetric m^T m, by the closed-form (trigonometric) 3x3 eigen solution. */
-static double m3d_spectral_norm(const double *m)
-{
-    double b[9], q, p1, p2, p, bm[9], r, phi, det;
-    int i, j, k;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++) {
-            b[3 * i + j] = 0;
-            for (k = 0; k < 3; k++)
-                b[3 * i + j] += m[3 * k + i] * m[3 * k + j];
-        }
-    p1 = b[1] * b[1] + b[2] * b[2] + b[5] * b[5];
-    q = (b[0] + b[4] + b[8]) / 3;
-    p2 = (b[0] - q) * (b[0] - q) + (b[4] - q) * (b[4] - q) + (b[8] - q) * (b[8] - q) + 2 * p1;
-    p = sqrt(p2 / 6);
-    if (p == 0)
-        return sqrt(q);
-    for (i = 0; i < 9; i++)
-        bm[i] = (b[i] - (i % 4 == 0 ? q : 0)) / p;
-    det = bm[0] * (bm[4] * bm[8] - bm[5] * bm[7]) - bm[1] * (bm[3] * bm[8] - bm[5] * bm[6])
-        + bm[2] * (bm[3] * bm[7] - bm[4] * bm[6]);
-    r = det / 2;
-    phi = r <= -1 ? PRIM_PI / 3 : r >= 1 ? 0 : acos(r) / 3;
-    return sqrt(q + 2 * p * cos(phi));
-}
 
 /* Rounds a plane coefficient to a 2^-40 grid so that planes computed along
  * different transform paths, equal up to double rounding, become identical
@@ -208,7 +139,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         }
         p.org_d[i] = nm->scale * m[4 * i + 3] + nm->off[i];
     }
-    if (m3d_inverse(p.a_d, p.ainv_d))
+    if (dmath_m3_inverse(p.a_d, p.ainv_d))
         return prim_fail(err, file, sp, "transform is singular");
     frob = 0;
     for (i = 0; i < 9; i++)
@@ -223,19 +154,19 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         return prim_fail(err, file, sp, "too small for the numeric range");
 
     /* bounding sphere */
-    m3d_mul_v(p.a_d, cc, bc);
+    dmath_m3_mul_v(p.a_d, cc, bc);
     for (i = 0; i < 3; i++)
         bc[i] += p.org_d[i];
     if (sp->kind == PRIM_SPHERE) {
-        r = m3d_spectral_norm(p.a_d);
+        r = dmath_m3_spectral_norm(p.a_d);
     } else if (p.bounded) {
         int k;
         for (k = 0; k < 8; k++) {
             double corner[3], w[3], len;
             for (i = 0; i < 3; i++)
                 corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
-            m3d_mul_v(p.a_d, corner, w);
-            len = v3d_len(w);
+            dmath_m3_mul_v(p.a_d, corner, w);
+            len = dmath_len3(w);
             if (len > r)
                 r = len;
         }
@@ -253,14 +184,14 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
     p.nplanes = ncp;
     for (i = 0; i < ncp; i++) {
         double n[3], pt[3], len, dd;
-        m3d_tmul_v(p.ainv_d, cp[i].n, n);
-        len = v3d_len(n);
+        dmath_m3_tmul_v(p.ainv_d, cp[i].n, n);
+        len = dmath_len3(n);
         for (j = 0; j < 3; j++)
             n[j] = prim_snap(n[j] / len);
-        m3d_mul_v(p.a_d, cp[i].p, pt);
+        dmath_m3_mul_v(p.a_d, cp[i].p, pt);
         for (j = 0; j < 3; j++)
             pt[j] += p.org_d[j];
-        dd = prim_snap(n[0] * pt[0] + n[1] * pt[1] + n[2] * pt[2]);
+        dd = prim_snap(dmath_dot3(n, pt));
         p.pl[i].n = vec3_from_d(n);
         p.pl[i].d = num_from_d(dd);
         p.pl[i].face = cp[i].face;
@@ -460,19 +391,19 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
         out->p[i] = w[i];
     for (i = 0; i < 3; i++)
         w[i] -= p->org_d[i];
-    m3d_mul_v(p->ainv_d, w, l);
+    dmath_m3_mul_v(p->ainv_d, w, l);
     rho = sqrt(l[0] * l[0] + l[1] * l[1]);
     th = atan2(l[1], l[0]);
     if (th < 0)
-        th += 2 * PRIM_PI;
+        th += 2 * DMATH_PI;
     switch (p->kind) {
     case PRIM_SPHERE:
         planar = 0;
-        u = th / (2 * PRIM_PI);
-        v = 0.5 + atan2(l[2], rho) / PRIM_PI;
+        u = th / (2 * DMATH_PI);
+        v = 0.5 + atan2(l[2], rho) / DMATH_PI;
         nl[0] = l[0]; nl[1] = l[1]; nl[2] = l[2];
-        du[0] = -2 * PRIM_PI * l[1]; du[1] = 2 * PRIM_PI * l[0];
-        dv[0] = -PRIM_PI * l[2] * cos(th); dv[1] = -PRIM_PI * l[2] * sin(th); dv[2] = PRIM_PI * rho;
+        du[0] = -2 * DMATH_PI * l[1]; du[1] = 2 * DMATH_PI * l[0];
+        dv[0] = -DMATH_PI * l[2] * cos(th); dv[1] = -DMATH_PI * l[2] * sin(th); dv[2] = DMATH_PI * rho;
         break;
     case PRIM_CYLINDER:
     case PRIM_CONE: {
@@ -480,10 +411,10 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
         if (p->kind == PRIM_CYLINDER) { a = 1; k = 0; }
         if (face == PRIM_FACE_CYL_SIDE) {
             planar = 0;
-            u = th / (2 * PRIM_PI);
+            u = th / (2 * DMATH_PI);
             v = l[2];
             nl[0] = cos(th); nl[1] = sin(th); nl[2] = -k;
-            du[0] = -2 * PRIM_PI * l[1]; du[1] = 2 * PRIM_PI * l[0];
+            du[0] = -2 * DMATH_PI * l[1]; du[1] = 2 * DMATH_PI * l[0];
             dv[0] = k * cos(th); dv[1] = k * sin(th); dv[2] = 1;
         } else {
             rf = face == PRIM_FACE_CYL_TOP ? a + k : a;
@@ -517,15 +448,15 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
     }
     out->u = prim_clamp01(u);
     out->v = prim_clamp01(v);
-    m3d_mul_v(p->a_d, du, out->dpdu);
-    m3d_mul_v(p->a_d, dv, out->dpdv);
+    dmath_m3_mul_v(p->a_d, du, out->dpdu);
+    dmath_m3_mul_v(p->a_d, dv, out->dpdv);
     if (planar) {
         int f = face >= 0 && face < 6 ? face : 0;
         for (i = 0; i < 3; i++)
             out->n[i] = p->pn_d[f][i];
     } else {
-        m3d_tmul_v(p->ainv_d, nl, out->n);
-        len = v3d_len(out->n);
+        dmath_m3_tmul_v(p->ainv_d, nl, out->n);
+        len = dmath_len3(out->n);
         if (len > 0)
             for (i = 0; i < 3; i++)
                 out->n[i] /= len;

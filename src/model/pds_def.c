@@ -1,6 +1,7 @@
 /* pds_def — PDS definitions: builders, placement algebra and validation
  * (see pds_def.h; the error texts are listed in docs/pds.md). */
 #include "model/pds_def.h"
+#include "util/dmath.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -151,7 +152,7 @@ void pds_cpg_rotate(pds_def *d, size_t node, double degrees)
     else if (r == 90) { c = 0; s = 1; }
     else if (r == 180) { c = -1; s = 0; }
     else if (r == 270) { c = 0; s = -1; }
-    else { c = cos(r * (3.14159265358979323846 / 180)); s = sin(r * (3.14159265358979323846 / 180)); }
+    else { c = cos(dmath_rad(r)); s = sin(dmath_rad(r)); }
     t[0] = c; t[1] = -s; t[2] = 0; t[3] = s; t[4] = c; t[5] = 0;
     compose_after(d->cpg.nodes[node].xf, t);
 }
@@ -468,10 +469,8 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
         if (n->op == PDS_CPG_NESTED) {
             /* Its unit square must stay wide enough for the inverse map to
              * keep its coefficients small; then check the PDS it holds. */
-            double a = m[i][0], b = m[i][1], cc = m[i][3], dd = m[i][4];
-            double s2 = a * a + b * b + cc * cc + dd * dd, det = fabs(a * dd - b * cc);
-            double smin = sqrt(fmax(0, (s2 - sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2));
-            double smax = sqrt((s2 + sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2);
+            double smin, smax;
+            dmath_sv2(m[i][0], m[i][1], m[i][3], m[i][4], &smin, &smax);
             if (smin < PDS_MIN_FEATURE) {
                 rc = FAIL(n->loc, "nested PDS is thinner than 1/8192 after its transforms");
                 goto done;
@@ -487,10 +486,9 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
         if (n->op == PDS_CPG_ELLIPSE) {
             /* Smallest semi-axis: the smaller singular value of the 2x2
              * linear part of root_from_disk. */
-            double a = m[i][0] * n->p[2], b = m[i][1] * n->p[3], cc = m[i][3] * n->p[2], dd = m[i][4] * n->p[3];
-            double s2 = a * a + b * b + cc * cc + dd * dd, det = fabs(a * dd - b * cc);
-            double smin = sqrt(fmax(0, (s2 - sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2));
-            double smax = sqrt((s2 + sqrt(fmax(0, s2 * s2 - 4 * det * det))) / 2);
+            double smin, smax;
+            dmath_sv2(m[i][0] * n->p[2], m[i][1] * n->p[3], m[i][3] * n->p[2], m[i][4] * n->p[3],
+                      &smin, &smax);
             if (smin < PDS_MIN_FEATURE) {
                 rc = FAIL(n->loc, "ellipse is thinner than 1/8192 after its transforms");
                 goto done;

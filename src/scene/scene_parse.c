@@ -9,6 +9,7 @@
  * scene_attrmap.c, scene_pds*.c and scene_face.c.
  * The language is documented in docs/scene-format.md. */
 #include "image/image_png.h"
+#include "util/dmath.h"
 #include "scene/scene_parser.h"
 #include <math.h>
 #include <stdio.h>
@@ -743,12 +744,8 @@ static int scene_parse_finish(scene_parser *p)
     if (d[0] == 0 && d[1] == 0 && d[2] == 0)
         return diag_at(p->err, DIAG_INPUT, p->file, p->view_loc[SCENE_PARSE_LOOK].line,
                        p->view_loc[SCENE_PARSE_LOOK].col, "LOOKAT: point is the EYE point");
-    x[0] = d[1] * v->up[2] - d[2] * v->up[1];
-    x[1] = d[2] * v->up[0] - d[0] * v->up[2];
-    x[2] = d[0] * v->up[1] - d[1] * v->up[0];
-    if (sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <=
-        1e-9 * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) *
-               sqrt(v->up[0] * v->up[0] + v->up[1] * v->up[1] + v->up[2] * v->up[2])) {
+    dmath_cross3(d, v->up, x);
+    if (dmath_len3(x) <= 1e-9 * dmath_len3(d) * dmath_len3(v->up)) {
         const scene_loc *at = p->view_loc[SCENE_PARSE_UP].line ? &p->view_loc[SCENE_PARSE_UP]
                                                               : &p->view_loc[SCENE_PARSE_LOOK];
         return diag_at(p->err, DIAG_INPUT, p->file, at->line, at->col,

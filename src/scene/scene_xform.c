@@ -1,6 +1,7 @@
 /* scene_xform — affine transforms and their statement items (see
  * scene_xform.h). */
 #include "scene/scene_xform.h"
+#include "util/dmath.h"
 #include <math.h>
 #include <string.h>
 
@@ -56,7 +57,7 @@ int scene_xform_starts(const scene_cur *c)
 static void scene_xform_rotation(double m[16], const double u[3], double deg,
                                  int principal)
 {
-    double a = deg * (3.14159265358979323846 / 180.0);
+    double a = dmath_rad(deg);
     double s = sin(a), k = 1 - cos(a), cs = cos(a);
     scene_xform_identity(m);
     m[0] = cs + u[0] * u[0] * k;
@@ -98,7 +99,7 @@ int scene_xform_parse(scene_cur *c, double m[16])
         else if (scene_cur_accept(c, "AXIS")) {
             if (scene_cur_numbers(c, u, 3))
                 return DIAG_INPUT;
-            len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            len = dmath_len3(u);
             if (!(len > 0))
                 return scene_cur_error(c, t, "ROTATE axis must not be zero");
             for (i = 0; i < 3; i++)

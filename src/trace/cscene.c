@@ -1,11 +1,11 @@
 /* cscene — scene analysis and per-mode compilation (see cscene.h). */
 #include "trace/cscene.h"
+#include "util/dmath.h"
 #include "model/scene_map.h"
 #include "util/mem.h"
 #include <math.h>
 #include <string.h>
 
-#define CSCENE_PI 3.14159265358979323846
 
 static const char *cscene_file(const scene *sc) { return sc->source ? sc->source : ""; }
 
@@ -38,15 +38,6 @@ static void cscene_grow_box(const scene_prim *sp, double *lo, double *hi)
 }
 
 static int cscene_finite3(const double *v) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
-
-static int cscene_unit(const double *v, double *out)
-{
-    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    if (!(l > 0) || !isfinite(l))
-        return -1;
-    out[0] = v[0] / l; out[1] = v[1] / l; out[2] = v[2] / l;
-    return 0;
-}
 
 void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world)
 {
@@ -145,7 +136,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     status = DIAG_INPUT;
     for (i = 0; i < 3; i++)
         d[i] = v->look[i] - v->eye[i];
-    if (cscene_unit(d, fwd)) {
+    if (dmath_unit3(d, fwd)) {
         diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0, "view: eye and look coincide");
         goto fail;
     }
@@ -153,14 +144,14 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     d[0] = fwd[1] * v->up[2] - fwd[2] * v->up[1];
     d[1] = fwd[2] * v->up[0] - fwd[0] * v->up[2];
     d[2] = fwd[0] * v->up[1] - fwd[1] * v->up[0];
-    if (cscene_unit(d, cs->right)) {
+    if (dmath_unit3(d, cs->right)) {
         diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0, "view: up is parallel to the view direction");
         goto fail;
     }
     cs->up[0] = cs->right[1] * fwd[2] - cs->right[2] * fwd[1];
     cs->up[1] = cs->right[2] * fwd[0] - cs->right[0] * fwd[2];
     cs->up[2] = cs->right[0] * fwd[1] - cs->right[1] * fwd[0];
-    cs->tan_half = tan(v->fov_deg * CSCENE_PI / 360.0);
+    cs->tan_half = tan(dmath_rad(v->fov_deg / 2));
     NS(cscene_to_world)(cs, v->eye, cs->eye);
     cs->eye_n = vec3_from_d(cs->eye);
     cs->max_depth = sc->max_depth < 0 ? 0 : sc->max_depth > CSCENE_MAX_DEPTH ? CSCENE_MAX_DEPTH
@@ -218,7 +209,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
             goto fail;
         }
         NS(cscene_to_world)(cs, l->pos, w);
-        len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+        len = dmath_len3(w);
         if (len > GEOM_LIGHT_MAX)           /* far lights keep their direction */
             for (j = 0; j < 3; j++)
                 w[j] *= GEOM_LIGHT_MAX / len;

@@ -1,5 +1,6 @@
 /* probe — geometry queries in deck units for one numeric mode (probe.h). */
 #include "trace/probe.h"
+#include "util/dmath.h"
 #include "trace/optics.h"
 #include "trace/cscene.h"
 #include "util/mem.h"
@@ -49,10 +50,9 @@ static int probe_ray(const cscene *cs, const double *o, const double *d, prim_ra
     r->excl_prim = -1;
     r->excl_enter = 0;
     {
-        double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), u[3];
-        if (!(l > 0))
+        double u[3];
+        if (dmath_unit3(d, u))
             return -1;
-        u[0] = d[0] / l; u[1] = d[1] / l; u[2] = d[2] / l;
         return vec3_normalize(vec3_from_d(u), &r->d, NULL);
     }
 }
@@ -121,10 +121,9 @@ static int probe_respawn(const void *v, const double *o, const double *d, const 
     const probe_cs *p = v;
     prim_ray r, r2;
     vec3 pn;
-    double l = sqrt(d2[0] * d2[0] + d2[1] * d2[1] + d2[2] * d2[2]), u[3];
-    if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || !(l > 0))
+    double u[3];
+    if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || dmath_unit3(d2, u))
         return -1;
-    u[0] = d2[0] / l; u[1] = d2[1] / l; u[2] = d2[2] / l;
     r2.o = pn;
     if (vec3_normalize(vec3_from_d(u), &r2.d, NULL))
         return -1;

@@ -3,6 +3,7 @@
  * colours, (u,v) and shading normals are doubles (the mode changes where
  * surfaces and regions are, not how light is summed). */
 #include "trace/trace.h"
+#include "util/dmath.h"
 #include "attr/attr_bump.h"
 #include "attr/attr_texture.h"
 #include "trace/optics.h"
@@ -48,7 +49,7 @@ static void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_pri
     r->o = p;
     r->d = d;
     r->excl_prim = pi;
-    r->excl_enter = n_prim[0] * dd[0] + n_prim[1] * dd[1] + n_prim[2] * dd[2] < 0;
+    r->excl_enter = dmath_dot3(n_prim, dd) < 0;
 }
 
 /* Step 4: the fraction of the light at distance dist along unit l from p
@@ -119,7 +120,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
      * the refraction ratio. The solid's outward normal may be the primitive's
      * flipped one where a difference exposes a subtracted solid. */
     vec3_to_d(r->d, d);
-    dn = d[0] * sf.n[0] + d[1] * sf.n[1] + d[2] * sf.n[2];
+    dn = dmath_dot3(d, sf.n);
     inside = !h.entering;
     /* No ray is spawned from beyond GEOM_TMAX (only a half-space reaches
      * there): ray origins then stay inside the range argued in
@@ -136,7 +137,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         if (vec3_normalize(vec3_sub(cs->lights[li].pos, p), &l, &dist))
             continue;
         vec3_to_d(l, ld);
-        if ((ld[0] * sf.n[0] + ld[1] * sf.n[1] + ld[2] * sf.n[2]) * dn >= 0)
+        if (dmath_dot3(ld, sf.n) * dn >= 0)
             continue;
         pass[li] = far ? 1 : trace_light_passes(cs, tc, p, l, dist, h.prim, sf.n);
     }
@@ -166,7 +167,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         double ndl, spec = 0;
         if (pass[li] <= 0)
             continue;
-        ndl = ns[0] * ld[0] + ns[1] * ld[1] + ns[2] * ld[2];
+        ndl = dmath_dot3(ns, ld);
         if (ndl <= 0)
             continue;
         if (at->specular > 0) {
@@ -174,7 +175,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
             double rl[3], rv;
             for (i = 0; i < 3; i++)
                 rl[i] = 2 * ndl * ns[i] - ld[i];
-            rv = -(rl[0] * d[0] + rl[1] * d[1] + rl[2] * d[2]);
+            rv = -dmath_dot3(rl, d);
             if (rv > 0)
                 spec = at->specular * pow(rv, at->exponent);
         }
