@@ -257,7 +257,7 @@ int dl_quant_image(const image *rgb, const dl_quant_opts *opts, dl_quant *q, dia
     } else {
         /* map each distinct colour once, then each pixel by binary search */
         uint8_t *map;
-        if (!(map = mem_alloc(m ? m : 1)))
+        if (!(map = mem_alloc(m)))
             goto oom;
         for (i = 0; i < m; i++)
             map[i] = (uint8_t)dl_quant_nearest(q->table, q->ncolours, (int)(ent[i].rgb >> 16),

@@ -189,7 +189,7 @@ int pds_pixels_set(pds_pixels *px, int width, int height, const int32_t *cells, 
 int pds_tiling_attrs(pds_def *d, const int32_t *attrs, size_t n)
 {
     pds_tiling *t = &d->tiling;
-    if (n > 65536 || mem_grow((void **)&t->attrs, &t->cap_attrs, n ? n : 1, sizeof *attrs))
+    if (n > 65536 || mem_grow((void **)&t->attrs, &t->cap_attrs, n, sizeof *attrs))
         return -1;
     if (n)
         memcpy(t->attrs, attrs, n * sizeof *attrs);
@@ -214,7 +214,7 @@ int pds_quadtree_code(pds_def *d, const int32_t *code, size_t n)
 {
     pds_quadtree *q = &d->quad;
     if (n > (size_t)PDS_MAX_CELLS * 2 ||
-        mem_grow((void **)&q->code, &q->cap_code, n ? n : 1, sizeof *code))
+        mem_grow((void **)&q->code, &q->cap_code, n, sizeof *code))
         return -1;
     if (n)
         memcpy(q->code, code, n * sizeof *code);

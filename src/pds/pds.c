@@ -10,7 +10,7 @@ int NS(pds_oom)(const pds_def *def, const char *file, diag *err)
                    "out of memory compiling a planar division structure");
 }
 
-static const NS(pds_kind_ops) *kind_ops(pds_kind k)
+static const NS(pds_kind_ops) *pds_kind_ops_of(pds_kind k)
 {
     switch (k) {
     case PDS_CPG: return &NS(pds_cpg_ops);
@@ -33,7 +33,7 @@ int NS(pds_compile)(const pds_def *def, const char *file, NS(pds) **out, diag *e
     if (!p)
         return NS(pds_oom)(def, file, err);
     p->kind = def->kind;
-    p->ops = kind_ops(def->kind);
+    p->ops = pds_kind_ops_of(def->kind);
     rc = p->ops->compile(def, file, &p->impl, err);
     if (rc) {
         mem_free(p);
@@ -67,7 +67,7 @@ size_t NS(pds_bytes)(const NS(pds) *p)
 
 /* ---- the mode-independent table ---------------------------------------- */
 
-static int m_compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_mode_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     NS(pds) *p = NULL;
     int rc = NS(pds_compile)(def, file, &p, err);
@@ -76,28 +76,28 @@ static int m_compile(const pds_def *def, const char *file, void **out, diag *err
     return rc;
 }
 
-static void m_free(void *p) { NS(pds_free)(p); }
+static void pds_mode_free(void *p) { NS(pds_free)(p); }
 
-static int32_t m_locate(const void *p, double u, double v)
+static int32_t pds_mode_locate(const void *p, double u, double v)
 {
     return NS(pds_locate)(p, num_from_d(u), num_from_d(v));
 }
 
-static int32_t m_locate_steps(const void *p, double u, double v, unsigned long *steps)
+static int32_t pds_mode_locate_steps(const void *p, double u, double v, unsigned long *steps)
 {
     return NS(pds_locate_steps)(p, num_from_d(u), num_from_d(v), steps);
 }
 
-static size_t m_bytes(const void *p) { return NS(pds_bytes)(p); }
+static size_t pds_mode_bytes(const void *p) { return NS(pds_bytes)(p); }
 
-static size_t m_locate_many(const void *pds, const double *uv, size_t n, unsigned reps, int32_t *out)
+static size_t pds_mode_locate_many(const void *pds, const double *uv, size_t n, unsigned reps, int32_t *out)
 {
     size_t i, hits = 0;
     unsigned r;
-    num *q = mem_calloc(n ? n : 1, 2 * sizeof *q);
+    num *q = mem_calloc(n, 2 * sizeof *q);
     if (!q) {
         for (i = 0; i < n; i++)
-            if ((out[i] = m_locate(pds, uv[2 * i], uv[2 * i + 1])) != PDS_NONE)
+            if ((out[i] = pds_mode_locate(pds, uv[2 * i], uv[2 * i + 1])) != PDS_NONE)
                 hits++;
         return hits;
     }
@@ -112,5 +112,11 @@ static size_t m_locate_many(const void *pds, const double *uv, size_t n, unsigne
 }
 
 const pds_mode_ops NS(pds_mode_ops) = {
-    NUM_NAME, m_compile, m_free, m_locate, m_locate_steps, m_bytes, m_locate_many
+    .mode = NUM_NAME,
+    .compile = pds_mode_compile,
+    .free = pds_mode_free,
+    .locate = pds_mode_locate,
+    .locate_steps = pds_mode_locate_steps,
+    .bytes = pds_mode_bytes,
+    .locate_many = pds_mode_locate_many,
 };

@@ -18,19 +18,27 @@ static void diag_file(diag *d, const char *file)
     d->file[n] = '\0';
 }
 
-int diag_at(diag *d, int status, const char *file, long line, long col,
-            const char *fmt, ...)
+/* Records the first error: location (line/col or byte offset) and text. */
+static int diag_vset(diag *d, int status, const char *file, long line, long col,
+                     long long offset, const char *fmt, va_list ap)
 {
-    va_list ap;
     if (!d || d->status)
         return status;
     d->status = status;
     diag_file(d, file);
     d->line = line;
     d->col = col;
-    d->offset = -1;
-    va_start(ap, fmt);
+    d->offset = offset;
     vsnprintf(d->msg, sizeof d->msg, fmt, ap);
+    return status;
+}
+
+int diag_at(diag *d, int status, const char *file, long line, long col,
+            const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    status = diag_vset(d, status, file, line, col, -1, fmt, ap);
     va_end(ap);
     return status;
 }
@@ -39,14 +47,8 @@ int diag_offset(diag *d, int status, const char *file, long long offset,
                 const char *fmt, ...)
 {
     va_list ap;
-    if (!d || d->status)
-        return status;
-    d->status = status;
-    diag_file(d, file);
-    d->line = d->col = 0;
-    d->offset = offset;
     va_start(ap, fmt);
-    vsnprintf(d->msg, sizeof d->msg, fmt, ap);
+    status = diag_vset(d, status, file, 0, 0, offset, fmt, ap);
     va_end(ap);
     return status;
 }

@@ -26,25 +26,28 @@ static int mem_should_fail(void)
 void mem_fail_after(long n) { fail_after = n; alloc_count = 0; }
 long mem_alloc_count(void) { return alloc_count; }
 
+/* A request for zero bytes gets a valid, distinct pointer (one byte), so
+ * that callers need not special-case empty arrays and NULL always means
+ * failure. */
 void *mem_alloc(size_t size)
 {
-    if (size == 0 || mem_should_fail())
+    if (mem_should_fail())
         return NULL;
-    return malloc(size);
+    return malloc(size ? size : 1);
 }
 
 void *mem_calloc(size_t count, size_t size)
 {
-    if (count == 0 || size == 0 || count > SIZE_MAX / size || mem_should_fail())
+    if ((size && count > SIZE_MAX / size) || mem_should_fail())
         return NULL;
-    return calloc(count, size);
+    return count && size ? calloc(count, size) : calloc(1, 1);
 }
 
 void *mem_realloc(void *p, size_t size)
 {
-    if (size == 0 || mem_should_fail())
+    if (mem_should_fail())
         return NULL;
-    return realloc(p, size);
+    return realloc(p, size ? size : 1);
 }
 
 void mem_free(void *p) { free(p); }
@@ -62,6 +65,8 @@ int mem_grow(void **p, size_t *cap, size_t need, size_t elem)
 {
     size_t ncap = *cap ? *cap : 8;
     void *np;
+    if (need == 0)
+        need = 1;             /* an empty array is still allocated */
     if (need <= *cap)
         return 0;
     while (ncap < need) {

@@ -5,14 +5,17 @@
 #define MEM_H
 #include <stddef.h>
 
-void *mem_alloc(size_t size);                 /* NULL on failure or size 0 */
-void *mem_calloc(size_t count, size_t size);  /* NULL on overflow of count*size */
+/* NULL means failure only: a request for zero bytes returns a valid pointer
+ * that mem_free releases. */
+void *mem_alloc(size_t size);                 /* NULL on failure */
+void *mem_calloc(size_t count, size_t size);  /* NULL on failure or overflow of count*size */
 void *mem_realloc(void *p, size_t size);      /* NULL on failure; p untouched */
 void  mem_free(void *p);
 char *mem_strdup(const char *s);
 
 /* Grows *p (an array of *cap elements of elem bytes) to hold at least need
- * elements, doubling; returns 0 on success, -1 on overflow or failure (then *p
+ * elements (at least one, so that *p is allocated even for need 0), doubling;
+ * returns 0 on success, -1 on overflow or failure (then *p
  * and *cap are unchanged). */
 int mem_grow(void **p, size_t *cap, size_t need, size_t elem);
 
