@@ -30,7 +30,7 @@ typedef struct mosaic {
     int32_t mortar_attr;
 } mosaic;
 
-static void release(void *impl)
+static void pds_mosaic_release(void *impl)
 {
     mosaic *m = impl;
     if (!m)
@@ -39,29 +39,29 @@ static void release(void *impl)
     mem_free(m);
 }
 
-static void swap(mosaic *m, size_t a, size_t b)
+static void pds_mosaic_swap(mosaic *m, size_t a, size_t b)
 {
     seed t = m->s[a];
     m->s[a] = m->s[b];
     m->s[b] = t;
 }
 
-static num key(const seed *s, int axis) { return axis ? s->v : s->u; }
+static num pds_mosaic_key(const seed *s, int axis) { return axis ? s->v : s->u; }
 
 /* Quickselect: puts the k-th smallest key (u or v) at k, smaller-or-equal
  * keys before it and larger-or-equal after. Median-of-three pivots. */
-static void select_k(mosaic *m, size_t lo, size_t hi, size_t k, int axis)
+static void pds_mosaic_select_k(mosaic *m, size_t lo, size_t hi, size_t k, int axis)
 {
     while (hi - lo > 1) {
         size_t mid = lo + (hi - lo) / 2, i, store;
-        num a = key(&m->s[lo], axis), b = key(&m->s[mid], axis), c = key(&m->s[hi - 1], axis), pivot;
+        num a = pds_mosaic_key(&m->s[lo], axis), b = pds_mosaic_key(&m->s[mid], axis), c = pds_mosaic_key(&m->s[hi - 1], axis), pivot;
         size_t p = (a < b) == (b < c) ? mid : (b < a) == (a < c) ? lo : hi - 1;
-        swap(m, p, hi - 1);
-        pivot = key(&m->s[hi - 1], axis);
+        pds_mosaic_swap(m, p, hi - 1);
+        pivot = pds_mosaic_key(&m->s[hi - 1], axis);
         for (i = store = lo; i < hi - 1; i++)
-            if (key(&m->s[i], axis) < pivot)
-                swap(m, i, store++);
-        swap(m, store, hi - 1);
+            if (pds_mosaic_key(&m->s[i], axis) < pivot)
+                pds_mosaic_swap(m, i, store++);
+        pds_mosaic_swap(m, store, hi - 1);
         if (k == store)
             return;
         if (k < store)
@@ -71,18 +71,18 @@ static void select_k(mosaic *m, size_t lo, size_t hi, size_t k, int axis)
     }
 }
 
-static void build(mosaic *m, size_t lo, size_t hi, int depth)
+static void pds_mosaic_build(mosaic *m, size_t lo, size_t hi, int depth)
 {
     size_t mid;
     if (hi - lo <= KD_LEAF)
         return;
     mid = lo + (hi - lo) / 2;
-    select_k(m, lo, hi, mid, depth & 1);
-    build(m, lo, mid, depth + 1);
-    build(m, mid + 1, hi, depth + 1);
+    pds_mosaic_select_k(m, lo, hi, mid, depth & 1);
+    pds_mosaic_build(m, lo, mid, depth + 1);
+    pds_mosaic_build(m, mid + 1, hi, depth + 1);
 }
 
-static int compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_mosaic_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     const pds_mosaic *d = &def->mosaic;
     mosaic *m = mem_calloc(1, sizeof *m);
@@ -99,13 +99,13 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
         m->s[i].attr = d->attrs[i];
         m->s[i].order = (uint32_t)i;
     }
-    build(m, 0, n, 0);
+    pds_mosaic_build(m, 0, n, 0);
     m->mortar = num_from_d(d->mortar);
     m->mortar_attr = d->mortar_attr;
     *out = m;
     return 0;
 oom:
-    release(m);
+    pds_mosaic_release(m);
     return NS(pds_oom)(def, file, err);
 }
 
@@ -118,7 +118,7 @@ typedef struct query {
     unsigned long steps;
 } query;
 
-static void consider(query *q, size_t i)
+static void pds_mosaic_consider(query *q, size_t i)
 {
     const seed *s = &q->m->s[i];
     pds_wide dd = pds_wide_sq2(num_sub(s->u, q->u), num_sub(s->v, q->v));
@@ -129,31 +129,31 @@ static void consider(query *q, size_t i)
     }
 }
 
-static void nearest(query *q, size_t lo, size_t hi, int depth)
+static void pds_mosaic_nearest(query *q, size_t lo, size_t hi, int depth)
 {
     size_t mid, i;
     num diff;
     if (hi - lo <= KD_LEAF) {
         for (i = lo; i < hi; i++)
-            consider(q, i);
+            pds_mosaic_consider(q, i);
         return;
     }
     mid = lo + (hi - lo) / 2;
-    consider(q, mid);
-    diff = num_sub(depth & 1 ? q->v : q->u, key(&q->m->s[mid], depth & 1));
+    pds_mosaic_consider(q, mid);
+    diff = num_sub(depth & 1 ? q->v : q->u, pds_mosaic_key(&q->m->s[mid], depth & 1));
     if (diff < NUM_ZERO) {
-        nearest(q, lo, mid, depth + 1);
+        pds_mosaic_nearest(q, lo, mid, depth + 1);
         if (pds_wide_sq2(diff, NUM_ZERO) <= q->best)   /* ties may lie across */
-            nearest(q, mid + 1, hi, depth + 1);
+            pds_mosaic_nearest(q, mid + 1, hi, depth + 1);
     } else {
-        nearest(q, mid + 1, hi, depth + 1);
+        pds_mosaic_nearest(q, mid + 1, hi, depth + 1);
         if (pds_wide_sq2(diff, NUM_ZERO) <= q->best)
-            nearest(q, lo, mid, depth + 1);
+            pds_mosaic_nearest(q, lo, mid, depth + 1);
     }
 }
 
 /* 1 if a seed within the search radius puts the point in the mortar band. */
-static int in_band(query *q, size_t i)
+static int pds_mosaic_in_band(query *q, size_t i)
 {
     const seed *s = &q->m->s[i], *b = &q->m->s[q->bi];
     pds_wide dd;
@@ -166,30 +166,30 @@ static int in_band(query *q, size_t i)
     return pds_wide_band(dd - q->best, q->m->mortar, pds_wide_sq2(num_sub(s->u, b->u), num_sub(s->v, b->v)));
 }
 
-static int band(query *q, size_t lo, size_t hi, int depth)
+static int pds_mosaic_band(query *q, size_t lo, size_t hi, int depth)
 {
     size_t mid, i;
     num diff;
     if (hi - lo <= KD_LEAF) {
         for (i = lo; i < hi; i++)
-            if (in_band(q, i))
+            if (pds_mosaic_in_band(q, i))
                 return 1;
         return 0;
     }
     mid = lo + (hi - lo) / 2;
-    if (in_band(q, mid))
+    if (pds_mosaic_in_band(q, mid))
         return 1;
-    diff = num_sub(depth & 1 ? q->v : q->u, key(&q->m->s[mid], depth & 1));
+    diff = num_sub(depth & 1 ? q->v : q->u, pds_mosaic_key(&q->m->s[mid], depth & 1));
     if (diff <= NUM_ZERO || pds_wide_sq2(diff, NUM_ZERO) <= q->reach2)
-        if (band(q, lo, mid, depth + 1))
+        if (pds_mosaic_band(q, lo, mid, depth + 1))
             return 1;
     if (diff >= NUM_ZERO || pds_wide_sq2(diff, NUM_ZERO) <= q->reach2)
-        if (band(q, mid + 1, hi, depth + 1))
+        if (pds_mosaic_band(q, mid + 1, hi, depth + 1))
             return 1;
     return 0;
 }
 
-static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+static int32_t pds_mosaic_locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const mosaic *m = impl;
     query q;
@@ -199,11 +199,11 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
     q.best = PDS_WIDE_MAX;
     q.bi = 0;
     q.steps = 0;
-    nearest(&q, 0, m->n, 0);
+    pds_mosaic_nearest(&q, 0, m->n, 0);
     if (m->mortar > NUM_ZERO) {
         const seed *b = &m->s[q.bi];
         q.reach2 = pds_wide_reach2(q.best, m->mortar, num_add(num_abs(num_sub(b->u, u)), num_abs(num_sub(b->v, v))));
-        if (band(&q, 0, m->n, 0)) {
+        if (pds_mosaic_band(&q, 0, m->n, 0)) {
             *steps += q.steps;
             return m->mortar_attr;
         }
@@ -212,10 +212,16 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
     return m->s[q.bi].attr;
 }
 
-static size_t bytes(const void *impl)
+static size_t pds_mosaic_bytes(const void *impl)
 {
     const mosaic *m = impl;
     return sizeof *m + m->n * sizeof *m->s;
 }
 
-const NS(pds_kind_ops) NS(pds_mosaic_ops) = { "mosaic", compile, locate, bytes, release };
+const NS(pds_kind_ops) NS(pds_mosaic_ops) = {
+    .name = "mosaic",
+    .compile = pds_mosaic_compile,
+    .locate = pds_mosaic_locate,
+    .bytes = pds_mosaic_bytes,
+    .release = pds_mosaic_release,
+};

@@ -12,7 +12,7 @@ typedef struct pixels {
     int32_t *cells;      /* row j (from v = 0) at cells[j * w] */
 } pixels;
 
-static void release(void *impl)
+static void pds_pixels_release(void *impl)
 {
     pixels *p = impl;
     if (p)
@@ -20,13 +20,13 @@ static void release(void *impl)
     mem_free(p);
 }
 
-static int compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_pixels_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     const pds_pixels *src = &def->pixels;
     pixels *p = mem_calloc(1, sizeof *p);
     long j;
     if (!p || !(p->cells = mem_calloc(src->ncells, sizeof *p->cells))) {
-        release(p);
+        pds_pixels_release(p);
         return NS(pds_oom)(def, file, err);
     }
     p->w = src->width;
@@ -37,17 +37,23 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
     return 0;
 }
 
-static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+static int32_t pds_pixels_locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const pixels *p = impl;
     ++*steps;
     return p->cells[pds_num_cell(v, p->h) * p->w + pds_num_cell(u, p->w)];
 }
 
-static size_t bytes(const void *impl)
+static size_t pds_pixels_bytes(const void *impl)
 {
     const pixels *p = impl;
     return sizeof *p + (size_t)(p->w * p->h) * sizeof *p->cells;
 }
 
-const NS(pds_kind_ops) NS(pds_pixels_ops) = { "pixels", compile, locate, bytes, release };
+const NS(pds_kind_ops) NS(pds_pixels_ops) = {
+    .name = "pixels",
+    .compile = pds_pixels_compile,
+    .locate = pds_pixels_locate,
+    .bytes = pds_pixels_bytes,
+    .release = pds_pixels_release,
+};

@@ -22,7 +22,7 @@ typedef struct quadtree {
     const int32_t *code; size_t pos;
 } quadtree;
 
-static void release(void *impl)
+static void pds_quadtree_release(void *impl)
 {
     quadtree *q = impl;
     if (q)
@@ -31,7 +31,7 @@ static void release(void *impl)
 }
 
 /* Reserves four consecutive child nodes; returns the first index or -1. */
-static long children(quadtree *q)
+static long pds_quadtree_children(quadtree *q)
 {
     size_t base = q->nnodes;
     if (mem_grow((void **)&q->nodes, &q->cap, base + 4, sizeof *q->nodes))
@@ -41,7 +41,7 @@ static long children(quadtree *q)
     return (long)base;
 }
 
-static int build_grid(quadtree *q, size_t idx, long x0, long x1, long y0, long y1)
+static int pds_quadtree_build_grid(quadtree *q, size_t idx, long x0, long x1, long y0, long y1)
 {
     long x, y, xm, ym, base;
     int32_t first;
@@ -59,17 +59,17 @@ static int build_grid(quadtree *q, size_t idx, long x0, long x1, long y0, long y
 split:
     xm = x1 - x0 == 1 ? x1 : x0 + (x1 - x0 + 1) / 2;
     ym = y1 - y0 == 1 ? y1 : y0 + (y1 - y0 + 1) / 2;
-    base = children(q);
+    base = pds_quadtree_children(q);
     if (base < 0)
         return -1;
     q->nodes[idx].v = (int32_t)(-base - 2);
     q->nodes[idx].xm = (uint16_t)xm;
     q->nodes[idx].ym = (uint16_t)ym;
-    return build_grid(q, (size_t)base, x0, xm, y0, ym) || build_grid(q, (size_t)base + 1, xm, x1, y0, ym) ||
-           build_grid(q, (size_t)base + 2, x0, xm, ym, y1) || build_grid(q, (size_t)base + 3, xm, x1, ym, y1);
+    return pds_quadtree_build_grid(q, (size_t)base, x0, xm, y0, ym) || pds_quadtree_build_grid(q, (size_t)base + 1, xm, x1, y0, ym) ||
+           pds_quadtree_build_grid(q, (size_t)base + 2, x0, xm, ym, y1) || pds_quadtree_build_grid(q, (size_t)base + 3, xm, x1, ym, y1);
 }
 
-static int build_code(quadtree *q, size_t idx, long x0, long y0, long size)
+static int pds_quadtree_build_code(quadtree *q, size_t idx, long x0, long y0, long size)
 {
     int32_t c = q->code[q->pos++];
     long base, half = size / 2, k;
@@ -77,19 +77,19 @@ static int build_code(quadtree *q, size_t idx, long x0, long y0, long size)
         q->nodes[idx].v = c;
         return 0;
     }
-    base = children(q);
+    base = pds_quadtree_children(q);
     if (base < 0)
         return -1;
     q->nodes[idx].v = (int32_t)(-base - 2);
     q->nodes[idx].xm = (uint16_t)(x0 + half);
     q->nodes[idx].ym = (uint16_t)(y0 + half);
     for (k = 0; k < 4; k++)
-        if (build_code(q, (size_t)base + (size_t)k, x0 + (k & 1) * half, y0 + (k >> 1) * half, half))
+        if (pds_quadtree_build_code(q, (size_t)base + (size_t)k, x0 + (k & 1) * half, y0 + (k >> 1) * half, half))
             return -1;
     return 0;
 }
 
-static int compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_quadtree_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     const pds_quadtree *src = &def->quad;
     quadtree *q = mem_calloc(1, sizeof *q);
@@ -109,7 +109,7 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
         for (j = 0; j < q->h; j++)
             memcpy(grid + j * q->w, src->pixels.cells + (q->h - 1 - j) * q->w, (size_t)q->w * sizeof *grid);
         q->grid = grid;
-        rc = build_grid(q, 0, 0, q->w, 0, q->h);
+        rc = pds_quadtree_build_grid(q, 0, 0, q->w, 0, q->h);
         mem_free(grid);
         q->grid = NULL;
     } else {
@@ -130,7 +130,7 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
         depth = maxd;
         q->w = q->h = 1L << depth;
         q->code = src->code;
-        rc = build_code(q, 0, 0, 0, q->w);
+        rc = pds_quadtree_build_code(q, 0, 0, 0, q->w);
         q->code = NULL;
     }
     if (rc)
@@ -138,11 +138,11 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
     *out = q;
     return 0;
 oom:
-    release(q);
+    pds_quadtree_release(q);
     return NS(pds_oom)(def, file, err);
 }
 
-static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+static int32_t pds_quadtree_locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const quadtree *q = impl;
     long ix = pds_num_cell(u, q->w), iy = pds_num_cell(v, q->h);
@@ -156,10 +156,16 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
     return n->v;
 }
 
-static size_t bytes(const void *impl)
+static size_t pds_quadtree_bytes(const void *impl)
 {
     const quadtree *q = impl;
     return sizeof *q + q->cap * sizeof *q->nodes;
 }
 
-const NS(pds_kind_ops) NS(pds_quadtree_ops) = { "quadtree", compile, locate, bytes, release };
+const NS(pds_kind_ops) NS(pds_quadtree_ops) = {
+    .name = "quadtree",
+    .compile = pds_quadtree_compile,
+    .locate = pds_quadtree_locate,
+    .bytes = pds_quadtree_bytes,
+    .release = pds_quadtree_release,
+};

@@ -33,7 +33,7 @@ typedef struct tiling {
     int32_t *attrs; long n;
 } tiling;
 
-static void release(void *impl)
+static void pds_tiling_release(void *impl)
 {
     tiling *t = impl;
     if (t)
@@ -41,16 +41,16 @@ static void release(void *impl)
     mem_free(t);
 }
 
-static long mod(long a, long n) { long r = a % n; return r < 0 ? r + n : r; }
+static long pds_tiling_mod(long a, long n) { long r = a % n; return r < 0 ? r + n : r; }
 
-static int compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_tiling_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     const pds_tiling *d = &def->tiling;
     tiling *t = mem_calloc(1, sizeof *t);
     size_t i;
     double r3 = sqrt(3.0), h;
     if (!t || !(t->attrs = mem_calloc(d->nattrs, sizeof *t->attrs))) {
-        release(t);
+        pds_tiling_release(t);
         return NS(pds_oom)(def, file, err);
     }
     for (i = 0; i < d->nattrs; i++)
@@ -70,14 +70,14 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
     t->mortar_attr = d->mortar_attr;
     t->rule = d->rule;
     for (i = 0; i < 3; i++)
-        t->step[i] = mod(d->step[i], t->n);
+        t->step[i] = pds_tiling_mod(d->step[i], t->n);
     t->seed = d->seed;
     *out = t;
     return 0;
 }
 
 /* The cell's id by the assignment rule. */
-static int32_t cell_attr(const tiling *t, long i, long j, long k)
+static int32_t pds_tiling_cell_attr(const tiling *t, long i, long j, long k)
 {
     if (t->rule == PDS_RULE_HASH) {
         uint32_t x = (uint32_t)i * 0x9E3779B1u ^ (uint32_t)j * 0x85EBCA77u ^ (uint32_t)k * 0xC2B2AE3Du ^ t->seed;
@@ -85,11 +85,11 @@ static int32_t cell_attr(const tiling *t, long i, long j, long k)
         return t->attrs[x % (uint32_t)t->n];
     }
     /* Each term is below n^2 <= 2^32: the sum fits in 64 bits. */
-    return t->attrs[((int64_t)mod(i, t->n) * t->step[0] + (int64_t)mod(j, t->n) * t->step[1] +
+    return t->attrs[((int64_t)pds_tiling_mod(i, t->n) * t->step[0] + (int64_t)pds_tiling_mod(j, t->n) * t->step[1] +
                      (int64_t)k * t->step[2]) % t->n];
 }
 
-static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+static int32_t pds_tiling_locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const tiling *t = impl;
     num lu, lv;
@@ -103,7 +103,7 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
         if (t->hm > 0 && (lu <= t->hm || lv <= t->hm || lu >= num_sub(t->w, t->hm) ||
                           lv >= num_sub(t->h, t->hm)))
             return t->mortar_attr;
-        return cell_attr(t, i, j, 0);
+        return pds_tiling_cell_attr(t, i, j, 0);
     } else {
         /* Lattice coordinates: row j and height lv in it; su = the offset
          * along the row from lattice point (i, j), in u units. */
@@ -130,7 +130,7 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
                 if (d0 <= t->hm || d1 <= t->hm || d2 <= t->hm)
                     return t->mortar_attr;
             }
-            return cell_attr(t, i, j, k);
+            return pds_tiling_cell_attr(t, i, j, k);
         } else {
             /* Corners of the triangle relative to lattice point (i, j):
              * (0,0) (w,0) (w/2,h) for k = 0; (w,0) (w/2,h) (3w/2,h) for k = 1. */
@@ -153,15 +153,21 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
             if (t->hm > 0 && dd[second] - dd[best] <= t->mw)
                 return t->mortar_attr;
             /* Lattice point (ci, cj) in axial form: row cj, column ci. */
-            return cell_attr(t, ci[best], cj[best], 0);
+            return pds_tiling_cell_attr(t, ci[best], cj[best], 0);
         }
     }
 }
 
-static size_t bytes(const void *impl)
+static size_t pds_tiling_bytes(const void *impl)
 {
     const tiling *t = impl;
     return sizeof *t + (size_t)t->n * sizeof *t->attrs;
 }
 
-const NS(pds_kind_ops) NS(pds_tiling_ops) = { "tiling", compile, locate, bytes, release };
+const NS(pds_kind_ops) NS(pds_tiling_ops) = {
+    .name = "tiling",
+    .compile = pds_tiling_compile,
+    .locate = pds_tiling_locate,
+    .bytes = pds_tiling_bytes,
+    .release = pds_tiling_release,
+};

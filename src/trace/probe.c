@@ -142,5 +142,11 @@ static int probe_refract(const double *d, const double *n, double eta, double *t
 }
 
 const probe_ops NS(probe_ops) = {
-    NUM_NAME, probe_compile, probe_free, probe_prim_span, probe_hit_fn, probe_respawn,
-    probe_refract};
+    .name = NUM_NAME,
+    .compile = probe_compile,
+    .free = probe_free,
+    .prim_span = probe_prim_span,
+    .hit = probe_hit_fn,
+    .respawn = probe_respawn,
+    .refract = probe_refract,
+};

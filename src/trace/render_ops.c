@@ -97,5 +97,10 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
 }
 
 const render_ops NS(render_ops) = {
-    NUM_NAME, render_ops_compile, render_ops_free, render_ops_thread_new,
-    render_ops_thread_free, render_ops_tile};
+    .name = NUM_NAME,
+    .compile = render_ops_compile,
+    .free = render_ops_free,
+    .thread_new = render_ops_thread_new,
+    .thread_free = render_ops_thread_free,
+    .render_tile = render_ops_tile,
+};
