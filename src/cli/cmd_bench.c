@@ -38,7 +38,7 @@ static void bench_help(FILE *f)
         "fixed-point overflow count.\n"
         "\n"
         "options:\n"
-        "  --size WxH        image size, 1..16384 each (default: each deck's SIZE)\n"
+        "  --size WxH        image size, 1..%d each (default: each deck's SIZE)\n"
         "  --modes LIST      comma-separated modes out of q16,q32,f32,f64 (default: all)\n"
         "  --threads N       worker threads, 1..%d (default: OpenMP's count, %d here)\n"
         "  --csv OUT.csv     also write the rows as CSV with a header line\n"
@@ -48,7 +48,7 @@ static void bench_help(FILE *f)
         "\n"
         "Timings depend on machine load; repeat runs to judge the noise.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
-        RENDER_MAX_THREADS, omp_get_max_threads());
+        SCENE_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads());
 }
 
 /* 1 when an executable gnuplot is on PATH. */
@@ -191,7 +191,7 @@ int cmd_bench(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "--size")) {
-            if (!(v = cli_value("bench", argc, argv, &i)) || cli_size("bench", a, v, 16384, &o.width, &o.height))
+            if (!(v = cli_value("bench", argc, argv, &i)) || cli_size("bench", a, v, SCENE_MAX_SIDE, &o.width, &o.height))
                 goto usage;
         } else if (!strcmp(a, "--modes")) {
             if (!(v = cli_value("bench", argc, argv, &i)) || bench_modes(v, modes, &nmodes))

@@ -5,6 +5,7 @@
 #include "cli/cli_scene.h"
 #include "render/render.h"
 #include "render/outline.h"
+#include "display5080/dl_format.h"
 #include "display5080/dl_image.h"
 #include "util/mem.h"
 #include <omp.h>
@@ -29,8 +30,8 @@ static void render_help(FILE *f)
         "  --wireframe           add the outlines of the primitives as seen (--dl)\n"
         "  --numeric MODE        arithmetic of the geometry: q16 (Q16.16 fixed point, the\n"
         "                        default), q32 (Q32.32), f32 or f64 (IEEE binary32/64)\n"
-        "  --size WxH            image size in pixels, 1..16384 each (default: the\n"
-        "                        deck's SIZE; at most 4096 with --dl)\n"
+        "  --size WxH            image size in pixels, 1..%d each (default: the\n"
+        "                        deck's SIZE; at most %d with --dl)\n"
         "  --threads N           worker threads, 1..%d (default: OpenMP's count, %d here)\n"
         "  --aa N                N x N samples per pixel, 1..%d (default 1)\n"
         "  --stats               print key=value lines to stdout: numeric rays.primary\n"
@@ -43,7 +44,8 @@ static void render_help(FILE *f)
         "\n"
         "A progress bar is drawn on stderr when it is a terminal.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
-        RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA, cli_files_help);
+        SCENE_MAX_SIDE, DL_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA,
+        cli_files_help);
 }
 
 /* Progress bar on stderr (a terminal), redrawn after every tile. */
@@ -68,7 +70,7 @@ static int render_wireframe(const render_fb *fb, int **xy, dl_image_polyline **l
     if (outline_trace(fb->pid, w, h, &segs, &n, err))
         return err->status;
     *xy = mem_calloc(n ? 4 * n : 1, sizeof **xy);
-    *lines = mem_calloc(n ? n : 1, sizeof **lines);
+    *lines = mem_calloc(n, sizeof **lines);
     if (!*xy || !*lines) {
         mem_free(segs);
         mem_free(*xy);
@@ -160,7 +162,7 @@ int cmd_render(int argc, char **argv)
             if (!(mode = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--size")) {
             if (!(v = cli_value("render", argc, argv, &i))
-                || cli_size("render", a, v, 16384, &o.width, &o.height))
+                || cli_size("render", a, v, SCENE_MAX_SIDE, &o.width, &o.height))
                 status = CLI_USAGE;
         } else if (!strcmp(a, "--threads")) {
             if (!(v = cli_value("render", argc, argv, &i))
@@ -202,9 +204,10 @@ int cmd_render(int argc, char **argv)
         || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
         || cli_scene_load(&files, scene_name, &sc, &err))
         goto done;
-    if (out_dl && ((o.width ? o.width : sc->view.width) > 4096
-                   || (o.height ? o.height : sc->view.height) > 4096)) {
-        diag_at(&err, DIAG_USAGE, out_dl, 0, 0, "a display list holds at most 4096x4096 pixels");
+    if (out_dl && ((o.width ? o.width : sc->view.width) > DL_MAX_SIDE
+                   || (o.height ? o.height : sc->view.height) > DL_MAX_SIDE)) {
+        diag_at(&err, DIAG_USAGE, out_dl, 0, 0, "a display list holds at most %dx%d pixels",
+                DL_MAX_SIDE, DL_MAX_SIDE);
         goto done;
     }
     if (cli_is_tty())

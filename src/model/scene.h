@@ -22,6 +22,8 @@
 #define SCENE_NAME_MAX 16     /* significant characters of a name */
 #define SCENE_MAX_FACES 6
 #define SCENE_MAX_LIGHTS 64   /* lights in a scene (parser and renderer) */
+#define SCENE_MAX_SIDE 16384  /* image width or height a deck (SIZE) or a command
+                                 line may ask for; the renderer checks it too */
 
 typedef enum prim_kind {
     PRIM_SPHERE, PRIM_CYLINDER, PRIM_BLOCK, PRIM_CONE, PRIM_HALFSPACE,

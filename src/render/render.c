@@ -67,7 +67,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
         opt.width = sc->view.width;
         opt.height = sc->view.height;
     }
-    if (opt.width < 1 || opt.height < 1 || opt.width > IMAGE_MAX_SIDE || opt.height > IMAGE_MAX_SIDE)
+    if (opt.width < 1 || opt.height < 1 || opt.width > SCENE_MAX_SIDE || opt.height > SCENE_MAX_SIDE)
         return diag_at(err, DIAG_INPUT, sc->source ? sc->source : "", 0, 0,
                        "image size %dx%d out of range", opt.width, opt.height);
     if (opt.aa < 1 || opt.aa > RENDER_MAX_AA || opt.threads < 1 || opt.threads > RENDER_MAX_THREADS)

@@ -217,8 +217,8 @@ static int scene_parse_size(scene_parser *p, scene_cur *c)
 {
     long w, h;
     if (scene_parse_once(p, c, SCENE_PARSE_SIZE) ||
-        scene_cur_int(c, "width", 1, 16384, &w) ||
-        scene_cur_int(c, "height", 1, 16384, &h) || scene_cur_finish(c))
+        scene_cur_int(c, "width", 1, SCENE_MAX_SIDE, &w) ||
+        scene_cur_int(c, "height", 1, SCENE_MAX_SIDE, &h) || scene_cur_finish(c))
         return DIAG_INPUT;
     p->s->view.width = (int)w;
     p->s->view.height = (int)h;
