@@ -5,7 +5,8 @@
  * Handlers read their operands with scene_cur, resolve names through
  * scene_parse_attr_ref / scene_parse_find_solid and build into p->s.
  * New keywords must also be added to the reserved words (scene_cur.c) so
- * that they cannot be names. scene_parse() itself is declared in scene_parse.h. */
+ * that they cannot be names, and documented in docs/scene-format.md
+ * (tests/cli/scene_keywords.sh checks both). scene_parse() itself is declared in scene_parse.h. */
 #ifndef SCENE_PARSER_H
 #define SCENE_PARSER_H
 #include <stddef.h>
