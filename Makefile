@@ -34,7 +34,7 @@ MODULE_LIBS   :=
 .DEFAULT_GOAL := all
 -include mk/*.mk
 
-.PHONY: all test demo bench install uninstall clean deps unit-tests asan-test fuzz-smoke
+.PHONY: all test demo bench install uninstall clean deps unit-tests asan-test fuzz-smoke check-deps
 all: $(BIN)
 
 # --- packages --------------------------------------------------------------
@@ -77,7 +77,11 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIB)
 
 unit-tests: $(TEST_BIN) $(BIN)
 
-test: deps
+# The include graph follows the rooms of docs/architecture.md.
+check-deps:
+	@sh tools/check_deps.sh
+
+test: deps check-deps
 	@$(MAKE) --no-print-directory unit-tests $(TEST_EXTRA)
 	@sh tests/run.sh $(BUILD)
 

@@ -16,6 +16,10 @@ typedef struct image {
     uint8_t *px;                      /* rows top to bottom, tightly packed */
 } image;
 
+/* A channel count that asks a reader for one channel of palette indices
+ * (image_read_png) rather than colours. */
+#define IMAGE_INDEXED 0
+
 /* Allocates a zeroed image; DIAG_INPUT for absurd sizes, DIAG_IO when memory
  * runs out. `what` names the image in the diagnostic. */
 int image_alloc(image *img, int width, int height, int channels, const char *what, diag *err);

@@ -18,7 +18,6 @@ int image_write_png_palette(const char *path, int width, int height, const uint8
  * composited over black. With channels IMAGE_INDEXED the result has one
  * channel holding a palette PNG's palette indices, or another PNG's grey
  * values. Refuses files over 1 GiB and sizes over the limits. */
-#define IMAGE_INDEXED 0
 int image_read_png(const char *path, int channels, image *out, diag *err);
 /* The same from memory (name is used in diagnostics). */
 int image_read_png_memory(const char *name, const void *data, size_t len, int channels,

@@ -8,7 +8,6 @@
  * checks -> the finished scene. Attribute-mapping statements live in
  * scene_attrmap.c, scene_pds*.c and scene_face.c.
  * The language is documented in docs/scene-format.md. */
-#include "image/image_png.h"
 #include "util/dmath.h"
 #include "scene/scene_parser.h"
 #include <math.h>

@@ -8,7 +8,6 @@
  *   PDS name QUADTREE                  CODE lines: ids, NONE or SPLIT in
  *                                      preorder (children SW SE NW NE)
  * Cells and code gather in the block and reach the definition at END. */
-#include "image/image_png.h"
 #include "scene/scene_pds.h"
 #include <ctype.h>
 #include <stdlib.h>
