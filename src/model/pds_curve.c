@@ -4,6 +4,19 @@
 #include <stdlib.h>
 #include "util/mem.h"
 
+/* Samples of segment i (control points i-1..i+2, indices mod n): the k of
+ * pds_curve.h's bound, from the larger norm of the two second differences. */
+static size_t pds_curve_samples(const double *ctl, size_t n, size_t i, double tol,
+                                size_t max_per_seg)
+{
+    const double *p0 = ctl + 2 * ((i + n - 1) % n), *p1 = ctl + 2 * i;
+    const double *p2 = ctl + 2 * ((i + 1) % n), *p3 = ctl + 2 * ((i + 2) % n);
+    double m0 = hypot(p0[0] - 2 * p1[0] + p2[0], p0[1] - 2 * p1[1] + p2[1]);
+    double m1 = hypot(p1[0] - 2 * p2[0] + p3[0], p1[1] - 2 * p2[1] + p3[1]);
+    double m = m0 > m1 ? m0 : m1, kd = ceil(sqrt(m / (8 * tol)));
+    return kd < 1 ? 1 : kd > (double)max_per_seg ? max_per_seg : (size_t)kd;
+}
+
 int pds_curve_flatten(const double *ctl, size_t n, double tol, size_t max_per_seg,
                       size_t max_total, double **out, size_t *nout)
 {
@@ -11,12 +24,7 @@ int pds_curve_flatten(const double *ctl, size_t n, double tol, size_t max_per_se
     double *pts;
     /* First pass: sample counts, so the allocation is exact and bounded. */
     for (i = 0; i < n; i++) {
-        const double *p0 = ctl + 2 * ((i + n - 1) % n), *p1 = ctl + 2 * i;
-        const double *p2 = ctl + 2 * ((i + 1) % n), *p3 = ctl + 2 * ((i + 2) % n);
-        double m0 = hypot(p0[0] - 2 * p1[0] + p2[0], p0[1] - 2 * p1[1] + p2[1]);
-        double m1 = hypot(p1[0] - 2 * p2[0] + p3[0], p1[1] - 2 * p2[1] + p3[1]);
-        double m = m0 > m1 ? m0 : m1, kd = ceil(sqrt(m / (8 * tol)));
-        size_t k = kd < 1 ? 1 : kd > (double)max_per_seg ? max_per_seg : (size_t)kd;
+        size_t k = pds_curve_samples(ctl, n, i, tol, max_per_seg);
         if (k > max_total - total)
             return -1;
         total += k;
@@ -27,10 +35,7 @@ int pds_curve_flatten(const double *ctl, size_t n, double tol, size_t max_per_se
     for (i = 0; i < n; i++) {
         const double *p0 = ctl + 2 * ((i + n - 1) % n), *p1 = ctl + 2 * i;
         const double *p2 = ctl + 2 * ((i + 1) % n), *p3 = ctl + 2 * ((i + 2) % n);
-        double m0 = hypot(p0[0] - 2 * p1[0] + p2[0], p0[1] - 2 * p1[1] + p2[1]);
-        double m1 = hypot(p1[0] - 2 * p2[0] + p3[0], p1[1] - 2 * p2[1] + p3[1]);
-        double m = m0 > m1 ? m0 : m1, kd = ceil(sqrt(m / (8 * tol)));
-        size_t k = kd < 1 ? 1 : kd > (double)max_per_seg ? max_per_seg : (size_t)kd, s;
+        size_t k = pds_curve_samples(ctl, n, i, tol, max_per_seg), s;
         for (s = 0; s < k; s++) {
             /* Uniform cubic B-spline basis at t (segment start included,
              * end excluded: the next segment starts there). */
@@ -58,32 +63,33 @@ double pds_curve_area2(const double *pts, size_t n)
     return a;
 }
 
-static double orient(const double *a, const double *b, const double *c)
+static double pds_curve_orient(const double *a, const double *b, const double *c)
 {
     double d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     return d > 0 ? 1 : d < 0 ? -1 : 0;
 }
 
 /* c lies within the bounding box of segment ab (used when collinear). */
-static int within(const double *a, const double *b, const double *c)
+static int pds_curve_within(const double *a, const double *b, const double *c)
 {
     return fmin(a[0], b[0]) <= c[0] && c[0] <= fmax(a[0], b[0]) &&
            fmin(a[1], b[1]) <= c[1] && c[1] <= fmax(a[1], b[1]);
 }
 
 /* Closed segments ab and cd share at least one point. */
-static int touch(const double *a, const double *b, const double *c, const double *d)
+static int pds_curve_touch(const double *a, const double *b, const double *c, const double *d)
 {
-    double o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    double o1 = pds_curve_orient(a, b, c), o2 = pds_curve_orient(a, b, d);
+    double o3 = pds_curve_orient(c, d, a), o4 = pds_curve_orient(c, d, b);
     if (o1 * o2 < 0 && o3 * o4 < 0)
         return 1;
-    return (o1 == 0 && within(a, b, c)) || (o2 == 0 && within(a, b, d)) ||
-           (o3 == 0 && within(c, d, a)) || (o4 == 0 && within(c, d, b));
+    return (o1 == 0 && pds_curve_within(a, b, c)) || (o2 == 0 && pds_curve_within(a, b, d)) ||
+           (o3 == 0 && pds_curve_within(c, d, a)) || (o4 == 0 && pds_curve_within(c, d, b));
 }
 
 typedef struct edge_key { double lo; size_t i; } edge_key;
 
-static int edge_cmp(const void *a, const void *b)
+static int pds_curve_edge_cmp(const void *a, const void *b)
 {
     const edge_key *x = a, *y = b;
     if (x->lo != y->lo)
@@ -91,7 +97,7 @@ static int edge_cmp(const void *a, const void *b)
     return x->i < y->i ? -1 : x->i > y->i;
 }
 
-static void report(size_t a, size_t b, size_t *ea, size_t *eb)
+static void pds_curve_report(size_t a, size_t b, size_t *ea, size_t *eb)
 {
     *ea = a < b ? a : b;
     *eb = a < b ? b : a;
@@ -105,9 +111,9 @@ int pds_curve_simple(const double *pts, size_t n, size_t *ea, size_t *eb)
     /* Adjacent edges meet at their shared vertex; they must not fold back. */
     for (i = 0; i < n; i++) {
         const double *a = pts + 2 * i, *b = pts + 2 * ((i + 1) % n), *c = pts + 2 * ((i + 2) % n);
-        if (orient(a, b, c) == 0 &&
+        if (pds_curve_orient(a, b, c) == 0 &&
             (a[0] - b[0]) * (c[0] - b[0]) + (a[1] - b[1]) * (c[1] - b[1]) > 0) {
-            report(i, (i + 1) % n, ea, eb);
+            pds_curve_report(i, (i + 1) % n, ea, eb);
             return 0;
         }
     }
@@ -122,7 +128,7 @@ int pds_curve_simple(const double *pts, size_t n, size_t *ea, size_t *eb)
         keys[i].lo = fmin(pts[2 * i], pts[2 * ((i + 1) % n)]);
         keys[i].i = i;
     }
-    qsort(keys, n, sizeof *keys, edge_cmp);
+    qsort(keys, n, sizeof *keys, pds_curve_edge_cmp);
     for (k = 0; k < n; k++) {
         size_t e = keys[k].i, j, kept = 0;
         const double *a = pts + 2 * e, *b = pts + 2 * ((e + 1) % n);
@@ -140,8 +146,8 @@ int pds_curve_simple(const double *pts, size_t n, size_t *ea, size_t *eb)
             active[kept++] = f;
             if ((f + 1) % n == e || (e + 1) % n == f)
                 continue;                        /* adjacent: checked above */
-            if (touch(a, b, c, d)) {
-                report(e, f, ea, eb);
+            if (pds_curve_touch(a, b, c, d)) {
+                pds_curve_report(e, f, ea, eb);
                 mem_free(keys);
                 mem_free(active);
                 return 0;

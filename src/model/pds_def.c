@@ -42,7 +42,7 @@ void pds_def_free(pds_def *d)
 }
 
 /* Appends one node, growing the array; -1 on failure. */
-static long cpg_push(pds_def *d, pds_cpg_op op, int32_t attr, scene_loc loc)
+static long pds_def_cpg_push(pds_def *d, pds_cpg_op op, int32_t attr, scene_loc loc)
 {
     pds_cpg *c = &d->cpg;
     pds_cpg_node *n;
@@ -60,7 +60,7 @@ static long cpg_push(pds_def *d, pds_cpg_op op, int32_t attr, scene_loc loc)
 
 long pds_cpg_rect(pds_def *d, double u0, double v0, double u1, double v1, int32_t attr, scene_loc loc)
 {
-    long i = cpg_push(d, PDS_CPG_RECT, attr, loc);
+    long i = pds_def_cpg_push(d, PDS_CPG_RECT, attr, loc);
     if (i >= 0) {
         double *p = d->cpg.nodes[i].p;
         p[0] = u0; p[1] = v0; p[2] = u1; p[3] = v1;
@@ -70,7 +70,7 @@ long pds_cpg_rect(pds_def *d, double u0, double v0, double u1, double v1, int32_
 
 long pds_cpg_ellipse(pds_def *d, double cu, double cv, double ru, double rv, int32_t attr, scene_loc loc)
 {
-    long i = cpg_push(d, PDS_CPG_ELLIPSE, attr, loc);
+    long i = pds_def_cpg_push(d, PDS_CPG_ELLIPSE, attr, loc);
     if (i >= 0) {
         double *p = d->cpg.nodes[i].p;
         p[0] = cu; p[1] = cv; p[2] = ru; p[3] = rv;
@@ -85,7 +85,7 @@ long pds_cpg_polygon(pds_def *d, const double *uv, size_t nvert, int32_t attr, s
     if (nvert > PDS_MAX_VERTICES * 4UL ||
         mem_grow((void **)&c->pts, &c->cap_pts, c->npts + nvert, 2 * sizeof *c->pts))
         return -1;
-    i = cpg_push(d, PDS_CPG_POLYGON, attr, loc);
+    i = pds_def_cpg_push(d, PDS_CPG_POLYGON, attr, loc);
     if (i < 0)
         return -1;
     if (nvert)
@@ -98,7 +98,7 @@ long pds_cpg_polygon(pds_def *d, const double *uv, size_t nvert, int32_t attr, s
 
 long pds_cpg_nested(pds_def *d, const pds_def *sub, scene_loc loc)
 {
-    long i = cpg_push(d, PDS_CPG_NESTED, PDS_INHERIT, loc);
+    long i = pds_def_cpg_push(d, PDS_CPG_NESTED, PDS_INHERIT, loc);
     if (i >= 0)
         d->cpg.nodes[i].sub = sub;
     return i;
@@ -111,7 +111,7 @@ long pds_cpg_op_node(pds_def *d, pds_cpg_op op, const size_t *operands, size_t n
     if (n > PDS_MAX_NODES * 4UL ||
         mem_grow((void **)&c->kids, &c->cap_kids, c->nkids + n, sizeof *c->kids))
         return -1;
-    i = cpg_push(d, op, attr, loc);
+    i = pds_def_cpg_push(d, op, attr, loc);
     if (i < 0)
         return -1;
     if (n)
@@ -123,7 +123,7 @@ long pds_cpg_op_node(pds_def *d, pds_cpg_op op, const size_t *operands, size_t n
 }
 
 /* m = t * m for 2x3 affines (t applied after m). */
-static void compose_after(double m[6], const double t[6])
+static void pds_def_compose_after(double m[6], const double t[6])
 {
     double r[6];
     r[0] = t[0] * m[0] + t[1] * m[3];
@@ -139,7 +139,7 @@ void pds_cpg_translate(pds_def *d, size_t node, double du, double dv)
 {
     double t[6] = { 1, 0, 0, 0, 1, 0 };
     t[2] = du; t[5] = dv;
-    compose_after(d->cpg.nodes[node].xf, t);
+    pds_def_compose_after(d->cpg.nodes[node].xf, t);
 }
 
 void pds_cpg_rotate(pds_def *d, size_t node, double degrees)
@@ -154,14 +154,14 @@ void pds_cpg_rotate(pds_def *d, size_t node, double degrees)
     else if (r == 270) { c = 0; s = -1; }
     else { c = cos(dmath_rad(r)); s = sin(dmath_rad(r)); }
     t[0] = c; t[1] = -s; t[2] = 0; t[3] = s; t[4] = c; t[5] = 0;
-    compose_after(d->cpg.nodes[node].xf, t);
+    pds_def_compose_after(d->cpg.nodes[node].xf, t);
 }
 
 void pds_cpg_scale(pds_def *d, size_t node, double su, double sv)
 {
     double t[6] = { 0, 0, 0, 0, 0, 0 };
     t[0] = su; t[4] = sv;
-    compose_after(d->cpg.nodes[node].xf, t);
+    pds_def_compose_after(d->cpg.nodes[node].xf, t);
 }
 
 void pds_cpg_shear(pds_def *d, size_t node, double shu, double shv)
@@ -169,8 +169,8 @@ void pds_cpg_shear(pds_def *d, size_t node, double shu, double shv)
     double a[6] = { 1, 0, 0, 0, 1, 0 }, b[6] = { 1, 0, 0, 0, 1, 0 };
     a[1] = shu;
     b[3] = shv;
-    compose_after(d->cpg.nodes[node].xf, a);
-    compose_after(d->cpg.nodes[node].xf, b);
+    pds_def_compose_after(d->cpg.nodes[node].xf, a);
+    pds_def_compose_after(d->cpg.nodes[node].xf, b);
 }
 
 int pds_pixels_set(pds_pixels *px, int width, int height, const int32_t *cells, size_t ncells)
@@ -247,9 +247,9 @@ long pds_curve_add(pds_def *d, int bspline, const double *uv, size_t npts, int32
 
 #define FAIL(loc, ...) diag_at(err, DIAG_INPUT, file, (loc).line, (loc).col, __VA_ARGS__)
 
-static int id_ok(int32_t id) { return id == PDS_NONE || (id >= 0 && id <= PDS_MAX_ATTR); }
+static int pds_def_id_ok(int32_t id) { return id == PDS_NONE || (id >= 0 && id <= PDS_MAX_ATTR); }
 
-static int finite_all(const double *x, size_t n)
+static int pds_def_finite_all(const double *x, size_t n)
 {
     size_t i;
     for (i = 0; i < n; i++)
@@ -261,7 +261,7 @@ static int finite_all(const double *x, size_t n)
 /* Validates a closed polyline shared by polygons and curves: `what` names
  * it in messages; a flattened B-spline reports where it crosses itself
  * instead of edge numbers the deck never mentions. */
-static int check_ring(const double *pts, size_t n, const char *what, int bspline,
+static int pds_def_check_ring(const double *pts, size_t n, const char *what, int bspline,
                       const char *file, scene_loc loc, diag *err)
 {
     size_t i, ea, eb;
@@ -313,14 +313,14 @@ void pds_cpg_placements(const pds_def *d, double (*m)[6], int *depth)
         for (k = 0; k < n->count; k++) {
             size_t kid = c->kids[n->first + k];
             memcpy(m[kid], c->nodes[kid].xf, sizeof m[0]);
-            compose_after(m[kid], m[i]);
+            pds_def_compose_after(m[kid], m[i]);
             depth[kid] = depth[i] + 1;
         }
     }
 }
 
 /* Bounding box (u0,v0,u1,v1) of leaf `n` placed by `m`. */
-static void leaf_box(const pds_def *d, const pds_cpg_node *n, const double m[6], double box[4])
+static void pds_def_leaf_box(const pds_def *d, const pds_cpg_node *n, const double m[6], double box[4])
 {
     double pts4[8];
     const double *pts;
@@ -350,16 +350,16 @@ static void leaf_box(const pds_def *d, const pds_cpg_node *n, const double m[6],
     }
 }
 
-static const char *op_name(pds_cpg_op op)
+static const char *pds_def_op_name(pds_cpg_op op)
 {
     static const char *names[] = { "rectangle", "ellipse", "polygon", "nested PDS", "union", "intersection",
                                    "difference" };
     return names[op];
 }
 
-static int check_nested(const pds_def *sub, const char *file, diag *err, int depth);
+static int pds_def_check_nested(const pds_def *sub, const char *file, diag *err, int depth);
 
-static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
+static int pds_def_check_cpg(const pds_def *d, const char *file, diag *err, int nest)
 {
     const pds_cpg *c = &d->cpg;
     size_t i, k;
@@ -375,22 +375,22 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
     for (i = 0; i < c->nnodes; i++) {
         const pds_cpg_node *n = &c->nodes[i];
         double det = n->xf[0] * n->xf[4] - n->xf[1] * n->xf[3];
-        if (!finite_all(n->xf, 6))
-            return FAIL(n->loc, "%s transform has a non-finite value", op_name(n->op));
+        if (!pds_def_finite_all(n->xf, 6))
+            return FAIL(n->loc, "%s transform has a non-finite value", pds_def_op_name(n->op));
         if (det == 0 || !isfinite(det))
-            return FAIL(n->loc, "%s transform is singular (it flattens the region)", op_name(n->op));
-        if (!id_ok(n->attr) && !(n->op >= PDS_CPG_NESTED && n->attr == PDS_INHERIT))
+            return FAIL(n->loc, "%s transform is singular (it flattens the region)", pds_def_op_name(n->op));
+        if (!pds_def_id_ok(n->attr) && !(n->op >= PDS_CPG_NESTED && n->attr == PDS_INHERIT))
             return FAIL(n->loc, "region attribute id %ld is out of range (0..%d or none)",
                         (long)n->attr, PDS_MAX_ATTR);
         switch (n->op) {
         case PDS_CPG_RECT:
-            if (!finite_all(n->p, 4))
+            if (!pds_def_finite_all(n->p, 4))
                 return FAIL(n->loc, "rectangle has a non-finite coordinate");
             if (!(n->p[0] < n->p[2] && n->p[1] < n->p[3]))
                 return FAIL(n->loc, "rectangle is empty (it needs u0 < u1 and v0 < v1)");
             break;
         case PDS_CPG_ELLIPSE:
-            if (!finite_all(n->p, 4))
+            if (!pds_def_finite_all(n->p, 4))
                 return FAIL(n->loc, "ellipse has a non-finite value");
             if (!(n->p[2] > 0 && n->p[3] > 0))
                 return FAIL(n->loc, "ellipse is empty (radii %g and %g must be positive)", n->p[2], n->p[3]);
@@ -402,9 +402,9 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
                 return FAIL(n->loc, "polygon needs at least 3 vertices, got %zu", n->count);
             if (n->count > PDS_MAX_VERTICES)
                 return FAIL(n->loc, "polygon has %zu vertices (limit %d)", n->count, PDS_MAX_VERTICES);
-            if (!finite_all(c->pts + 2 * n->first, 2 * n->count))
+            if (!pds_def_finite_all(c->pts + 2 * n->first, 2 * n->count))
                 return FAIL(n->loc, "polygon has a non-finite coordinate");
-            rc = check_ring(c->pts + 2 * n->first, n->count, "polygon", 0, file, n->loc, err);
+            rc = pds_def_check_ring(c->pts + 2 * n->first, n->count, "polygon", 0, file, n->loc, err);
             if (rc)
                 return rc;
             break;
@@ -416,12 +416,13 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
             break;
         default:
             if (n->count == 0)
-                return FAIL(n->loc, "%s needs at least one operand", op_name(n->op));
+                return FAIL(n->loc, "%s needs at least one operand", pds_def_op_name(n->op));
             if (n->first > c->nkids || n->count > c->nkids - n->first)
-                return FAIL(n->loc, "%s operands are not defined", op_name(n->op));
+                return FAIL(n->loc, "%s operands are not defined", pds_def_op_name(n->op));
             for (k = 0; k < n->count; k++)
                 if (c->kids[n->first + k] >= i)
-                    return FAIL(n->loc, "%s operand %zu is not defined before it", op_name(n->op), k + 1);
+                    return FAIL(n->loc, "%s operand %zu is not defined before it",
+                                pds_def_op_name(n->op), k + 1);
         }
     }
     used = mem_calloc(c->nnodes, 1);
@@ -439,7 +440,7 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
             size_t kid = c->kids[n->first + k];
             if (used[kid]) {
                 rc = FAIL(n->loc, "%s operand %zu is already an operand elsewhere (CPG must be a tree)",
-                          op_name(n->op), k + 1);
+                          pds_def_op_name(n->op), k + 1);
                 break;
             }
             used[kid] = 1;
@@ -459,10 +460,10 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
         }
         if (n->op >= PDS_CPG_UNION)
             continue;
-        leaf_box(d, n, m[i], box);
+        pds_def_leaf_box(d, n, m[i], box);
         if (!(box[0] >= -PDS_COORD_MAX && box[1] >= -PDS_COORD_MAX &&
               box[2] <= PDS_COORD_MAX && box[3] <= PDS_COORD_MAX)) {
-            rc = FAIL(n->loc, "%s reaches beyond -%g..%g after its transforms", op_name(n->op),
+            rc = FAIL(n->loc, "%s reaches beyond -%g..%g after its transforms", pds_def_op_name(n->op),
                       PDS_COORD_MAX, PDS_COORD_MAX);
             goto done;
         }
@@ -479,7 +480,7 @@ static int check_cpg(const pds_def *d, const char *file, diag *err, int nest)
                 rc = FAIL(n->loc, "nested PDS is more than 4096 times longer than wide after its transforms");
                 goto done;
             }
-            rc = check_nested(n->sub, file, err, nest + 1);
+            rc = pds_def_check_nested(n->sub, file, err, nest + 1);
             if (rc)
                 goto done;
         }
@@ -506,7 +507,8 @@ done:
     return rc;
 }
 
-static int check_pixels(const pds_pixels *px, const char *what, const char *file, scene_loc loc, diag *err)
+static int pds_def_check_pixels(const pds_pixels *px, const char *what, const char *file,
+                                scene_loc loc, diag *err)
 {
     size_t i, n;
     if (px->width < 1 || px->height < 1 || px->width > PDS_MAX_SIDE || px->height > PDS_MAX_SIDE)
@@ -519,13 +521,13 @@ static int check_pixels(const pds_pixels *px, const char *what, const char *file
         return FAIL(loc, "%s is %d x %d (%zu cells) but %zu values were given", what, px->width,
                     px->height, n, px->ncells);
     for (i = 0; i < n; i++)
-        if (!id_ok(px->cells[i]))
+        if (!pds_def_id_ok(px->cells[i]))
             return FAIL(loc, "%s value %ld at column %zu, row %zu is not a region attribute id",
                         what, (long)px->cells[i], i % (size_t)px->width + 1, i / (size_t)px->width + 1);
     return 0;
 }
 
-static int check_tiling(const pds_def *d, const char *file, diag *err)
+static int pds_def_check_tiling(const pds_def *d, const char *file, diag *err)
 {
     const pds_tiling *t = &d->tiling;
     size_t i;
@@ -543,10 +545,10 @@ static int check_tiling(const pds_def *d, const char *file, diag *err)
     if (t->nattrs == 0)
         return FAIL(d->loc, "tiling needs at least one tile attribute");
     for (i = 0; i < t->nattrs; i++)
-        if (!id_ok(t->attrs[i]))
+        if (!pds_def_id_ok(t->attrs[i]))
             return FAIL(d->loc, "region attribute id %ld is out of range (0..%d or none)",
                         (long)t->attrs[i], PDS_MAX_ATTR);
-    if (!id_ok(t->mortar_attr))
+    if (!pds_def_id_ok(t->mortar_attr))
         return FAIL(d->loc, "region attribute id %ld is out of range (0..%d or none)",
                     (long)t->mortar_attr, PDS_MAX_ATTR);
     return 0;
@@ -554,7 +556,7 @@ static int check_tiling(const pds_def *d, const char *file, diag *err)
 
 typedef struct seed_key { double u, v; size_t i; } seed_key;
 
-static int seed_cmp(const void *a, const void *b)
+static int pds_def_seed_cmp(const void *a, const void *b)
 {
     const seed_key *x = a, *y = b;
     if (x->u != y->u)
@@ -564,7 +566,7 @@ static int seed_cmp(const void *a, const void *b)
     return x->i < y->i ? -1 : x->i > y->i;
 }
 
-static int check_mosaic(const pds_def *d, const char *file, diag *err)
+static int pds_def_check_mosaic(const pds_def *d, const char *file, diag *err)
 {
     const pds_mosaic *m = &d->mosaic;
     seed_key *keys;
@@ -576,14 +578,14 @@ static int check_mosaic(const pds_def *d, const char *file, diag *err)
         return FAIL(d->loc, "mosaic has %zu seeds (limit %ld)", m->nseeds, PDS_MAX_SEEDS);
     if (!(m->mortar >= 0 && m->mortar <= 0.25))
         return FAIL(d->loc, "mortar width %g must be in 0..0.25", m->mortar);
-    if (!id_ok(m->mortar_attr))
+    if (!pds_def_id_ok(m->mortar_attr))
         return FAIL(d->loc, "region attribute id %ld is out of range (0..%d or none)",
                     (long)m->mortar_attr, PDS_MAX_ATTR);
     for (i = 0; i < m->nseeds; i++) {
         double u = m->seeds[2 * i], v = m->seeds[2 * i + 1];
         if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1))
             return FAIL(d->loc, "mosaic seed %zu lies outside the unit square", i + 1);
-        if (!id_ok(m->attrs[i]))
+        if (!pds_def_id_ok(m->attrs[i]))
             return FAIL(d->loc, "region attribute id %ld is out of range (0..%d or none)",
                         (long)m->attrs[i], PDS_MAX_ATTR);
     }
@@ -595,7 +597,7 @@ static int check_mosaic(const pds_def *d, const char *file, diag *err)
         keys[i].v = m->seeds[2 * i + 1];
         keys[i].i = i;
     }
-    qsort(keys, m->nseeds, sizeof *keys, seed_cmp);
+    qsort(keys, m->nseeds, sizeof *keys, pds_def_seed_cmp);
     for (i = 1; i < m->nseeds; i++)
         if (keys[i].u == keys[i - 1].u && keys[i].v == keys[i - 1].v) {
             rc = FAIL(d->loc, "mosaic seeds %zu and %zu coincide", keys[i - 1].i + 1, keys[i].i + 1);
@@ -605,7 +607,7 @@ static int check_mosaic(const pds_def *d, const char *file, diag *err)
     return rc;
 }
 
-static int check_quadtree(const pds_def *d, const char *file, diag *err)
+static int pds_def_check_quadtree(const pds_def *d, const char *file, diag *err)
 {
     const pds_quadtree *q = &d->quad;
     size_t i, pending = 1;
@@ -613,13 +615,13 @@ static int check_quadtree(const pds_def *d, const char *file, diag *err)
     unsigned char need[PDS_QT_MAX_DEPTH + 2];
     int depth = 0;
     if (q->from_pixels)
-        return check_pixels(&q->pixels, "quadtree pixel array", file, d->loc, err);
+        return pds_def_check_pixels(&q->pixels, "quadtree pixel array", file, d->loc, err);
     memset(need, 0, sizeof need);
     for (i = 0; i < q->ncode; i++) {
         int32_t c = q->code[i];
         if (pending == 0)
             return FAIL(d->loc, "quadtree code has %zu values after the tree is complete", q->ncode - i);
-        if (c != PDS_QT_SPLIT && !id_ok(c))
+        if (c != PDS_QT_SPLIT && !pds_def_id_ok(c))
             return FAIL(d->loc, "quadtree value %ld is neither a region attribute id nor a split", (long)c);
         if (c == PDS_QT_SPLIT) {
             if (depth >= PDS_QT_MAX_DEPTH)
@@ -638,7 +640,7 @@ static int check_quadtree(const pds_def *d, const char *file, diag *err)
 }
 
 /* Flattened ring of curve k in *pts (owned by caller iff *owned). */
-static int curve_ring(const pds_curves *c, const pds_curve *k, double **pts, size_t *n, int *owned)
+static int pds_def_curve_ring(const pds_curves *c, const pds_curve *k, double **pts, size_t *n, int *owned)
 {
     if (!k->bspline) {
         *pts = c->pts + 2 * k->first;
@@ -653,10 +655,10 @@ static int curve_ring(const pds_curves *c, const pds_curve *k, double **pts, siz
 
 int pds_curves_ring(const pds_curves *c, size_t i, double **pts, size_t *n, int *owned)
 {
-    return curve_ring(c, &c->curves[i], pts, n, owned);
+    return pds_def_curve_ring(c, &c->curves[i], pts, n, owned);
 }
 
-static int check_curves(const pds_def *d, const char *file, diag *err)
+static int pds_def_check_curves(const pds_def *d, const char *file, diag *err)
 {
     const pds_curves *c = &d->curves;
     size_t i, j;
@@ -676,7 +678,7 @@ static int check_curves(const pds_def *d, const char *file, diag *err)
             return FAIL(k->loc, "%s needs at least 3 points, got %zu", what, k->count);
         if (k->count > PDS_MAX_VERTICES)
             return FAIL(k->loc, "%s has %zu points (limit %d)", what, k->count, PDS_MAX_VERTICES);
-        if (!id_ok(k->attr))
+        if (!pds_def_id_ok(k->attr))
             return FAIL(k->loc, "region attribute id %ld is out of range (0..%d or none)",
                         (long)k->attr, PDS_MAX_ATTR);
         for (j = 0; j < k->count; j++) {
@@ -685,13 +687,13 @@ static int check_curves(const pds_def *d, const char *file, diag *err)
                 return FAIL(k->loc, "%s point %zu is not a number in -%g..%g", what, j + 1,
                             PDS_COORD_MAX, PDS_COORD_MAX);
         }
-        rc = curve_ring(c, k, &pts, &n, &owned);
+        rc = pds_def_curve_ring(c, k, &pts, &n, &owned);
         if (rc == -1)
             return FAIL(k->loc, "%s flattens to more than %d points at tolerance %g", what,
                         PDS_MAX_VERTICES, c->tolerance);
         if (rc)
             return diag_at(err, DIAG_IO, file, k->loc.line, k->loc.col, "out of memory checking a curve");
-        rc = check_ring(pts, n, what, k->bspline, file, k->loc, err);
+        rc = pds_def_check_ring(pts, n, what, k->bspline, file, k->loc, err);
         if (owned)
             mem_free(pts);
         if (rc)
@@ -700,31 +702,31 @@ static int check_curves(const pds_def *d, const char *file, diag *err)
     return 0;
 }
 
-static int check_def(const pds_def *d, const char *file, diag *err, int nest);
+static int pds_def_check_def(const pds_def *d, const char *file, diag *err, int nest);
 
 /* A PDS held by a CPG leaf at nesting depth `depth`; deeper than
  * PDS_MAX_NESTING (which also catches cycles) is refused. */
-static int check_nested(const pds_def *sub, const char *file, diag *err, int depth)
+static int pds_def_check_nested(const pds_def *sub, const char *file, diag *err, int depth)
 {
     if (depth > PDS_MAX_NESTING)
         return FAIL(sub->loc, "PDS nested more than %d deep (or containing itself)", PDS_MAX_NESTING);
-    return check_def(sub, file, err, depth);
+    return pds_def_check_def(sub, file, err, depth);
 }
 
 int pds_def_check(const pds_def *d, const char *file, diag *err)
 {
-    return check_def(d, file, err, 0);
+    return pds_def_check_def(d, file, err, 0);
 }
 
-static int check_def(const pds_def *d, const char *file, diag *err, int nest)
+static int pds_def_check_def(const pds_def *d, const char *file, diag *err, int nest)
 {
     switch (d->kind) {
-    case PDS_CPG: return check_cpg(d, file, err, nest);
-    case PDS_PIXELS: return check_pixels(&d->pixels, "pixel array", file, d->loc, err);
-    case PDS_TILING: return check_tiling(d, file, err);
-    case PDS_MOSAIC: return check_mosaic(d, file, err);
-    case PDS_QUADTREE: return check_quadtree(d, file, err);
-    case PDS_CURVES: return check_curves(d, file, err);
+    case PDS_CPG: return pds_def_check_cpg(d, file, err, nest);
+    case PDS_PIXELS: return pds_def_check_pixels(&d->pixels, "pixel array", file, d->loc, err);
+    case PDS_TILING: return pds_def_check_tiling(d, file, err);
+    case PDS_MOSAIC: return pds_def_check_mosaic(d, file, err);
+    case PDS_QUADTREE: return pds_def_check_quadtree(d, file, err);
+    case PDS_CURVES: return pds_def_check_curves(d, file, err);
     default: return FAIL(d->loc, "unknown PDS kind");
     }
 }

@@ -5,7 +5,7 @@
 
 typedef struct colour_key { uint32_t rgb; int32_t attr; } colour_key;
 
-static int key_cmp(const void *a, const void *b)
+static int pds_image_key_cmp(const void *a, const void *b)
 {
     uint32_t x = ((const colour_key *)a)->rgb, y = ((const colour_key *)b)->rgb;
     return (x > y) - (x < y);
@@ -38,7 +38,7 @@ int pds_image_to_pixels(const image *img, const pds_image_map *map, pds_pixels *
             keys[i].rgb = (uint32_t)map->rgb[3 * i] << 16 | (uint32_t)map->rgb[3 * i + 1] << 8 | map->rgb[3 * i + 2];
             keys[i].attr = map->rgb_attr[i];
         }
-        qsort(keys, map->nrgb, sizeof *keys, key_cmp);
+        qsort(keys, map->nrgb, sizeof *keys, pds_image_key_cmp);
     }
     for (i = 0; i < n && !rc; i++) {
         if (img->channels == 1) {
@@ -55,7 +55,7 @@ int pds_image_to_pixels(const image *img, const pds_image_map *map, pds_pixels *
         } else {
             colour_key k, *hit;
             k.rgb = (uint32_t)img->px[3 * i] << 16 | (uint32_t)img->px[3 * i + 1] << 8 | img->px[3 * i + 2];
-            hit = bsearch(&k, keys, map->nrgb, sizeof *keys, key_cmp);
+            hit = bsearch(&k, keys, map->nrgb, sizeof *keys, pds_image_key_cmp);
             if (!hit)
                 rc = diag_at(err, DIAG_INPUT, file, loc.line, loc.col,
                              "pixel (%zu, %zu) has colour #%06lx, which the colour map does not list",

@@ -13,7 +13,7 @@ static const char *const face_kind_names[PRIM_KIND_COUNT] = {
 };
 
 /* Reads the face name of a `kind` primitive into *face. */
-static int face_name(scene_cur *c, int kind, int *face)
+static int scene_face_name(scene_cur *c, int kind, int *face)
 {
     const scene_lex_tok *t = scene_cur_peek(c);
     char list[80] = "";
@@ -34,7 +34,7 @@ static int face_name(scene_cur *c, int kind, int *face)
                            list);
 }
 
-static int face_statement(scene_parser *p, scene_cur *c)
+static int scene_face_statement(scene_parser *p, scene_cur *c)
 {
     char name[SCENE_NAME_MAX + 1];
     const scene_lex_tok *st, *ft;
@@ -52,7 +52,7 @@ static int face_statement(scene_parser *p, scene_cur *c)
         return scene_cur_error(c, st, "%s is already placed by OBJECT on record %ld; "
                                "bind its faces before", st->text, d->placed);
     ft = scene_cur_peek(c);
-    if (face_name(c, d->kind, &f))
+    if (scene_face_name(c, d->kind, &f))
         return DIAG_INPUT;
     if (d->face_map[f] >= 0)
         return scene_cur_error(c, ft, "%s of %s is already bound on record %ld",
@@ -65,6 +65,6 @@ static int face_statement(scene_parser *p, scene_cur *c)
 }
 
 const scene_parse_stmt scene_face_stmts[] = {
-    { "FACE", "FACE", face_statement },
+    { "FACE", "FACE", scene_face_statement },
     { NULL, NULL, NULL }
 };

@@ -15,13 +15,13 @@
 #include "model/pds_image.h"
 #include "util/mem.h"
 
-static pds_pixels *raster_pixels(pds_def *d)
+static pds_pixels *scene_pds_raster_pixels(pds_def *d)
 {
     return d->kind == PDS_PIXELS ? &d->pixels : &d->quad.pixels;
 }
 
 /* The rest of the PDS statement: w h, IMAGE file, or (QUADTREE) nothing. */
-static int raster_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
+static int scene_pds_raster_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 {
     int quad = b->map->def.kind == PDS_QUADTREE;
     const scene_lex_tok *t;
@@ -59,7 +59,7 @@ static int raster_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 }
 
 /* KEY #RRGGBB attr, for a colour image. */
-static int raster_colour_key(scene_parser *p, scene_cur *c, scene_pds_block *b,
+static int scene_pds_raster_colour_key(scene_parser *p, scene_cur *c, scene_pds_block *b,
                              const scene_lex_tok *t)
 {
     const scene_lex_tok *kw = &c->st->tok[0];
@@ -96,7 +96,7 @@ static int raster_colour_key(scene_parser *p, scene_cur *c, scene_pds_block *b,
 }
 
 /* KEY c attr (rows of characters) or KEY #RRGGBB attr (a colour image). */
-static int raster_key(scene_parser *p, scene_cur *c)
+static int scene_pds_raster_key(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
     const scene_lex_tok *t = scene_cur_peek(c);
@@ -105,7 +105,7 @@ static int raster_key(scene_parser *p, scene_cur *c)
     if (!t)
         return scene_cur_error(c, NULL, "missing key");
     if (b->file[0])
-        return raster_colour_key(p, c, b, t);
+        return scene_pds_raster_colour_key(p, c, b, t);
     ch = (unsigned char)t->text[0];
     if (t->len != 1 || ch >= 128)
         return scene_cur_error(c, t, "a key is one character, found %s", t->text);
@@ -121,7 +121,7 @@ static int raster_key(scene_parser *p, scene_cur *c)
 
 /* ROW item...: the items' characters, concatenated, are one row of exactly
  * width KEY characters; errors point at the offending character. */
-static int raster_row(scene_parser *p, scene_cur *c)
+static int scene_pds_raster_row(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
     size_t w = (size_t)b->width, n = 0, i, k;
@@ -153,7 +153,7 @@ static int raster_row(scene_parser *p, scene_cur *c)
 
 /* INDEX a0 a1 ...: palette index (palette PNG) or grey value g of the
  * image is region a_g (at most 256). */
-static int raster_index(scene_parser *p, scene_cur *c)
+static int scene_pds_raster_index(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
     const scene_lex_tok *kw = &c->st->tok[0];
@@ -175,7 +175,7 @@ static int raster_index(scene_parser *p, scene_cur *c)
 }
 
 /* CODE item...: appends to the explicit quadtree code. */
-static int raster_code(scene_parser *p, scene_cur *c)
+static int scene_pds_raster_code(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
     const scene_lex_tok *kw = &c->st->tok[0];
@@ -193,10 +193,10 @@ static int raster_code(scene_parser *p, scene_cur *c)
 }
 
 /* Hands the cells or code to the definition; reads and maps the image. */
-static int raster_finish(scene_parser *p, scene_pds_block *b)
+static int scene_pds_raster_finish(scene_parser *p, scene_pds_block *b)
 {
     pds_def *d = &b->map->def;
-    pds_pixels *px = raster_pixels(d);
+    pds_pixels *px = scene_pds_raster_pixels(d);
     const scene_lex_tok *kw = &p->st.tok[0];
     pds_image_map m;
     image img;
@@ -222,24 +222,24 @@ static int raster_finish(scene_parser *p, scene_pds_block *b)
     return r;
 }
 
-const scene_pds_kind scene_pds_raster = { raster_open, raster_finish };
+const scene_pds_kind scene_pds_raster = { scene_pds_raster_open, scene_pds_raster_finish };
 
 const scene_parse_stmt scene_pds_keyed_body[] = {
-    { "KEY", "KEY", raster_key },
-    { "ROW", "ROW", raster_row },
+    { "KEY", "KEY", scene_pds_raster_key },
+    { "ROW", "ROW", scene_pds_raster_row },
     { "END", "END", scene_pds_end },
     { NULL, NULL, NULL }
 };
 
 const scene_parse_stmt scene_pds_image_body[] = {
-    { "KEY", "KEY", raster_key },
-    { "INDEX", "INDEX", raster_index },
+    { "KEY", "KEY", scene_pds_raster_key },
+    { "INDEX", "INDEX", scene_pds_raster_index },
     { "END", "END", scene_pds_end },
     { NULL, NULL, NULL }
 };
 
 const scene_parse_stmt scene_pds_code_body[] = {
-    { "CODE", "CODE", raster_code },
+    { "CODE", "CODE", scene_pds_raster_code },
     { "END", "END", scene_pds_end },
     { NULL, NULL, NULL }
 };
