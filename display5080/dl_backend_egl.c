@@ -104,8 +104,12 @@ static int dl_egl_read(void *dev, uint8_t *px, diag *err)
 }
 
 const dl_backend dl_backend_egl = {
-    "egl", "OpenGL on a surfaceless EGL context (Mesa)",
-    dl_egl_open, &dl_gl_device, dl_egl_read, dl_egl_close,
+    .name = "egl",
+    .summary = "OpenGL on a surfaceless EGL context (Mesa)",
+    .open = dl_egl_open,
+    .ops = &dl_gl_device,
+    .read = dl_egl_read,
+    .close = dl_egl_close,
 };
 
 #else
@@ -128,7 +132,11 @@ static int dl_egl_read(void *dev, uint8_t *px, diag *err)
 static void dl_egl_close(void *dev) { (void)dev; }
 
 const dl_backend dl_backend_egl = {
-    "egl", "OpenGL on a surfaceless EGL context (not built)",
-    dl_egl_open, &dl_gl_device, dl_egl_read, dl_egl_close,
+    .name = "egl",
+    .summary = "OpenGL on a surfaceless EGL context (not built)",
+    .open = dl_egl_open,
+    .ops = &dl_gl_device,
+    .read = dl_egl_read,
+    .close = dl_egl_close,
 };
 #endif

@@ -73,8 +73,12 @@ static int dl_osmesa_read(void *dev, uint8_t *px, diag *err)
 }
 
 const dl_backend dl_backend_osmesa = {
-    "osmesa", "OpenGL in an OSMesa off-screen buffer",
-    dl_osmesa_open, &dl_gl_device, dl_osmesa_read, dl_osmesa_close,
+    .name = "osmesa",
+    .summary = "OpenGL in an OSMesa off-screen buffer",
+    .open = dl_osmesa_open,
+    .ops = &dl_gl_device,
+    .read = dl_osmesa_read,
+    .close = dl_osmesa_close,
 };
 
 #else
@@ -99,7 +103,11 @@ static int dl_osmesa_read(void *dev, uint8_t *px, diag *err)
 static void dl_osmesa_close(void *dev) { (void)dev; }
 
 const dl_backend dl_backend_osmesa = {
-    "osmesa", "OpenGL in an OSMesa off-screen buffer (not built)",
-    dl_osmesa_open, &dl_gl_device, dl_osmesa_read, dl_osmesa_close,
+    .name = "osmesa",
+    .summary = "OpenGL in an OSMesa off-screen buffer (not built)",
+    .open = dl_osmesa_open,
+    .ops = &dl_gl_device,
+    .read = dl_osmesa_read,
+    .close = dl_osmesa_close,
 };
 #endif

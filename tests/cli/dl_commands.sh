@@ -35,7 +35,7 @@ printf '\000\006\137\001\000\000' >> "$t/a.dl5080"                    # clear 0 
 printf '\000\006\120\123\000\001' >> "$t/a.dl5080"                    # interior colour 1
 printf '\000\014\120\004\000\001\000\001\000\004\000\003' >> "$t/a.dl5080"  # fill 1,1-4,3
 printf '\000\004\137\002' >> "$t/a.dl5080"                            # end
-$MAPRT dl validate "$t/a.dl5080" | grep -q 'valid DL5080, 8x6' || fail "validate a"
+$MAPRT dl validate "$t/a.dl5080" | grep -q 'valid DL5080 version 1, 8x6' || fail "validate a"
 $MAPRT dl dump "$t/a.dl5080" | grep -q '^     48     12  5004  fill-rect 1,1 4,3$' || fail "dump a"
 for b in png osmesa egl; do
   $MAPRT dl2png "$t/a.dl5080" "$t/a-$b.png" --backend $b 2> "$t/err"
