@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "display5080/dl_encode.h"
+#include "display5080/dl_image.h"
 #include "display5080/dl_render.h"
 #include "util/mem.h"
 #include "support.h"
@@ -348,6 +349,64 @@ static void test_dl_backend_egl_shapes_exact(void **state)
     shapes_exact(&dl_backend_egl, "test_dl_backend_egl_shapes_exact");
 }
 
+/* ---- what maprt writes: an encoded frame with a wireframe ---------------- */
+
+static void written_exact(const dl_backend *b, const char *test)
+{
+    uint64_t seed = test_seed(test);
+    image img;
+    dl_image_polyline pl[3];
+    dl_image_opts o;
+    int xy[3][12], k, j;
+    uint8_t *buf;
+    size_t len, i;
+    dl_frame ref, got;
+    diag err;
+    if (!usable(b)) {
+        skip();
+        return;
+    }
+    diag_init(&err);
+    assert_int_equal(image_alloc(&img, 97, 61, 3, "t", &err), 0);
+    for (i = 0; i < (size_t)97 * 61 * 3; i++)   /* smooth bands and noise: runs and blocks */
+        img.px[i] = (uint8_t)(i % 3 == 0 ? (i / 300) * 20 : test_rand(&seed) % 4 ? 40 : test_rand(&seed));
+    for (k = 0; k < 3; k++) {
+        for (j = 0; j < 12; j++)
+            xy[k][j] = rnd(&seed, -5, 100);
+        pl[k].n = 6;
+        pl[k].xy = xy[k];
+        pl[k].r = (uint8_t)(k * 100);
+        pl[k].g = 255;
+        pl[k].b = (uint8_t)(k * 50);
+    }
+    memset(&o, 0, sizeof o);
+    o.polylines = pl;
+    o.npolylines = 3;
+    for (k = 0; k <= 1; k++) {
+        o.dither = k;
+        assert_int_equal(dl_image_encode(&img, &o, &buf, &len, NULL, &err), 0);
+        draw(&dl_backend_png, buf, len, &ref);
+        draw(b, buf, len, &got);
+        assert_memory_equal(got.px, ref.px, (size_t)97 * 61);
+        dl_frame_free(&ref);
+        dl_frame_free(&got);
+        mem_free(buf);
+    }
+    image_free(&img);
+}
+
+static void test_dl_backend_osmesa_written_exact(void **state)
+{
+    (void)state;
+    written_exact(&dl_backend_osmesa, "test_dl_backend_osmesa_written_exact");
+}
+
+static void test_dl_backend_egl_written_exact(void **state)
+{
+    (void)state;
+    written_exact(&dl_backend_egl, "test_dl_backend_egl_written_exact");
+}
+
 static void test_dl_backend_find(void **state)
 {
     (void)state;
@@ -368,6 +427,8 @@ int main(void)
         cmocka_unit_test(test_dl_backend_egl_fills_exact),
         cmocka_unit_test(test_dl_backend_osmesa_shapes_exact),
         cmocka_unit_test(test_dl_backend_egl_shapes_exact),
+        cmocka_unit_test(test_dl_backend_osmesa_written_exact),
+        cmocka_unit_test(test_dl_backend_egl_written_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
