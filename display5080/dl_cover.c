@@ -158,7 +158,7 @@ static int dl_cover_int_cmp(const void *a, const void *b)
 /* Ceiling of n / d for d > 0. */
 static long long dl_cover_ceil_div(long long n, long long d) { return n >= 0 ? (n + d - 1) / d : -((-n) / d); }
 
-void dl_cover_polygon(dl_cover *c, const int *xy, size_t n)
+void dl_cover_polygon(dl_cover *c, const int *xy, size_t n, int closed)
 {
     int ymin = 32767, ymax = -32768, y;
     size_t i;
@@ -179,13 +179,17 @@ void dl_cover_polygon(dl_cover *c, const int *xy, size_t n)
         for (i = 0; i < n; i++) {
             size_t j = (i + 1) % n;
             long long xa = xy[2 * i], ya = xy[2 * i + 1], xb = xy[2 * j], yb = xy[2 * j + 1];
-            if (ya == yb)
-                continue;
             if (ya > yb) {
                 long long t = xa; xa = xb; xb = t;
                 t = ya; ya = yb; yb = t;
             }
-            if (y < ya || y >= yb)
+            /* closed: pixel centres on the boundary belong to the polygon */
+            if (closed && ya == yb && y == ya)
+                dl_cover_span(c, y, xa < xb ? xa : xb, xa < xb ? xb : xa);
+            if (closed && ya < yb && y >= ya && y <= yb && (y - ya) * (xb - xa) % (yb - ya) == 0)
+                dl_cover_span(c, y, xa + (y - ya) * (xb - xa) / (yb - ya),
+                              xa + (y - ya) * (xb - xa) / (yb - ya));
+            if (ya == yb || y < ya || y >= yb)
                 continue;
             /* first pixel centre at or right of the crossing */
             c->xs[k++] = (int)(xa + dl_cover_ceil_div((y - ya) * (xb - xa), yb - ya));

@@ -45,8 +45,11 @@ void dl_cover_span(dl_cover *c, long long y, long long x0, long long x1);
 void dl_cover_line(dl_cover *c, int x0, int y0, int x1, int y1, dl_pen *pen, int skip_first);
 /* Adds a circle outline or a filled disc of radius r. */
 void dl_cover_circle(dl_cover *c, int cx, int cy, unsigned r, int fill);
-/* Adds the even-odd interior of a closed polygon of n vertices xy[2n]. */
-void dl_cover_polygon(dl_cover *c, const int *xy, size_t n);
+/* Adds the even-odd interior of a closed polygon of n vertices xy[2n],
+ * sampled at pixel centres (vertex (x,y) = centre of pixel (x,y)); centres
+ * on the boundary count when `closed` (MegaPel), else only those on left
+ * edges, with edges half-open in y (DL5080 version 1). */
+void dl_cover_polygon(dl_cover *c, const int *xy, size_t n, int closed);
 /* Sorts and merges the runs; *boxes receives them (valid until the next
  * start). Returns the count, or 0 with c->status set on failure. */
 size_t dl_cover_finish(dl_cover *c, const dl_box **boxes);

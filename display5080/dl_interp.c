@@ -47,6 +47,7 @@ static int dl_interp_header(void *ctx, const dl_header *h, diag *err)
     dl_interp *in = ctx;
     in->width = h->width;
     in->height = h->height;
+    in->version = h->version;
     in->dac = in->force_dac ? in->force_dac : (h->flags & DL_FLAG_DAC8) ? 8 : 4;
     memset(in->lut, 0, sizeof in->lut);
     in->lut[1] = 0xFFFFFFu;
@@ -317,7 +318,7 @@ static int dl_interp_element(void *ctx, const dl_element *e, diag *err)
     }
     case DL_END_POLYGON:
         if (dl_interp_start(in)) {
-            dl_cover_polygon(&in->cover, in->poly, in->poly_n);
+            dl_cover_polygon(&in->cover, in->poly, in->poly_n, in->version != DL_VERSION_1);
             if ((rc = dl_interp_flush(in, e, in->interior_colour, in->op, err)))
                 return rc;
         }

@@ -23,6 +23,7 @@ typedef struct dl_interp {
     const dl_device *ops;
     void *dev;
     int width, height;
+    unsigned version;              /* the list's; 0 for a raw stream */
     int dac;                       /* 4 or 8; from the header unless forced */
     int force_dac;                 /* 0 = use the header */
     uint32_t lut[256];             /* colour table as loaded, 0x00RRGGBB */

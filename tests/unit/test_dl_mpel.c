@@ -401,6 +401,95 @@ static void test_mpel_version1_converts(void **state)
     }
 }
 
+/* ---- polygons -------------------------------------------------------------- */
+
+/* mpelFillSolid: with GXcopy a fill rectangle, with any other op a polygon
+ * (interior style 2, edge flag 2) through the same inclusive corners. The
+ * driver uses them for the same pixels, so the polygon covers its boundary. */
+static void test_mpel_fill_solid_rectangle_equals_polygon(void **state)
+{
+    int k;
+    (void)state;
+    for (k = 0; k < 4; k++) {
+        static const int r[4][4] = {{2, 3, 5, 4}, {0, 0, 1, 1}, {3, 2, 3, 9}, {1, 6, 12, 6}};
+        int H = 12, x = r[k][0], y = r[k][1], w = r[k][2], h = r[k][3];
+        fifo a, b;
+        dl_frame fa, fb;
+        a.n = b.n = 0;
+        cmd(&a, DL_LOGIC_OP, 1, 6 + 1);   /* GXxor: the polygon path */
+        cmd(&a, DL_INTERIOR_STYLE, 1, 2);
+        cmd(&a, DL_INTERIOR_COLOUR, 1, 3);
+        cmd(&a, DL_EDGE_FLAG, 1, 2);
+        cmd(&a, DL_BEGIN_POLYGON, 0);
+        cmd(&a, DL_POLYLINE, 8, x, H - 1 - y, x + w - 1, H - 1 - y, x + w - 1, H - (y + h), x,
+            H - (y + h));
+        cmd(&a, DL_END_POLYGON, 0);
+        cmd(&b, DL_LOGIC_OP, 1, 6 + 1);
+        cmd(&b, DL_INTERIOR_COLOUR, 1, 3);
+        cmd(&b, DL_FILL_RECT, 4, x, H - (y + h), x + w - 1, H - 1 - y);
+        draw_raw(&a, 16, H, &dl_backend_png, &fa);
+        draw_raw(&b, 16, H, &dl_backend_png, &fb);
+        assert_memory_equal(fa.px, fb.px, 16 * (size_t)H);
+        dl_frame_free(&fa);
+        dl_frame_free(&fb);
+    }
+}
+
+/* Pixel centre (x,y) on segment a-b, exactly. */
+static int on_segment(long ax, long ay, long bx, long by, long x, long y)
+{
+    if ((bx - ax) * (y - ay) != (by - ay) * (x - ax))
+        return 0;
+    return x >= (ax < bx ? ax : bx) && x <= (ax < bx ? bx : ax) && y >= (ay < by ? ay : by) &&
+           y <= (ay < by ? by : ay);
+}
+
+/* Even-odd by ray crossing (pnpoly): exact off the boundary. */
+static int crossing_inside(const int *xy, int n, double x, double y)
+{
+    int i, j, c = 0;
+    for (i = 0, j = n - 1; i < n; j = i++) {
+        double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
+        if ((yi > y) != (yj > y) && x < xi + (y - yi) * (xj - xi) / (yj - yi))
+            c = !c;
+    }
+    return c;
+}
+
+static void test_mpel_polygon_closed_even_odd(void **state)
+{
+    uint64_t seed = test_seed("test_mpel_polygon_closed_even_odd");
+    int t;
+    (void)state;
+    for (t = 0; t < 200; t++) {
+        fifo f;
+        dl_frame fr;
+        int n = 3 + (int)(test_rand(&seed) % 8), xy[22], i, x, y;
+        f.n = 0;
+        cmd(&f, DL_BEGIN_POLYGON, 0);
+        w16(&f, 4 + 4 * (unsigned)n);
+        w16(&f, DL_POLYLINE);
+        for (i = 0; i < n; i++) {
+            xy[2 * i] = (int)(test_rand(&seed) % 60) - 6;
+            xy[2 * i + 1] = (int)(test_rand(&seed) % 60) - 6;
+            w16(&f, (unsigned)xy[2 * i] & 0xFFFF);
+            w16(&f, (unsigned)xy[2 * i + 1] & 0xFFFF);
+        }
+        cmd(&f, DL_END_POLYGON, 0);
+        draw_raw(&f, 48, 48, &dl_backend_png, &fr);
+        for (y = 0; y < 48; y++)
+            for (x = 0; x < 48; x++) {
+                int want = crossing_inside(xy, n, x, y);
+                for (i = 0; i < n && !want; i++)
+                    want = on_segment(xy[2 * i], xy[2 * i + 1], xy[(2 * i + 2) % (2 * n)],
+                                      xy[(2 * i + 3) % (2 * n)], x, y);
+                if (at(&fr, x, y) != want)
+                    fail_msg("case %d: pixel %d,%d is %d, want %d", t, x, y, at(&fr, x, y), want);
+            }
+        dl_frame_free(&fr);
+    }
+}
+
 /* ---- line types and widths ------------------------------------------------ */
 
 /* mpel_do_dashline_gc: dashes {on, off} become mask bits from bit 0, the
@@ -723,6 +812,8 @@ int main(void)
         cmocka_unit_test(test_mpel_raw_stream_rules),
         cmocka_unit_test(test_mpel_raw_equals_wrapped),
         cmocka_unit_test(test_mpel_version1_converts),
+        cmocka_unit_test(test_mpel_fill_solid_rectangle_equals_polygon),
+        cmocka_unit_test(test_mpel_polygon_closed_even_odd),
         cmocka_unit_test(test_mpel_line_styles),
         cmocka_unit_test(test_mpel_line_width),
         cmocka_unit_test(test_mpel_text_glyph_size_and_angle),
