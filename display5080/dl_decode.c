@@ -104,30 +104,40 @@ static int dl_decode_inline(dl_cursor *c, size_t head, unsigned long long want, 
     return 0;
 }
 
+/* The fixed part shared by both inline BLTs: rectangle, a word (bits/pixel
+ * or colour), logic op; *w and *h receive the rectangle's size. */
+static int dl_decode_blt_head(dl_cursor *c, const char *what, unsigned long long *w,
+                              unsigned long long *h)
+{
+    dl_element *e = c->e;
+    char msg[96];
+    if (c->n < 12) {
+        snprintf(msg, sizeof msg, "payload shorter than rectangle, %s and logic op (12 bytes)", what);
+        return dl_decode_bad(c, msg);
+    }
+    if (dl_decode_rect(c, c->p))
+        return DIAG_INPUT;
+    e->value = dl_be16(c->p + 8);
+    e->op = dl_be16(c->p + 10);
+    *w = (unsigned long long)(e->x1 - e->x0) + 1;
+    *h = (unsigned long long)(e->y1 - e->y0) + 1;
+    return dl_decode_op(c, e->op);
+}
+
 /* BLT immediate: version 2 and raw streams carry the rows top-first from the
  * rectangle's upper edge, packed (mpelImg.c); version 1 carried them
  * bottom-first with every odd row padded, and is read as it was written. */
 static int dl_decode_blt(dl_cursor *c)
 {
     dl_element *e = c->e;
-    const uint8_t *p = c->p;
     unsigned long long w, h;
     char msg[128];
-    if (c->n < 12)
-        return dl_decode_bad(c, "payload shorter than rectangle, depth and logic op (12 bytes)");
-    if (dl_decode_rect(c, p))
+    if (dl_decode_blt_head(c, "depth", &w, &h))
         return DIAG_INPUT;
-    e->value = dl_be16(p + 8);
-    e->op = dl_be16(p + 10);
     if (e->value != DL_BLT_BPP) {
         snprintf(msg, sizeof msg, "%u bits per pixel (only 8 is defined)", e->value);
         return dl_decode_bad(c, msg);
     }
-    if (dl_decode_op(c, e->op))
-        return DIAG_INPUT;
-    w = (unsigned long long)(e->x1 - e->x0) + 1;
-    h = (unsigned long long)(e->y1 - e->y0) + 1;
-    snprintf(msg, sizeof msg, "%llux%llu pixels", w, h);
     if (c->version == DL_VERSION_1) {
         unsigned long long row = w + (w & 1u);
         if (c->n - 12 != h * row) {
@@ -135,13 +145,14 @@ static int dl_decode_blt(dl_cursor *c)
                      h * row, c->n - 12);
             return dl_decode_bad(c, msg);
         }
-        e->data = p + 12;
+        e->data = c->p + 12;
         e->stride = (ptrdiff_t)row;
         return 0;
     }
+    snprintf(msg, sizeof msg, "%llux%llu pixels", w, h);
     if (dl_decode_inline(c, 12, w * h, msg))
         return DIAG_INPUT;
-    e->data = p + 12 + (size_t)((h - 1) * w);
+    e->data = c->p + 12 + (size_t)((h - 1) * w);
     e->stride = -(ptrdiff_t)w;
     return 0;
 }
@@ -152,19 +163,10 @@ static int dl_decode_blt(dl_cursor *c)
 static int dl_decode_blt_expand(dl_cursor *c)
 {
     dl_element *e = c->e;
-    const uint8_t *p = c->p;
     unsigned long long w, h;
     char msg[128];
-    if (c->n < 12)
-        return dl_decode_bad(c, "payload shorter than rectangle, colour and logic op (12 bytes)");
-    if (dl_decode_rect(c, p))
+    if (dl_decode_blt_head(c, "colour", &w, &h) || dl_decode_index(c, e->value))
         return DIAG_INPUT;
-    e->value = dl_be16(p + 8);
-    e->op = dl_be16(p + 10);
-    if (dl_decode_index(c, e->value) || dl_decode_op(c, e->op))
-        return DIAG_INPUT;
-    w = (unsigned long long)(e->x1 - e->x0) + 1;
-    h = (unsigned long long)(e->y1 - e->y0) + 1;
     if (w % 8) {
         snprintf(msg, sizeof msg, "width %llu is not a whole number of bytes", w);
         return dl_decode_bad(c, msg);
@@ -172,7 +174,7 @@ static int dl_decode_blt_expand(dl_cursor *c)
     snprintf(msg, sizeof msg, "%llux%llu bits", w, h);
     if (dl_decode_inline(c, 12, w / 8 * h, msg))
         return DIAG_INPUT;
-    e->data = p + 12 + (size_t)((h - 1) * (w / 8));
+    e->data = c->p + 12 + (size_t)((h - 1) * (w / 8));
     e->stride = -(ptrdiff_t)(w / 8);
     return 0;
 }

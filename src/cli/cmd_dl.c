@@ -5,6 +5,7 @@
 #include "cli/cli_dl.h"
 #include "display5080/dl_dump.h"
 #include "display5080/dl_image.h"
+#include "display5080/dl_render.h"
 #include "display5080/dl_validate.h"
 #include "image/image.h"
 #include "util/mem.h"
@@ -13,7 +14,7 @@
 
 #define DL_CLI_MAX_INPUT ((size_t)256 << 20)
 
-static void dl_help(FILE *f)
+static void cmd_dl_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt dl dump FILE.dl5080 [--raw [--size WxH] [--dac 4|8]]\n"
@@ -40,39 +41,40 @@ static void dl_help(FILE *f)
         "3 I/O error\n");
 }
 
-static void dl_stdout(void *ctx, const void *data, size_t len)
+static void cmd_dl_stdout(void *ctx, const void *data, size_t len)
 {
     (void)ctx;
     fwrite(data, 1, len, stdout);
 }
 
-static int dl_read(const char *path, char **data, size_t *len, diag *err)
+static int cmd_dl_read(const char *path, char **data, size_t *len, diag *err)
 {
     return infile_read_all(path, DL_CLI_MAX_INPUT, data, len, err);
 }
 
-/* The decoder options of dump and validate: a raw stream and its screen. */
-static dl_decode_opts dl_cmd_decode_opts(const cli_dl_args *a)
+/* The decoder options of dump and validate: a raw stream, its screen and DAC
+ * as dl2png reads them. */
+static dl_decode_opts cmd_dl_decode_opts(const cli_dl_args *a)
 {
-    dl_decode_opts d;
-    memset(&d, 0, sizeof d);
-    d.raw = a->raw;
-    d.width = a->width;
-    d.height = a->height;
-    d.flags = a->dac == 4 ? 0 : DL_FLAG_DAC8;
-    return d;
+    dl_render_opts ro;
+    memset(&ro, 0, sizeof ro);
+    ro.raw = a->raw;
+    ro.width = a->width;
+    ro.height = a->height;
+    ro.dac = a->dac;
+    return dl_render_decode_opts(&ro);
 }
 
-static int dl_cmd_dump(const cli_dl_args *a)
+static int cmd_dl_dump(const cli_dl_args *a)
 {
-    dl_decode_opts d = dl_cmd_decode_opts(a);
+    dl_decode_opts d = cmd_dl_decode_opts(a);
     char *data;
     size_t len;
     diag err;
     int rc;
     diag_init(&err);
-    if ((rc = dl_read(a->file[0], &data, &len, &err)) == 0) {
-        rc = dl_dump((const uint8_t *)data, len, a->file[0], &d, dl_stdout, NULL, &err);
+    if ((rc = cmd_dl_read(a->file[0], &data, &len, &err)) == 0) {
+        rc = dl_dump((const uint8_t *)data, len, a->file[0], &d, cmd_dl_stdout, NULL, &err);
         mem_free(data);
     }
     fflush(stdout);
@@ -81,16 +83,16 @@ static int dl_cmd_dump(const cli_dl_args *a)
     return rc;
 }
 
-static int dl_cmd_validate(const cli_dl_args *a)
+static int cmd_dl_validate(const cli_dl_args *a)
 {
-    dl_decode_opts d = dl_cmd_decode_opts(a);
+    dl_decode_opts d = cmd_dl_decode_opts(a);
     dl_validate_summary s;
     char *data;
     size_t len;
     diag err;
     int rc, i;
     diag_init(&err);
-    if ((rc = dl_read(a->file[0], &data, &len, &err)) == 0) {
+    if ((rc = cmd_dl_read(a->file[0], &data, &len, &err)) == 0) {
         rc = dl_validate((const uint8_t *)data, len, a->file[0], &d, &s, &err);
         mem_free(data);
     }
@@ -111,7 +113,7 @@ static int dl_cmd_validate(const cli_dl_args *a)
     return 0;
 }
 
-static int dl_cmd_encode(const cli_dl_args *a)
+static int cmd_dl_encode(const cli_dl_args *a)
 {
     dl_image_opts o;
     dl_image_stats st;
@@ -141,7 +143,7 @@ int cmd_dl(int argc, char **argv)
     cli_dl_args a;
     int rc;
     if (cli_wants_help(argc, argv)) {
-        dl_help(stdout);
+        cmd_dl_help(stdout);
         return CLI_OK;
     }
     if (argc < 2)
@@ -150,12 +152,12 @@ int cmd_dl(int argc, char **argv)
         if ((rc = cli_dl_parse("dl", argc, argv, 2, CLI_DL_DITHER | CLI_DL_DAC | CLI_DL_STATS, 2,
                                "IN.png and OUT.dl5080", &a)))
             return rc;
-        return dl_cmd_encode(&a);
+        return cmd_dl_encode(&a);
     }
     if (strcmp(argv[1], "dump") && strcmp(argv[1], "validate"))
         return cli_usage_error("dl", "unknown subcommand '%s' (dump, validate, encode)", argv[1]);
     if ((rc = cli_dl_parse("dl", argc, argv, 2, CLI_DL_RAW | CLI_DL_DAC, 1, "one FILE.dl5080",
                            &a)))
         return rc;
-    return !strcmp(argv[1], "dump") ? dl_cmd_dump(&a) : dl_cmd_validate(&a);
+    return !strcmp(argv[1], "dump") ? cmd_dl_dump(&a) : cmd_dl_validate(&a);
 }

@@ -10,7 +10,7 @@
 
 #define DL2PNG_MAX_INPUT ((size_t)256 << 20)
 
-static void dl2png_help(FILE *f)
+static void cmd_dl2png_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt dl2png IN.dl5080 OUT.png [--backend png|osmesa|egl] [--truecolor] [--dac 4|8]\n"
@@ -50,7 +50,7 @@ int cmd_dl2png(int argc, char **argv)
     int rc;
     diag err;
     if (cli_wants_help(argc, argv)) {
-        dl2png_help(stdout);
+        cmd_dl2png_help(stdout);
         return CLI_OK;
     }
     if ((rc = cli_dl_parse("dl2png", argc, argv, 1,

@@ -17,6 +17,7 @@
 #include "display5080/dl_validate.h"
 #include "util/mem.h"
 #include "support.h"
+#include "unit/dl_test.h"
 
 /* ---- helpers ------------------------------------------------------------ */
 
@@ -468,18 +469,6 @@ static void test_dl_raster_lines_are_bresenham(void **state)
     }
 }
 
-/* Even-odd at pixel centres, half-open in y, by ray crossing (pnpoly). */
-static int inside(const int *xy, int n, double x, double y)
-{
-    int i, j, c = 0;
-    for (i = 0, j = n - 1; i < n; j = i++) {
-        double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
-        if ((yi > y) != (yj > y) && x < xi + (y - yi) * (xj - xi) / (yj - yi))
-            c = !c;
-    }
-    return c;
-}
-
 static void test_dl_raster_polygon_even_odd(void **state)
 {
     uint64_t seed = test_seed("test_dl_raster_polygon_even_odd");
@@ -505,7 +494,7 @@ static void test_dl_raster_polygon_even_odd(void **state)
         assert_int_equal(render(&s, &f, &err), 0);
         for (y = 0; y < 48; y++)
             for (x = 0; x < 48; x++)
-                assert_int_equal(px(&f, x, y), inside(xy, n, x, y));
+                assert_int_equal(px(&f, x, y), dl_test_inside(xy, n, x, y));
         dl_frame_free(&f);
     }
 }

@@ -21,6 +21,7 @@
 #include "display5080/dl_validate.h"
 #include "util/mem.h"
 #include "support.h"
+#include "unit/dl_test.h"
 
 /* ---- a FIFO as the driver fills it --------------------------------------- */
 
@@ -99,6 +100,22 @@ static void draw_raw(const fifo *f, int w, int h, const dl_backend *b, dl_frame 
         diag_format(&err, msg, sizeof msg);
         fail_msg("%s: %s", b->name, msg);
     }
+}
+
+/* Validates a raw stream; the formatted diagnostic, or "" when it is valid. */
+static const char *raw_msg(const fifo *f, dl_validate_summary *s)
+{
+    static char msg[512];
+    dl_validate_summary t;
+    dl_decode_opts d;
+    diag err;
+    memset(&d, 0, sizeof d);
+    d.raw = 1;
+    diag_init(&err);
+    msg[0] = '\0';
+    if (dl_validate(f->b, f->n, "fifo", &d, s ? s : &t, &err))
+        diag_format(&err, msg, sizeof msg);
+    return msg;
 }
 
 static uint8_t at(const dl_frame *f, int x, int y) { return f->px[(size_t)y * f->width + x]; }
@@ -264,19 +281,10 @@ static void test_mpel_expansion_width_and_src_blt(void **state)
     uint8_t bits[2] = {0xFF, 0xC0};
     fifo f;
     dl_frame fr;
-    dl_validate_summary s;
-    dl_decode_opts d;
-    diag err;
-    char msg[256];
     (void)state;
-    memset(&d, 0, sizeof d);
-    d.raw = 1;
     f.n = 0;
     cmd_data(&f, DL_BLT_EXPAND, args, 6, bits, 2);
-    diag_init(&err);
-    assert_int_equal(dl_validate(f.b, f.n, "fifo", &d, &s, &err), DIAG_INPUT);
-    diag_format(&err, msg, sizeof msg);
-    assert_string_equal(msg, "fifo: offset 0: error: blt-expand (0x5019): width 10 is not a "
+    assert_string_equal(raw_msg(&f, NULL), "fifo: offset 0: error: blt-expand (0x5019): width 10 is not a "
                              "whole number of bytes");
     /* MPELSrcBLTVPM as mpelDrawColorImage sends it */
     f.n = 0;
@@ -311,11 +319,6 @@ static void test_mpel_raw_stream_rules(void **state)
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         fifo f;
         dl_validate_summary s;
-        dl_decode_opts d;
-        diag err;
-        char msg[256] = "";
-        memset(&d, 0, sizeof d);
-        d.raw = 1;
         f.n = 0;
         cmd(&f, DL_LINE_TYPE, 1, 1);
         switch (cases[i].kind) {
@@ -324,10 +327,7 @@ static void test_mpel_raw_stream_rules(void **state)
         case 3: cmd(&f, DL_BEGIN_POLYGON, 0); break;
         case 4: w16(&f, 4); break;
         }
-        diag_init(&err);
-        if (dl_validate(f.b, f.n, "fifo", &d, &s, &err))
-            diag_format(&err, msg, sizeof msg);
-        assert_string_equal(msg, cases[i].want);
+        assert_string_equal(raw_msg(&f, &s), cases[i].want);
         if (!cases[i].kind) {
             assert_int_equal(s.header.version, 0);
             assert_int_equal(s.header.width, 1024);   /* the 5081 by default */
@@ -435,27 +435,6 @@ static void test_mpel_fill_solid_rectangle_equals_polygon(void **state)
     }
 }
 
-/* Pixel centre (x,y) on segment a-b, exactly. */
-static int on_segment(long ax, long ay, long bx, long by, long x, long y)
-{
-    if ((bx - ax) * (y - ay) != (by - ay) * (x - ax))
-        return 0;
-    return x >= (ax < bx ? ax : bx) && x <= (ax < bx ? bx : ax) && y >= (ay < by ? ay : by) &&
-           y <= (ay < by ? by : ay);
-}
-
-/* Even-odd by ray crossing (pnpoly): exact off the boundary. */
-static int crossing_inside(const int *xy, int n, double x, double y)
-{
-    int i, j, c = 0;
-    for (i = 0, j = n - 1; i < n; j = i++) {
-        double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
-        if ((yi > y) != (yj > y) && x < xi + (y - yi) * (xj - xi) / (yj - yi))
-            c = !c;
-    }
-    return c;
-}
-
 static void test_mpel_polygon_closed_even_odd(void **state)
 {
     uint64_t seed = test_seed("test_mpel_polygon_closed_even_odd");
@@ -479,9 +458,9 @@ static void test_mpel_polygon_closed_even_odd(void **state)
         draw_raw(&f, 48, 48, &dl_backend_png, &fr);
         for (y = 0; y < 48; y++)
             for (x = 0; x < 48; x++) {
-                int want = crossing_inside(xy, n, x, y);
+                int want = dl_test_inside(xy, n, x, y);
                 for (i = 0; i < n && !want; i++)
-                    want = on_segment(xy[2 * i], xy[2 * i + 1], xy[(2 * i + 2) % (2 * n)],
+                    want = dl_test_on_segment(xy[2 * i], xy[2 * i + 1], xy[(2 * i + 2) % (2 * n)],
                                       xy[(2 * i + 3) % (2 * n)], x, y);
                 if (at(&fr, x, y) != want)
                     fail_msg("case %d: pixel %d,%d is %d, want %d", t, x, y, at(&fr, x, y), want);
@@ -703,49 +682,29 @@ static void test_mpel_new_element_errors(void **state)
     (void)state;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         fifo f;
-        dl_validate_summary s;
-        dl_decode_opts d;
-        diag err;
-        char msg[256], want[300];
-        memset(&d, 0, sizeof d);
-        d.raw = 1;
+        char want[300];
         f.n = 0;
         cmd(&f, cases[i].code, cases[i].n, cases[i].w[0], cases[i].w[1], cases[i].w[2]);
-        diag_init(&err);
-        assert_int_equal(dl_validate(f.b, f.n, "fifo", &d, &s, &err), DIAG_INPUT);
-        diag_format(&err, msg, sizeof msg);
         snprintf(want, sizeof want, "fifo: offset 0: error: %s", cases[i].want);
-        assert_string_equal(msg, want);
+        assert_string_equal(raw_msg(&f, NULL), want);
     }
     {   /* a packed 3x2 BLT, one whose data are short, and a bad pad byte */
         fifo f;
-        dl_validate_summary s;
-        dl_decode_opts d;
         unsigned args[6] = {0, 0, 2, 1, 8, 4};
         uint8_t px[6] = {1, 2, 3, 4, 5, 6};
-        diag err;
-        char msg[256];
-        memset(&d, 0, sizeof d);
-        d.raw = 1;
         f.n = 0;
         cmd_data(&f, DL_BLT, args, 6, px, 6);
-        diag_init(&err);
-        assert_int_equal(dl_validate(f.b, f.n, "fifo", &d, &s, &err), 0);
+        assert_string_equal(raw_msg(&f, NULL), "");
         f.n = 0;
         cmd_data(&f, DL_BLT, args, 6, px, 4);
-        diag_init(&err);
-        assert_int_equal(dl_validate(f.b, f.n, "fifo", &d, &s, &err), DIAG_INPUT);
-        diag_format(&err, msg, sizeof msg);
-        assert_string_equal(msg, "fifo: offset 0: error: blt (0x5018): 3x2 pixels need 6 bytes, "
-                                 "payload has 4");
+        assert_string_equal(raw_msg(&f, NULL), "fifo: offset 0: error: blt (0x5018): 3x2 pixels "
+                                               "need 6 bytes, payload has 4");
         args[3] = 0;   /* 3x1: 3 bytes and a pad */
         f.n = 0;
         cmd_data(&f, DL_BLT, args, 6, px, 3);
         f.b[f.n - 1] = 1;
-        diag_init(&err);
-        assert_int_equal(dl_validate(f.b, f.n, "fifo", &d, &s, &err), DIAG_INPUT);
-        diag_format(&err, msg, sizeof msg);
-        assert_string_equal(msg, "fifo: offset 0: error: blt (0x5018): pad byte is not zero");
+        assert_string_equal(raw_msg(&f, NULL),
+                            "fifo: offset 0: error: blt (0x5018): pad byte is not zero");
     }
 }
 
