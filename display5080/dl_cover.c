@@ -211,7 +211,8 @@ static int dl_cover_run_cmp(const void *a, const void *b)
 size_t dl_cover_finish(dl_cover *c, const dl_box **boxes)
 {
     size_t i, m = 0;
-    if (c->status)
+    *boxes = c->runs;
+    if (c->status || c->n == 0)
         return 0;
     qsort(c->runs, c->n, sizeof *c->runs, dl_cover_run_cmp);
     for (i = 0; i < c->n; i++) {
@@ -224,6 +225,5 @@ size_t dl_cover_finish(dl_cover *c, const dl_box **boxes)
         }
     }
     c->n = m;
-    *boxes = c->runs;
     return m;
 }
