@@ -159,5 +159,7 @@ int cmd_dl(int argc, char **argv)
     if ((rc = cli_dl_parse("dl", argc, argv, 2, CLI_DL_RAW | CLI_DL_DAC, 1, "one FILE.dl5080",
                            &a)))
         return rc;
+    if (a.dac && !a.raw)   /* a DL5080 header names its DAC; dump and validate do not draw */
+        return cli_usage_error("dl", "%s: --dac applies only to a --raw stream", argv[1]);
     return !strcmp(argv[1], "dump") ? cmd_dl_dump(&a) : cmd_dl_validate(&a);
 }

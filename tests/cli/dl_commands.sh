@@ -62,6 +62,7 @@ printf '\000\024\120\022\000\020\200\000\000\000\000\000\000\003\000\001\000\010
 $MAPRT dl validate "$t/f.fifo" 2> "$t/err"; [ $? -eq 1 ] || fail "fifo without --raw"
 grep -q 'bad magic; a raw MegaPel stream needs --raw' "$t/err" || fail "fifo message: $(cat "$t/err")"
 $MAPRT dl validate "$t/f.fifo" --size 16x8 2>/dev/null; [ $? -eq 2 ] || fail "--size without --raw"
+$MAPRT dl dump "$t/a.dl5080" --dac 8 2>/dev/null; [ $? -eq 2 ] || fail "dump --dac without --raw"
 $MAPRT dl validate "$t/f.fifo" --raw --size 16x8 > "$t/out" || fail "validate --raw"
 grep -q "valid raw MegaPel stream, 16x8, 8-bit DAC, 78 bytes, 6 elements: fill-rect=1 text=1 src-blt=1 blt=1" "$t/out" ||
   fail "validate --raw: $(cat "$t/out")"
