@@ -34,8 +34,12 @@ static void dl_backend_png_close(void *dev)
 }
 
 const dl_backend dl_backend_png = {
-    "png", "software 5081 raster (the reference)",
-    dl_backend_png_open, &dl_raster_device, dl_backend_png_read, dl_backend_png_close,
+    .name = "png",
+    .summary = "software 5081 raster (the reference)",
+    .open = dl_backend_png_open,
+    .ops = &dl_raster_device,
+    .read = dl_backend_png_read,
+    .close = dl_backend_png_close,
 };
 
 const dl_backend *dl_backend_find(const char *name)

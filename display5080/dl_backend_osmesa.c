@@ -10,13 +10,13 @@
 #ifdef DL_HAVE_OSMESA
 #include <GL/osmesa.h>
 
-typedef struct dl_osmesa {
+typedef struct dl_backend_osmesa_ctx {
     dl_gl g;                   /* first: the device pointer is a dl_gl too */
     OSMesaContext ctx;
     uint8_t *buf;              /* RGBA colour buffer */
-} dl_osmesa;
+} dl_backend_osmesa_ctx;
 
-static dl_gl_proc dl_osmesa_proc(const char *name)
+static dl_gl_proc dl_backend_osmesa_proc(const char *name)
 {
     OSMESAproc p = OSMesaGetProcAddress(name);
     dl_gl_proc q;
@@ -24,9 +24,9 @@ static dl_gl_proc dl_osmesa_proc(const char *name)
     return q;
 }
 
-static void dl_osmesa_close(void *dev)
+static void dl_backend_osmesa_close(void *dev)
 {
-    dl_osmesa *o = dev;
+    dl_backend_osmesa_ctx *o = dev;
     if (!o)
         return;
     if (o->ctx) {
@@ -37,49 +37,53 @@ static void dl_osmesa_close(void *dev)
     mem_free(o);
 }
 
-static int dl_osmesa_open(int width, int height, void **dev, diag *err)
+static int dl_backend_osmesa_open(int width, int height, void **dev, diag *err)
 {
-    dl_osmesa *o = mem_calloc(1, sizeof *o);
+    dl_backend_osmesa_ctx *o = mem_calloc(1, sizeof *o);
     if (!o)
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "out of memory");
     o->buf = mem_alloc((size_t)width * (size_t)height * 4);
     if (!o->buf) {
-        dl_osmesa_close(o);
+        dl_backend_osmesa_close(o);
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "out of memory for a %dx%d buffer", width,
                        height);
     }
     o->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 8, 0, NULL);
     if (!o->ctx) {
-        dl_osmesa_close(o);
+        dl_backend_osmesa_close(o);
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "cannot create an OSMesa context");
     }
     if (!OSMesaMakeCurrent(o->ctx, o->buf, GL_UNSIGNED_BYTE, width, height)) {
-        dl_osmesa_close(o);
+        dl_backend_osmesa_close(o);
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "cannot make the OSMesa context current");
     }
-    if (dl_gl_load(&o->g, dl_osmesa_proc, 0, "osmesa", err) ||
+    if (dl_gl_load(&o->g, dl_backend_osmesa_proc, 0, "osmesa", err) ||
         dl_gl_start(&o->g, width, height, 0, "osmesa", err)) {
-        dl_osmesa_close(o);
+        dl_backend_osmesa_close(o);
         return DIAG_IO;
     }
     *dev = o;
     return 0;
 }
 
-static int dl_osmesa_read(void *dev, uint8_t *px, diag *err)
+static int dl_backend_osmesa_read(void *dev, uint8_t *px, diag *err)
 {
-    dl_osmesa *o = dev;
+    dl_backend_osmesa_ctx *o = dev;
     return dl_gl_read(&o->g, px, "osmesa", err);
 }
 
 const dl_backend dl_backend_osmesa = {
-    "osmesa", "OpenGL in an OSMesa off-screen buffer",
-    dl_osmesa_open, &dl_gl_device, dl_osmesa_read, dl_osmesa_close,
+    .name = "osmesa",
+    .summary = "OpenGL in an OSMesa off-screen buffer",
+    .open = dl_backend_osmesa_open,
+    .ops = &dl_gl_device,
+    .read = dl_backend_osmesa_read,
+    .close = dl_backend_osmesa_close,
 };
 
 #else
 
-static int dl_osmesa_open(int width, int height, void **dev, diag *err)
+static int dl_backend_osmesa_open(int width, int height, void **dev, diag *err)
 {
     (void)width;
     (void)height;
@@ -89,17 +93,21 @@ static int dl_osmesa_open(int width, int height, void **dev, diag *err)
                    "use --backend egl");
 }
 
-static int dl_osmesa_read(void *dev, uint8_t *px, diag *err)
+static int dl_backend_osmesa_read(void *dev, uint8_t *px, diag *err)
 {
     (void)dev;
     (void)px;
     return diag_at(err, DIAG_IO, "osmesa", 0, 0, "not available");
 }
 
-static void dl_osmesa_close(void *dev) { (void)dev; }
+static void dl_backend_osmesa_close(void *dev) { (void)dev; }
 
 const dl_backend dl_backend_osmesa = {
-    "osmesa", "OpenGL in an OSMesa off-screen buffer (not built)",
-    dl_osmesa_open, &dl_gl_device, dl_osmesa_read, dl_osmesa_close,
+    .name = "osmesa",
+    .summary = "OpenGL in an OSMesa off-screen buffer (not built)",
+    .open = dl_backend_osmesa_open,
+    .ops = &dl_gl_device,
+    .read = dl_backend_osmesa_read,
+    .close = dl_backend_osmesa_close,
 };
 #endif

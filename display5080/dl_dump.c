@@ -14,6 +14,7 @@ typedef struct dl_dump_ctx {
     size_t len, cap;
     int oom;
     iconv_t cd;
+    unsigned code_page;        /* as set by the list, for text */
 } dl_dump_ctx;
 
 static void dl_dump_add(dl_dump_ctx *c, const char *fmt, ...)
@@ -49,9 +50,13 @@ static int dl_dump_header(void *ctx, const dl_header *h, diag *err)
 {
     dl_dump_ctx *c = ctx;
     (void)err;
-    dl_dump_add(c, "%7d %6d  ----  header version=%u flags=0x%04X dac=%d size=%dx%d", 0,
-                DL_HEADER_SIZE, h->version, h->flags, h->flags & DL_FLAG_DAC8 ? 8 : 4, h->width,
-                h->height);
+    if (h->version == 0)
+        dl_dump_add(c, "%7d %6d  ----  raw MegaPel stream dac=%d size=%dx%d", 0, 0,
+                    h->flags & DL_FLAG_DAC8 ? 8 : 4, h->width, h->height);
+    else
+        dl_dump_add(c, "%7d %6d  ----  header version=%u flags=0x%04X dac=%d size=%dx%d", 0,
+                    DL_HEADER_SIZE, h->version, h->flags, h->flags & DL_FLAG_DAC8 ? 8 : 4,
+                    h->width, h->height);
     dl_dump_flush(c);
     return 0;
 }
@@ -64,7 +69,10 @@ static void dl_dump_text(dl_dump_ctx *c, const dl_element *e)
         char in = (char)e->data[i], out[8] = {0}, *ip = &in, *op = out;
         size_t il = 1, ol = sizeof out - 1;
         unsigned char ch;
-        if (c->cd == (iconv_t)-1 || iconv(c->cd, &ip, &il, &op, &ol) == (size_t)-1 || op - out != 1) {
+        if (c->code_page != DL_CP_EBCDIC) {
+            out[0] = (char)e->data[i];
+        } else if (c->cd == (iconv_t)-1 || iconv(c->cd, &ip, &il, &op, &ol) == (size_t)-1 ||
+                   op - out != 1) {
             dl_dump_add(c, "\\x%02X", e->data[i]);
             continue;
         }
@@ -105,14 +113,33 @@ static int dl_dump_element(void *ctx, const dl_element *e, diag *err)
         dl_dump_add(c, " %d,%d %d,%d bpp=%u op=%u (%dx%d pixels)", e->x0, e->y0, e->x1, e->y1,
                     e->value, e->op, e->x1 - e->x0 + 1, e->y1 - e->y0 + 1);
         break;
+    case DL_BLT_EXPAND:
+        dl_dump_add(c, " %d,%d %d,%d colour=%u op=%u (%dx%d bits)", e->x0, e->y0, e->x1, e->y1,
+                    e->value, e->op, e->x1 - e->x0 + 1, e->y1 - e->y0 + 1);
+        break;
+    case DL_SRC_BLT:
+        dl_dump_add(c, " addr=0x%08lX %d,%d %d,%d bpp=%u op=%u (pixels in adapter memory)",
+                    (unsigned long)e->addr, e->x0, e->y0, e->x1, e->y1, e->value, e->op);
+        break;
+    case DL_CHAR_UP:
+        dl_dump_add(c, " %d,%d", e->x0, e->y0);
+        break;
+    case DL_USER_LINE_STYLE:
+        dl_dump_add(c, " mask=0x%04X factor=%u", e->value, e->count);
+        break;
+    case DL_CODE_PAGE:
+        c->code_page = e->value;
+        dl_dump_add(c, " %u", e->value);
+        break;
     case DL_NOOP:
         dl_dump_add(c, " %u bytes", e->count);
         break;
     case DL_PLANE_MASK:
-        dl_dump_add(c, " 0x%02X", e->value & 0xFFu);
+        dl_dump_add(c, " 0x%04X (writes planes 0x%02X)", e->value, e->planes);
         break;
     case DL_LINE_TYPE: case DL_LINE_COLOUR: case DL_INTERIOR_COLOUR: case DL_LOGIC_OP:
-    case DL_CLEAR:
+    case DL_CLEAR: case DL_TEXT_COLOUR: case DL_CHAR_HEIGHT: case DL_INTERIOR_STYLE:
+    case DL_EDGE_FLAG: case DL_EDGE_COLOUR: case DL_LINE_WIDTH:
         dl_dump_add(c, " %u", e->value);
         break;
     case DL_LOAD_COLOURS:
@@ -136,17 +163,18 @@ static int dl_dump_element(void *ctx, const dl_element *e, diag *err)
     return 0;
 }
 
-int dl_dump(const uint8_t *buf, size_t len, const char *name, dl_dump_write write, void *wctx,
-            diag *err)
+int dl_dump(const uint8_t *buf, size_t len, const char *name, const dl_decode_opts *opts,
+            dl_dump_write write, void *wctx, diag *err)
 {
-    static const dl_visitor v = {dl_dump_header, dl_dump_element};
+    static const dl_visitor v = {.header = dl_dump_header, .element = dl_dump_element};
     dl_dump_ctx c;
     int rc;
     memset(&c, 0, sizeof c);
     c.write = write;
     c.wctx = wctx;
     c.cd = iconv_open("ASCII", "IBM037");
-    rc = dl_decode(buf, len, name, NULL, &v, &c, NULL, err);
+    c.code_page = DL_CP_EBCDIC;
+    rc = dl_decode(buf, len, name, opts, &v, &c, NULL, err);
     if (c.cd != (iconv_t)-1)
         iconv_close(c.cd);
     mem_free(c.line);

@@ -178,7 +178,6 @@ void dl_encode_colours(dl_encoder *enc, unsigned start, const uint32_t *rgb, siz
 void dl_encode_blt(dl_encoder *enc, int x0, int y0, int w, int h, unsigned op,
                    const uint8_t *rows, size_t stride)
 {
-    static const uint8_t zero = 0;
     int r;
     if (w < 1 || h < 1) {
         dl_encode_fail(enc, DIAG_INPUT, "empty BLT of %dx%d pixels", w, h);
@@ -191,12 +190,15 @@ void dl_encode_blt(dl_encoder *enc, int x0, int y0, int w, int h, unsigned op,
     dl_encode_s16(enc, (long)y0 + h - 1);
     dl_encode_u16(enc, DL_BLT_BPP);
     dl_encode_u16(enc, op);
-    for (r = 0; r < h && !enc->status; r++) {
+    /* top row first, rows packed; dl_encode_end pads the element once */
+    for (r = h - 1; r >= 0 && !enc->status; r--)
         dl_encode_bytes(enc, rows + (size_t)r * stride, (size_t)w);
-        if (w & 1)
-            dl_encode_bytes(enc, &zero, 1);
-    }
     dl_encode_end(enc);
+}
+
+void dl_encode_plane_mask(dl_encoder *enc, unsigned writable)
+{
+    dl_encode_word(enc, DL_PLANE_MASK, dl_format_mask_word(writable));
 }
 
 void dl_encode_run_row(dl_encoder *enc, int y, int x0, const unsigned *runs, size_t n)
@@ -215,7 +217,8 @@ size_t dl_encode_run_row_size(size_t runs) { return 10 + 4 * runs; }
 
 size_t dl_encode_blt_size(int w, int h)
 {
-    return 16 + (size_t)h * ((size_t)w + ((size_t)w & 1));
+    size_t n = (size_t)w * (size_t)h;
+    return 16 + n + (n & 1);
 }
 
 int dl_encode_finish(dl_encoder *enc, const char *name, uint8_t **out, size_t *len, diag *err)

@@ -19,7 +19,7 @@ typedef struct dl_encoder {
     char msg[128];
 } dl_encoder;
 
-/* Starts a stream with its header. flags: DL_FLAG_DAC8 or 0. Never fails
+/* Starts a stream with its header (version DL_VERSION). flags: DL_FLAG_DAC8 or 0. Never fails
  * itself: a failure shows at dl_encode_finish. */
 void dl_encode_init(dl_encoder *enc, int width, int height, unsigned flags);
 /* Frees the buffer (after an error or when the caller did not take it). */
@@ -41,9 +41,13 @@ void dl_encode_rect(dl_encoder *enc, unsigned code, int x0, int y0, int x1, int 
 void dl_encode_circle(dl_encoder *enc, unsigned code, int cx, int cy, unsigned r);
 void dl_encode_text(dl_encoder *enc, int x, int y, const uint8_t *ebcdic, size_t n);
 void dl_encode_colours(dl_encoder *enc, unsigned start, const uint32_t *rgb, size_t n);
-/* rows: h rows of w index bytes, bottom row first, row i at rows + i*stride. */
+/* rows: h rows of w index bytes, bottom row first, row i at rows + i*stride;
+ * written as IBM's driver sends them: top row first, packed. */
 void dl_encode_blt(dl_encoder *enc, int x0, int y0, int w, int h, unsigned op,
                    const uint8_t *rows, size_t stride);
+/* The plane mask letting the planes in `writable` (bit k = plane k) be
+ * written, as the driver sends it: (~writable & 0xFF) << 8. */
+void dl_encode_plane_mask(dl_encoder *enc, unsigned writable);
 /* runs: n (count, index) pairs. */
 void dl_encode_run_row(dl_encoder *enc, int y, int x0, const unsigned *runs, size_t n);
 

@@ -1,48 +1,54 @@
-/* dl_format — element names and the magic (see dl_format.h). */
+/* dl_format — the element code table and the magic (see dl_format.h). */
 #include "display5080/dl_format.h"
 
 const uint8_t dl_magic[6] = {0xC4, 0xD3, 0xF5, 0xF0, 0xF8, 0xF0};
 
-const unsigned dl_format_codes[DL_FORMAT_NCODES] = {
-    DL_POLYLINE, DL_SEGMENTS, DL_FILL_RECT, DL_FILL_CIRCLE, DL_CIRCLE, DL_BEGIN_POLYGON,
-    DL_END_POLYGON, DL_TEXT, DL_VIEWPORT, DL_SCISSOR, DL_BLT, DL_NOOP, DL_LINE_TYPE,
-    DL_LINE_COLOUR, DL_INTERIOR_COLOUR, DL_LOGIC_OP, DL_PLANE_MASK, DL_LOAD_COLOURS, DL_CLEAR,
-    DL_END, DL_RUN_ROW,
+const dl_format_code dl_format_codes[DL_FORMAT_NCODES] = {
+    {.code = DL_POLYLINE, .name = "polyline", .since = 1},
+    {.code = DL_SEGMENTS, .name = "segments", .since = 1},
+    {.code = DL_FILL_RECT, .name = "fill-rect", .since = 1},
+    {.code = DL_FILL_CIRCLE, .name = "fill-circle", .since = 1},
+    {.code = DL_CIRCLE, .name = "circle", .since = 1},
+    {.code = DL_BEGIN_POLYGON, .name = "begin-polygon", .since = 1},
+    {.code = DL_END_POLYGON, .name = "end-polygon", .since = 1},
+    {.code = DL_TEXT, .name = "text", .since = 1},
+    {.code = DL_SRC_BLT, .name = "src-blt", .since = 2},
+    {.code = DL_VIEWPORT, .name = "viewport", .since = 1},
+    {.code = DL_SCISSOR, .name = "scissor", .since = 1},
+    {.code = DL_BLT, .name = "blt", .since = 1},
+    {.code = DL_BLT_EXPAND, .name = "blt-expand", .since = 2},
+    {.code = DL_NOOP, .name = "noop", .since = 1},
+    {.code = DL_LINE_TYPE, .name = "line-type", .since = 1},
+    {.code = DL_LINE_COLOUR, .name = "line-colour", .since = 1},
+    {.code = DL_TEXT_COLOUR, .name = "text-colour", .since = 2},
+    {.code = DL_CHAR_HEIGHT, .name = "char-height", .since = 2},
+    {.code = DL_CHAR_UP, .name = "char-up", .since = 2},
+    {.code = DL_INTERIOR_STYLE, .name = "interior-style", .since = 2},
+    {.code = DL_INTERIOR_COLOUR, .name = "interior-colour", .since = 1},
+    {.code = DL_EDGE_FLAG, .name = "edge-flag", .since = 2},
+    {.code = DL_EDGE_COLOUR, .name = "edge-colour", .since = 2},
+    {.code = DL_LOGIC_OP, .name = "logic-op", .since = 1},
+    {.code = DL_PLANE_MASK, .name = "plane-mask", .since = 1},
+    {.code = DL_CODE_PAGE, .name = "code-page", .since = 2},
+    {.code = DL_USER_LINE_STYLE, .name = "user-line-style", .since = 2},
+    {.code = DL_LOAD_COLOURS, .name = "load-colours", .since = 1, .own = 1},
+    {.code = DL_CLEAR, .name = "clear", .since = 1, .own = 1},
+    {.code = DL_END, .name = "end", .since = 1, .own = 1},
+    {.code = DL_RUN_ROW, .name = "run-row", .since = 1, .own = 1},
+    {.code = DL_LINE_WIDTH, .name = "line-width", .since = 2, .own = 1},
 };
 
 int dl_format_slot(unsigned code)
 {
     int i;
     for (i = 0; i < DL_FORMAT_NCODES; i++)
-        if (dl_format_codes[i] == code)
+        if (dl_format_codes[i].code == code)
             return i;
     return -1;
 }
 
 const char *dl_format_name(unsigned code)
 {
-    switch (code) {
-    case DL_POLYLINE: return "polyline";
-    case DL_SEGMENTS: return "segments";
-    case DL_FILL_RECT: return "fill-rect";
-    case DL_FILL_CIRCLE: return "fill-circle";
-    case DL_CIRCLE: return "circle";
-    case DL_BEGIN_POLYGON: return "begin-polygon";
-    case DL_END_POLYGON: return "end-polygon";
-    case DL_TEXT: return "text";
-    case DL_VIEWPORT: return "viewport";
-    case DL_SCISSOR: return "scissor";
-    case DL_BLT: return "blt";
-    case DL_NOOP: return "noop";
-    case DL_LINE_TYPE: return "line-type";
-    case DL_LINE_COLOUR: return "line-colour";
-    case DL_INTERIOR_COLOUR: return "interior-colour";
-    case DL_LOGIC_OP: return "logic-op";
-    case DL_PLANE_MASK: return "plane-mask";
-    case DL_LOAD_COLOURS: return "load-colours";
-    case DL_CLEAR: return "clear";
-    case DL_END: return "end";
-    case DL_RUN_ROW: return "run-row";
-    default: return 0;
-    }
+    int i = dl_format_slot(code);
+    return i < 0 ? 0 : dl_format_codes[i].name;
 }

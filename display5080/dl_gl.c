@@ -1,10 +1,8 @@
 /* dl_gl — shared OpenGL drawing for the GL backends (see dl_gl.h). */
 #include "display5080/dl_gl.h"
-#include "util/dmath.h"
 #include "display5080/dl_logic.h"
 #include "display5080/dl_format.h"
 #include "util/mem.h"
-#include <math.h>
 #include <string.h>
 
 /* GL constants used here (values fixed by the GL specification), spelled
@@ -45,19 +43,12 @@ int dl_gl_load(dl_gl *g, dl_gl_getproc get, int fbo, const char *who, diag *err)
     DL_GL_LOAD(Enable, "glEnable");
     DL_GL_LOAD(Disable, "glDisable");
     DL_GL_LOAD(ClearColor, "glClearColor");
-    DL_GL_LOAD(ClearStencil, "glClearStencil");
     DL_GL_LOAD(Clear, "glClear");
-    DL_GL_LOAD(Scissor, "glScissor");
     DL_GL_LOAD(LogicOp, "glLogicOp");
-    DL_GL_LOAD(ColorMask, "glColorMask");
-    DL_GL_LOAD(StencilFunc, "glStencilFunc");
-    DL_GL_LOAD(StencilOp, "glStencilOp");
-    DL_GL_LOAD(StencilMask, "glStencilMask");
     DL_GL_LOAD(Color4ub, "glColor4ub");
     DL_GL_LOAD(Begin, "glBegin");
     DL_GL_LOAD(End, "glEnd");
     DL_GL_LOAD(Vertex2i, "glVertex2i");
-    DL_GL_LOAD(Vertex2d, "glVertex2d");
     DL_GL_LOAD(PixelStorei, "glPixelStorei");
     DL_GL_LOAD(WindowPos2i, "glWindowPos2i");
     DL_GL_LOAD(DrawPixels, "glDrawPixels");
@@ -113,10 +104,7 @@ int dl_gl_start(dl_gl *g, int width, int height, int fbo, const char *who, diag 
     gl->Disable(GLc_POLYGON_SMOOTH);
     gl->Disable(GLc_SCISSOR_TEST);
     gl->ClearColor(0, 0, 0, 0);
-    gl->ClearStencil(0);
-    gl->StencilMask(0xFF);
-    gl->Clear(GLc_COLOR_BUFFER_BIT | GLc_STENCIL_BUFFER_BIT);
-    gl->Enable(GLc_SCISSOR_TEST);
+    gl->Clear(GLc_COLOR_BUFFER_BIT);
     gl->Enable(GLc_COLOR_LOGIC_OP);
     gl->PixelStorei(GLc_UNPACK_ALIGNMENT, 1);
     gl->PixelStorei(GLc_PACK_ALIGNMENT, 1);
@@ -128,7 +116,6 @@ int dl_gl_start(dl_gl *g, int width, int height, int fbo, const char *who, diag 
 int dl_gl_read(dl_gl *g, uint8_t *px, const char *who, diag *err)
 {
     unsigned e;
-    g->gl.Disable(GLc_SCISSOR_TEST);
     g->gl.ReadPixels(0, 0, g->width, g->height, GLc_RED, GLc_UNSIGNED_BYTE, px);
     g->gl.Finish();
     if ((e = g->gl.GetError()) != 0)
@@ -149,94 +136,81 @@ void dl_gl_stop(dl_gl *g)
     g->scratch_cap = 0;
 }
 
-static void dl_gl_scissor(dl_gl *g, const dl_gc *gc)
+static void dl_gl_pass(dl_gl *g, unsigned glop, unsigned v, const dl_box *b, size_t n)
 {
-    g->gl.Scissor(gc->cx0, gc->cy0, gc->cx1 - gc->cx0 + 1, gc->cy1 - gc->cy0 + 1);
-}
-
-static void dl_gl_quad(dl_gl *g, int x0, int y0, int x1, int y1)
-{
+    size_t k;
+    g->gl.LogicOp(glop);
+    g->gl.Color4ub((unsigned char)v, 0, 0, 255);
     g->gl.Begin(GLc_QUADS);
-    g->gl.Vertex2i(x0, y0);
-    g->gl.Vertex2i(x1 + 1, y0);
-    g->gl.Vertex2i(x1 + 1, y1 + 1);
-    g->gl.Vertex2i(x0, y1 + 1);
+    for (k = 0; k < n; k++) {
+        g->gl.Vertex2i(b[k].x0, b[k].y0);
+        g->gl.Vertex2i(b[k].x1 + 1, b[k].y0);
+        g->gl.Vertex2i(b[k].x1 + 1, b[k].y1 + 1);
+        g->gl.Vertex2i(b[k].x0, b[k].y1 + 1);
+    }
     g->gl.End();
 }
 
-static void dl_gl_pass(dl_gl *g, unsigned glop, unsigned v, int x0, int y0, int x1, int y1)
-{
-    g->gl.LogicOp(glop);
-    g->gl.Color4ub((unsigned char)v, 0, 0, 255);
-    dl_gl_quad(g, x0, y0, x1, y1);
-}
-
-/* Writes gc->colour with gc->op and gc->mask over the rectangle (pixels
- * outside the stencil coverage are already masked off by the caller). */
-static void dl_gl_paint(dl_gl *g, const dl_gc *gc, int x0, int y0, int x1, int y1)
-{
-    uint8_t clr, set, inv;
-    dl_logic_split(gc->op, (uint8_t)gc->colour, (uint8_t)gc->mask, &clr, &set, &inv);
-    if (!inv && (clr | set) == 0xFF) {
-        dl_gl_pass(g, GLc_COPY, set, x0, y0, x1, y1);
-        return;
-    }
-    if (clr)
-        dl_gl_pass(g, GLc_AND, (uint8_t)~clr, x0, y0, x1, y1);
-    if (set)
-        dl_gl_pass(g, GLc_OR, set, x0, y0, x1, y1);
-    if (inv)
-        dl_gl_pass(g, GLc_XOR, inv, x0, y0, x1, y1);
-}
-
-static int dl_gl_rect(void *dev, const dl_gc *gc, int x0, int y0, int x1, int y1, diag *err)
+/* Quads on pixel edges cover exactly the pixels whose centres they hold. */
+static int dl_gl_boxes(void *dev, const dl_gc *gc, const dl_box *b, size_t n, diag *err)
 {
     dl_gl *g = dev;
+    uint8_t clr, set, inv;
     (void)err;
-    if (x0 < gc->cx0) x0 = gc->cx0;
-    if (y0 < gc->cy0) y0 = gc->cy0;
-    if (x1 > gc->cx1) x1 = gc->cx1;
-    if (y1 > gc->cy1) y1 = gc->cy1;
-    if (x1 < x0 || y1 < y0)
+    dl_logic_split(gc->op, (uint8_t)gc->colour, (uint8_t)gc->mask, &clr, &set, &inv);
+    if (!inv && (clr | set) == 0xFF) {
+        dl_gl_pass(g, GLc_COPY, set, b, n);
         return 0;
-    dl_gl_scissor(g, gc);
-    dl_gl_paint(g, gc, x0, y0, x1, y1);
+    }
+    if (clr)
+        dl_gl_pass(g, GLc_AND, (uint8_t)~clr, b, n);
+    if (set)
+        dl_gl_pass(g, GLc_OR, set, b, n);
+    if (inv)
+        dl_gl_pass(g, GLc_XOR, inv, b, n);
     return 0;
 }
 
 static int dl_gl_blt(void *dev, const dl_gc *gc, int x0, int y0, int w, int h,
-                     const uint8_t *rows, size_t stride, diag *err)
+                     const uint8_t *rows, ptrdiff_t stride, diag *err)
 {
     dl_gl *g = dev;
     dl_gl_api *gl = &g->gl;
     size_t n = (size_t)w * (size_t)h, i;
-    int j, k;
-    dl_gl_scissor(g, gc);
+    int copy = gc->op == DL_OP_COPY && gc->mask == 0xFF, j, k;
     gl->WindowPos2i(x0, y0);
-    if (gc->op == DL_OP_COPY && gc->mask == 0xFF) {
+    if (copy && stride > 0) {
         gl->PixelStorei(GLc_UNPACK_ROW_LENGTH, (int)stride);
         gl->LogicOp(GLc_COPY);
         gl->DrawPixels(w, h, GLc_RED, GLc_UNSIGNED_BYTE, rows);
         gl->PixelStorei(GLc_UNPACK_ROW_LENGTH, 0);
         return 0;
     }
-    /* Per-pixel split into AND, OR and XOR images. */
+    /* Bottom-up rows gathered, or split per pixel into AND, OR and XOR images. */
     if (n * 3 > g->scratch_cap) {
         void *p = g->scratch;
         if (mem_grow(&p, &g->scratch_cap, n * 3, 1))
-            return diag_at(err, DIAG_IO, gc->name, 0, 0, "out of memory for a BLT");
+            return diag_offset(err, DIAG_IO, gc->name, gc->offset, "out of memory for a BLT");
         g->scratch = p;
     }
     for (j = 0; j < h; j++)
         for (k = 0; k < w; k++) {
-            uint8_t clr, set, inv;
+            uint8_t s = rows[(ptrdiff_t)j * stride + k], clr, set, inv;
             i = (size_t)j * (size_t)w + (size_t)k;
-            dl_logic_split(gc->op, rows[(size_t)j * stride + (size_t)k], (uint8_t)gc->mask,
-                           &clr, &set, &inv);
+            if (copy) {
+                g->scratch[i] = s;
+                continue;
+            }
+            dl_logic_split(gc->op, s, (uint8_t)gc->mask, &clr, &set, &inv);
             g->scratch[i] = (uint8_t)~clr;
             g->scratch[n + i] = set;
             g->scratch[2 * n + i] = inv;
         }
+    if (copy) {
+        gl->LogicOp(GLc_COPY);
+        gl->DrawPixels(w, h, GLc_RED, GLc_UNSIGNED_BYTE, g->scratch);
+        return 0;
+    }
     gl->LogicOp(GLc_AND);
     gl->DrawPixels(w, h, GLc_RED, GLc_UNSIGNED_BYTE, g->scratch);
     gl->LogicOp(GLc_OR);
@@ -246,88 +220,4 @@ static int dl_gl_blt(void *dev, const dl_gc *gc, int x0, int y0, int w, int h,
     return 0;
 }
 
-/* Stencil coverage: begin (mode REPLACE or INVERT) and finish (write once
- * through the stencil, then clear it inside the clip). */
-static void dl_gl_cover_begin(dl_gl *g, const dl_gc *gc, unsigned mode)
-{
-    dl_gl_api *gl = &g->gl;
-    dl_gl_scissor(g, gc);
-    gl->Enable(GLc_STENCIL_TEST);
-    gl->ColorMask(0, 0, 0, 0);
-    gl->StencilMask(1);
-    gl->StencilFunc(GLc_ALWAYS, 1, 1);
-    gl->StencilOp(GLc_KEEP, GLc_KEEP, mode);
-}
-
-static void dl_gl_cover_end(dl_gl *g, const dl_gc *gc)
-{
-    dl_gl_api *gl = &g->gl;
-    gl->ColorMask(1, 1, 1, 1);
-    gl->StencilFunc(GLc_EQUAL, 1, 1);
-    gl->StencilOp(GLc_KEEP, GLc_KEEP, GLc_KEEP);
-    dl_gl_paint(g, gc, gc->cx0, gc->cy0, gc->cx1, gc->cy1);
-    gl->Clear(GLc_STENCIL_BUFFER_BIT);
-    gl->Disable(GLc_STENCIL_TEST);
-}
-
-static void dl_gl_vertex(dl_gl *g, double x, double y) { g->gl.Vertex2d(x + 0.5, y + 0.5); }
-
-static int dl_gl_lines(void *dev, const dl_gc *gc, const int *xy, size_t n, int strip, diag *err)
-{
-    dl_gl *g = dev;
-    size_t i;
-    (void)err;
-    dl_gl_cover_begin(g, gc, GLc_REPLACE);
-    g->gl.Begin(strip ? GLc_LINE_STRIP : GLc_LINES);
-    for (i = 0; i < n; i++)
-        dl_gl_vertex(g, xy[2 * i], xy[2 * i + 1]);
-    g->gl.End();
-    g->gl.Begin(GLc_POINTS);   /* GL lines leave out their last pixel */
-    for (i = 0; i < n; i++)
-        dl_gl_vertex(g, xy[2 * i], xy[2 * i + 1]);
-    g->gl.End();
-    dl_gl_cover_end(g, gc);
-    return 0;
-}
-
-static int dl_gl_polygon(void *dev, const dl_gc *gc, const int *xy, size_t n, diag *err)
-{
-    dl_gl *g = dev;
-    size_t i;
-    (void)err;
-    dl_gl_cover_begin(g, gc, GLc_INVERT);
-    g->gl.Begin(GLc_TRIANGLE_FAN);
-    for (i = 0; i < n; i++)
-        dl_gl_vertex(g, xy[2 * i], xy[2 * i + 1]);
-    g->gl.End();
-    dl_gl_cover_end(g, gc);
-    return 0;
-}
-
-static int dl_gl_circle(void *dev, const dl_gc *gc, int cx, int cy, unsigned r, int fill,
-                        diag *err)
-{
-    dl_gl *g = dev;
-    /* A regular polygon whose sides stay within 0.1 pixel of the circle. */
-    double rad = fill ? r + 0.5 : r, step;
-    int k, n;
-    (void)err;
-    n = rad < 1 ? 4 : (int)ceil(DMATH_PI / acos(1 - 0.1 / (rad + 0.1)));
-    if (n < 8) n = 8;
-    if (n > 4096) n = 4096;
-    step = 2 * DMATH_PI / n;
-    dl_gl_cover_begin(g, gc, GLc_REPLACE);
-    g->gl.Begin(fill ? GLc_TRIANGLE_FAN : GLc_LINE_LOOP);
-    for (k = 0; k < n; k++)
-        dl_gl_vertex(g, cx + rad * cos(k * step), cy + rad * sin(k * step));
-    g->gl.End();
-    if (!fill) {
-        g->gl.Begin(GLc_POINTS);
-        dl_gl_vertex(g, cx + (double)r, cy);
-        g->gl.End();
-    }
-    dl_gl_cover_end(g, gc);
-    return 0;
-}
-
-const dl_device dl_gl_device = {dl_gl_rect, dl_gl_blt, dl_gl_lines, dl_gl_polygon, dl_gl_circle};
+const dl_device dl_gl_device = {.boxes = dl_gl_boxes, .blt = dl_gl_blt};

@@ -1,12 +1,12 @@
-/* dl_gl — the OpenGL drawing code shared by the osmesa and egl backends,
- * written once against a table of GL entry points that each backend loads
- * through its own GetProcAddress (so the two GL libraries never clash at
- * link time). The 5081 frame buffer is the red channel of an RGBA8 colour
- * buffer: every write is done with glLogicOp, op and plane mask being split
- * into at most three exact passes (AND, OR, XOR; see dl_logic_split). Lines,
- * circles and polygons are first drawn into the stencil buffer (even-odd by
- * GL_INVERT for polygons) and then written once through it, so each pixel is
- * written at most once per element, as dl_device requires.
+/* dl_gl — the OpenGL frame-buffer writer shared by the osmesa and egl
+ * backends, written once against a table of GL entry points that each
+ * backend loads through its own GetProcAddress (so the two GL libraries never
+ * clash at link time). The 5081 frame buffer is the red channel of an RGBA8
+ * colour buffer: boxes are quads on pixel edges, blocks are glDrawPixels,
+ * and every write goes through glLogicOp, op and plane mask being split into
+ * at most three exact passes (AND, OR, XOR; see dl_logic_split). Shapes reach
+ * it already rasterised and clipped (dl_cover), so GL's own line and polygon
+ * rules never decide a pixel.
  * Legacy (compatibility profile) GL 1.4: immediate mode, glWindowPos,
  * glDrawPixels; the EGL backend adds framebuffer objects (GL 3.0). */
 #ifndef DL_GL_H
@@ -28,19 +28,12 @@ typedef struct dl_gl_api {
     void (*Enable)(unsigned);
     void (*Disable)(unsigned);
     void (*ClearColor)(float, float, float, float);
-    void (*ClearStencil)(int);
     void (*Clear)(unsigned);
-    void (*Scissor)(int, int, int, int);
     void (*LogicOp)(unsigned);
-    void (*ColorMask)(unsigned char, unsigned char, unsigned char, unsigned char);
-    void (*StencilFunc)(unsigned, int, unsigned);
-    void (*StencilOp)(unsigned, unsigned, unsigned);
-    void (*StencilMask)(unsigned);
     void (*Color4ub)(unsigned char, unsigned char, unsigned char, unsigned char);
     void (*Begin)(unsigned);
     void (*End)(void);
     void (*Vertex2i)(int, int);
-    void (*Vertex2d)(double, double);
     void (*PixelStorei)(unsigned, int);
     void (*WindowPos2i)(int, int);
     void (*DrawPixels)(int, int, unsigned, unsigned, const void *);
@@ -74,7 +67,7 @@ extern const dl_device dl_gl_device;
  * missing one returns DIAG_IO naming it, with `who` (the backend) first. */
 int dl_gl_load(dl_gl *g, dl_gl_getproc get, int fbo, const char *who, diag *err);
 /* With a current context: creates the FBO if fbo is set, sets up the
- * device-pixel projection and clears indices and stencil to 0. */
+ * device-pixel projection and clears the indices to 0. */
 int dl_gl_start(dl_gl *g, int width, int height, int fbo, const char *who, diag *err);
 /* Reads width*height indices, bottom row first; DIAG_IO on a GL error. */
 int dl_gl_read(dl_gl *g, uint8_t *px, const char *who, diag *err);

@@ -1,9 +1,8 @@
-/* dl_raster — the software 5081 frame buffer: width x height 8-bit indices
- * and the reference implementation of every dl_device operation (Bresenham
- * lines with both end points, even-odd polygon fill at pixel centres,
- * midpoint circles, discs by integer square root). Used by the png backend
- * and as the reference the GL backends are tested against. A work budget
- * (pixel steps) turns pathological input into an error instead of a hang. */
+/* dl_raster — the software 5081 frame buffer: width x height 8-bit indices,
+ * written box by box and block by block through the logic op and plane
+ * mask. The png backend, and the reference the GL backends are tested
+ * against. A work budget (pixels written) turns pathological input into an
+ * error instead of a hang. */
 #ifndef DL_RASTER_H
 #define DL_RASTER_H
 #include <stdint.h>
@@ -14,11 +13,7 @@
 typedef struct dl_raster {
     int width, height;
     uint8_t *px;               /* row y (0 = bottom) at px + y*width */
-    uint8_t *stamp;            /* per-pixel "written by this element" marks, lazily allocated */
-    uint8_t epoch;
     unsigned long long work, work_limit;
-    int *xs;                   /* polygon crossings scratch */
-    size_t xs_cap;
 } dl_raster;
 
 extern const dl_device dl_raster_device;

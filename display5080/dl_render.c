@@ -26,23 +26,40 @@ static int dl_render_open(void *octx, int width, int height, const dl_device **o
     return 0;
 }
 
+dl_decode_opts dl_render_decode_opts(const dl_render_opts *opts)
+{
+    dl_decode_opts d;
+    memset(&d, 0, sizeof d);
+    if (opts && opts->raw) {
+        d.raw = 1;
+        d.width = opts->width;
+        d.height = opts->height;
+        d.flags = opts->dac == 4 ? 0 : DL_FLAG_DAC8;
+    }
+    return d;
+}
+
 int dl_render(const uint8_t *buf, size_t len, const char *name, const dl_backend *b,
               const dl_render_opts *opts, dl_frame *out, diag *err)
 {
     dl_render_ctx c;
     dl_interp in;
     dl_frame f;
+    dl_decode_opts d = dl_render_decode_opts(opts);
     int rc;
     memset(&c, 0, sizeof c);
     c.b = b;
     c.opts = opts;
-    dl_interp_init(&in, name, opts ? opts->dac : 0, dl_render_open, &c);
-    rc = dl_decode(buf, len, name, NULL, &dl_interp_visitor, &in, NULL, err);
+    dl_interp_init(&in, name, opts ? opts->dac : 0, opts ? opts->work_limit : 0, dl_render_open,
+                   &c);
+    rc = dl_decode(buf, len, name, &d, &dl_interp_visitor, &in, NULL, err);
     memset(&f, 0, sizeof f);
     if (!rc) {
         f.width = in.width;
         f.height = in.height;
         f.dac = in.dac;
+        f.src_blts = in.src_blts;
+        f.src_blt_offset = in.src_blt_offset;
         dl_interp_palette(&in, f.palette);
         f.px = mem_alloc((size_t)f.width * (size_t)f.height);
         if (!f.px)

@@ -11,13 +11,13 @@ static int dl_validate_element(void *ctx, const dl_element *e, diag *err)
     return 0;
 }
 
-int dl_validate(const uint8_t *buf, size_t len, const char *name, dl_validate_summary *s,
-                diag *err)
+int dl_validate(const uint8_t *buf, size_t len, const char *name, const dl_decode_opts *opts,
+                dl_validate_summary *s, diag *err)
 {
-    static const dl_visitor v = {NULL, dl_validate_element};
+    static const dl_visitor v = {.header = NULL, .element = dl_validate_element};
     dl_validate_summary t;
     memset(&t, 0, sizeof t);
-    if (dl_decode(buf, len, name, NULL, &v, &t, &t.header, err))
+    if (dl_decode(buf, len, name, opts, &v, &t, &t.header, err))
         return err->status;
     *s = t;
     return 0;

@@ -13,7 +13,8 @@ typedef struct dl_validate_summary {
     unsigned long count[DL_FORMAT_NCODES];     /* by dl_format_slot */
 } dl_validate_summary;
 
-/* Checks buf; fills *s on success. Returns 0 or DIAG_INPUT with the offset. */
-int dl_validate(const uint8_t *buf, size_t len, const char *name, dl_validate_summary *s,
-                diag *err);
+/* Checks buf (opts as for dl_decode, may be NULL); fills *s on success.
+ * Returns 0 or DIAG_INPUT with the offset. */
+int dl_validate(const uint8_t *buf, size_t len, const char *name, const dl_decode_opts *opts,
+                dl_validate_summary *s, diag *err);
 #endif

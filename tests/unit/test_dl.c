@@ -17,6 +17,7 @@
 #include "display5080/dl_validate.h"
 #include "util/mem.h"
 #include "support.h"
+#include "unit/dl_test.h"
 
 /* ---- helpers ------------------------------------------------------------ */
 
@@ -31,17 +32,23 @@ static void put16(bytes *s, unsigned v)
     s->b[s->n++] = (uint8_t)v;
 }
 
-static void header(bytes *s, unsigned w, unsigned h)
+static void header_version(bytes *s, unsigned w, unsigned h, unsigned version)
 {
     static const uint8_t magic[6] = {0xC4, 0xD3, 0xF5, 0xF0, 0xF8, 0xF0};
     memcpy(s->b, magic, 6);
     s->n = 6;
-    put16(s, 1);
+    put16(s, version);
     put16(s, 0);
     put16(s, w);
     put16(s, h);
     put16(s, 0);
 }
+
+/* A version 1 header: the tests that use it check that old lists still
+ * decode and draw as they were written. */
+static void header(bytes *s, unsigned w, unsigned h) { header_version(s, w, h, 1); }
+/* The current version. */
+static void header2(bytes *s, unsigned w, unsigned h) { header_version(s, w, h, 2); }
 
 /* Appends an element from a list of 16-bit words (count words after code). */
 static void elem(bytes *s, unsigned code, int nwords, ...)
@@ -66,7 +73,7 @@ static const char *decode_msg(const bytes *s)
     diag err;
     diag_init(&err);
     buf[0] = '\0';
-    if (dl_validate(s->b, s->n, "t.dl", &sum, &err))
+    if (dl_validate(s->b, s->n, "t.dl", NULL, &sum, &err))
         diag_format(&err, buf, sizeof buf);
     return buf;
 }
@@ -115,13 +122,14 @@ static void test_dl_decode_header_and_every_element(void **state)
     end(&s);
     diag_init(&err);
     assert_string_equal(decode_msg(&s), "");
-    assert_int_equal(dl_validate(s.b, s.n, "t.dl", &sum, &err), 0);
+    assert_int_equal(dl_validate(s.b, s.n, "t.dl", NULL, &sum, &err), 0);
     assert_int_equal(sum.header.width, 64);
     assert_int_equal(sum.header.height, 32);
     assert_int_equal(sum.header.flags, DL_FLAG_DAC8);
     assert_int_equal(sum.elements, 22);
-    for (i = 0; i < DL_FORMAT_NCODES; i++)
-        assert_int_equal(sum.count[i], dl_format_codes[i] == DL_POLYLINE ? 2 : 1);
+    for (i = 0; i < DL_FORMAT_NCODES; i++)   /* every version 1 code */
+        assert_int_equal(sum.count[i], dl_format_codes[i].since > 1 ? 0
+                                       : dl_format_codes[i].code == DL_POLYLINE ? 2 : 1);
 }
 
 static void test_dl_decode_malformed_errors_name_offsets(void **state)
@@ -131,8 +139,8 @@ static void test_dl_decode_malformed_errors_name_offsets(void **state)
         const char *want;
     } cases[] = {
         {0, "t.dl: offset 0: error: file of 10 bytes is shorter than the 16-byte header"},
-        {1, "t.dl: offset 0: error: not a DL5080 file (bad magic)"},
-        {2, "t.dl: offset 6: error: unsupported version 2 (expected 1)"},
+        {1, "t.dl: offset 0: error: not a DL5080 file (bad magic; a raw MegaPel stream needs --raw)"},
+        {2, "t.dl: offset 6: error: unsupported version 3 (expected 1 or 2)"},
         {3, "t.dl: offset 8: error: unknown flag bits 0x0002"},
         {4, "t.dl: offset 10: error: width 0 is outside 1..4096"},
         {5, "t.dl: offset 12: error: height 4097 is outside 1..4096"},
@@ -149,7 +157,7 @@ static void test_dl_decode_malformed_errors_name_offsets(void **state)
         {16, "t.dl: offset 16: error: scissor (0x5017): upper-right corner is left of or below the lower-left corner"},
         {17, "t.dl: offset 16: error: circle (0x5006): payload must be a centre and a radius (6 bytes)"},
         {18, "t.dl: offset 16: error: line-colour (0x5042): colour index 256 is above 255"},
-        {19, "t.dl: offset 16: error: line-type (0x5040): line type 2 is not supported (only 1, solid)"},
+        {19, "t.dl: offset 16: error: line-type (0x5040): line type 2 is not supported (version 1 has only 1, solid)"},
         {20, "t.dl: offset 16: error: logic-op (0x5060): logic op 17 is outside 1..16"},
         {21, "t.dl: offset 16: error: blt (0x5018): 4 bits per pixel (only 8 is defined)"},
         {22, "t.dl: offset 16: error: blt (0x5018): 3x1 pixels need 4 bytes, payload has 2"},
@@ -176,7 +184,7 @@ static void test_dl_decode_malformed_errors_name_offsets(void **state)
         switch (cases[i].kind) {
         case 0: s.n = 10; break;
         case 1: s.b[0] = 'D'; end(&s); break;
-        case 2: s.b[7] = 2; end(&s); break;
+        case 2: s.b[7] = 3; end(&s); break;
         case 3: s.b[9] = 2; end(&s); break;
         case 4: s.b[10] = s.b[11] = 0; end(&s); break;
         case 5: s.b[12] = 0x10; s.b[13] = 0x01; end(&s); break;
@@ -223,7 +231,7 @@ static void test_dl_decode_malformed_errors_name_offsets(void **state)
 static void test_dl_decode_step_limit(void **state)
 {
     bytes s;
-    dl_decode_opts o = {3};
+    dl_decode_opts o = {.max_elements = 3};
     diag err;
     char buf[256];
     (void)state;
@@ -272,7 +280,7 @@ static void test_dl_encode_matches_hand_bytes(void **state)
     unsigned runs[4] = {3, 1, 4, 0};
     const uint8_t text[3] = {0xC1, 0xC2, 0xC3};
     (void)state;
-    header(&s, 640, 480);
+    header2(&s, 640, 480);
     elem(&s, DL_LOAD_COLOURS, 6, 0, 2, 0x0012, 0x3456, 0x00AB, 0xCDEF);
     elem(&s, DL_POLYLINE, 4, -1, 2, 300, -400);
     elem(&s, DL_FILL_RECT, 4, 1, 2, 3, 4);
@@ -359,7 +367,7 @@ static void test_dl_dump_exact_listing(void **state)
     end(&s);
     memset(&k, 0, sizeof k);
     diag_init(&err);
-    assert_int_equal(dl_dump(s.b, s.n, "t.dl", sink_write, &k, &err), 0);
+    assert_int_equal(dl_dump(s.b, s.n, "t.dl", NULL, sink_write, &k, &err), 0);
     assert_string_equal(k.buf,
         "      0     16  ----  header version=1 flags=0x0000 dac=4 size=32x16\n"
         "     16     12  5F00  load-colours start=2 n=1 #A70010\n"
@@ -367,7 +375,7 @@ static void test_dl_dump_exact_listing(void **state)
         "     40     14  500D  text 2,3 n=3 \"ABC\"\n"
         "     54     20  5018  blt 10,2 12,2 bpp=8 op=4 (3x1 pixels)\n"
         "     74     14  5F03  run-row y=7 x0=8 n=1 3x1\n"
-        "     88      6  5061  plane-mask 0xF0\n"
+        "     88      6  5061  plane-mask 0x01F0 (writes planes 0xF0)\n"
         "     94      4  5F02  end\n");
 }
 
@@ -461,18 +469,6 @@ static void test_dl_raster_lines_are_bresenham(void **state)
     }
 }
 
-/* Even-odd at pixel centres, half-open in y, by ray crossing (pnpoly). */
-static int inside(const int *xy, int n, double x, double y)
-{
-    int i, j, c = 0;
-    for (i = 0, j = n - 1; i < n; j = i++) {
-        double xi = xy[2 * i], yi = xy[2 * i + 1], xj = xy[2 * j], yj = xy[2 * j + 1];
-        if ((yi > y) != (yj > y) && x < xi + (y - yi) * (xj - xi) / (yj - yi))
-            c = !c;
-    }
-    return c;
-}
-
 static void test_dl_raster_polygon_even_odd(void **state)
 {
     uint64_t seed = test_seed("test_dl_raster_polygon_even_odd");
@@ -498,7 +494,7 @@ static void test_dl_raster_polygon_even_odd(void **state)
         assert_int_equal(render(&s, &f, &err), 0);
         for (y = 0; y < 48; y++)
             for (x = 0; x < 48; x++)
-                assert_int_equal(px(&f, x, y), inside(xy, n, x, y));
+                assert_int_equal(px(&f, x, y), dl_test_inside(xy, n, x, y));
         dl_frame_free(&f);
     }
 }
@@ -591,7 +587,7 @@ static void test_dl_interp_palette_and_dac(void **state)
 {
     bytes s;
     dl_frame f;
-    dl_render_opts ro = {0, 0};
+    dl_render_opts ro = {.dac = 0};
     diag err;
     (void)state;
     header(&s, 4, 4);
@@ -617,7 +613,7 @@ static void test_dl_interp_work_limit(void **state)
 {
     bytes s;
     dl_frame f;
-    dl_render_opts ro = {0, 1000};
+    dl_render_opts ro = {.work_limit = 1000};
     diag err;
     char buf[256];
     (void)state;
@@ -663,7 +659,7 @@ static void test_dl_oom_sweep(void **state)
         memset(&k, 0, sizeof k);
         diag_init(&err);
         mem_fail_after(n);
-        rc = dl_dump(s.b, s.n, "t.dl", sink_write, &k, &err);
+        rc = dl_dump(s.b, s.n, "t.dl", NULL, sink_write, &k, &err);
         mem_fail_after(-1);
         assert_true(rc == 0 || rc == DIAG_IO);
     }

@@ -15,6 +15,7 @@
 #include <unistd.h>
 #include "image/image_png.h"
 #include "display5080/dl_encode.h"
+#include "display5080/dl_image.h"
 #include "display5080/dl_render.h"
 #include "util/mem.h"
 #include "support.h"
@@ -154,7 +155,7 @@ static void fills_exact(const dl_backend *b, const char *test)
             int x1 = x0 + rnd(&seed, 0, 30), y1 = y0 + rnd(&seed, 0, 30);
             switch (rnd(&seed, 0, 7)) {
             case 0: dl_encode_word(&enc, DL_LOGIC_OP, (unsigned)rnd(&seed, 1, 16)); break;
-            case 1: dl_encode_word(&enc, DL_PLANE_MASK, (unsigned)rnd(&seed, 0, 255)); break;
+            case 1: dl_encode_plane_mask(&enc, (unsigned)rnd(&seed, 0, 255)); break;
             case 2: dl_encode_rect(&enc, DL_SCISSOR, x0, y0, x1, y1); break;
             case 3: dl_encode_word(&enc, DL_INTERIOR_COLOUR, (unsigned)rnd(&seed, 0, 255)); break;
             case 4: dl_encode_rect(&enc, DL_FILL_RECT, x0, y0, x1, y1); break;
@@ -203,115 +204,208 @@ static void test_dl_backend_egl_fills_exact(void **state)
     fills_exact(&dl_backend_egl, "test_dl_backend_egl_fills_exact");
 }
 
-/* ---- lines, circles, polygons: within one pixel ------------------------- */
+/* ---- every shape, text and style: exact --------------------------------- */
 
-/* Pixels set in a but not b with no set pixel of b among their 8 neighbours. */
-static int far_x, far_y;   /* the last such pixel, for the failure message */
-
-static long far_pixels(const dl_frame *a, const dl_frame *b)
+/* Appends one random drawing element of the given kind (and the state it
+ * needs), as a list the driver could send; xor forces xor on elements that
+ * carry their own logic op. */
+static void shape(dl_encoder *enc, uint64_t *seed, int kind, int xor)
 {
-    long n = 0;
-    int x, y, dx, dy;
-    for (y = 0; y < a->height; y++)
-        for (x = 0; x < a->width; x++) {
-            int near = 0;
-            if (!a->px[(size_t)y * a->width + x] || b->px[(size_t)y * a->width + x])
-                continue;
-            for (dy = -1; dy <= 1; dy++)
-                for (dx = -1; dx <= 1; dx++) {
-                    int X = x + dx, Y = y + dy;
-                    if (X >= 0 && Y >= 0 && X < a->width && Y < a->height &&
-                        b->px[(size_t)Y * a->width + X])
-                        near = 1;
-                }
-            if (!near) {
-                n++;
-                far_x = x;
-                far_y = y;
-            }
+    int xy[16], k, n;
+    for (k = 0; k < 16; k++)
+        xy[k] = rnd(seed, -4, 67);
+    switch (kind) {
+    case 0: dl_encode_points(enc, DL_POLYLINE, xy, 5); break;
+    case 1: dl_encode_points(enc, DL_SEGMENTS, xy, 8); break;
+    case 2:
+        dl_encode_circle(enc, rnd(seed, 0, 1) ? DL_FILL_CIRCLE : DL_CIRCLE, xy[0], xy[1],
+                         (unsigned)rnd(seed, 0, 40));
+        break;
+    case 3:
+        dl_encode_word(enc, DL_EDGE_FLAG, (unsigned)rnd(seed, 1, 2));
+        dl_encode_word(enc, DL_EDGE_COLOUR, (unsigned)rnd(seed, 0, 255));
+        dl_encode_simple(enc, DL_BEGIN_POLYGON);
+        dl_encode_points(enc, DL_POLYLINE, xy, (size_t)rnd(seed, 3, 8));
+        dl_encode_simple(enc, DL_END_POLYGON);
+        break;
+    case 4: {   /* text: size, angle, code page */
+        uint8_t str[12];
+        n = rnd(seed, 1, 12);
+        for (k = 0; k < n; k++)
+            str[k] = (uint8_t)rnd(seed, 0x40, 0xF9);
+        dl_encode_word(enc, DL_CHAR_HEIGHT, (unsigned)rnd(seed, 1, 30));
+        dl_encode_begin(enc, DL_CHAR_UP);
+        dl_encode_s16(enc, rnd(seed, -5, 5));
+        dl_encode_s16(enc, rnd(seed, 1, 5) * (rnd(seed, 0, 1) ? 1 : -1));
+        dl_encode_end(enc);
+        dl_encode_word(enc, DL_TEXT_COLOUR, (unsigned)rnd(seed, 0, 255));
+        dl_encode_text(enc, rnd(seed, -10, 40), rnd(seed, -10, 50), str, (size_t)n);
+        break;
+    }
+    case 5: {   /* styled, wide lines */
+        static const unsigned types[3] = {DL_LINE_SOLID, DL_LINE_USER, DL_LINE_USER_CONT};
+        dl_encode_begin(enc, DL_USER_LINE_STYLE);
+        dl_encode_u16(enc, (unsigned)rnd(seed, 0, 0xFFFF));
+        dl_encode_u16(enc, (unsigned)rnd(seed, 0, 3));
+        dl_encode_end(enc);
+        dl_encode_word(enc, DL_LINE_TYPE, types[rnd(seed, 0, 2)]);
+        dl_encode_word(enc, DL_LINE_WIDTH, (unsigned)rnd(seed, 1, 6));
+        dl_encode_points(enc, rnd(seed, 0, 1) ? DL_POLYLINE : DL_SEGMENTS, xy, 4);
+        dl_encode_points(enc, DL_POLYLINE, xy + 8, 3);
+        break;
+    }
+    default: {  /* colour expansion, top row first, packed */
+        int bw = 8 * rnd(seed, 1, 4), bh = rnd(seed, 1, 20);
+        dl_encode_begin(enc, DL_BLT_EXPAND);
+        dl_encode_s16(enc, xy[0]);
+        dl_encode_s16(enc, xy[1]);
+        dl_encode_s16(enc, xy[0] + bw - 1);
+        dl_encode_s16(enc, xy[1] + bh - 1);
+        dl_encode_u16(enc, (unsigned)rnd(seed, 0, 255));
+        k = rnd(seed, 1, 16);
+        dl_encode_u16(enc, xor ? DL_OP_XOR : (unsigned)k);
+        for (k = 0; k < bw / 8 * bh; k++) {
+            uint8_t v = (uint8_t)test_rand(seed);
+            dl_encode_bytes(enc, &v, 1);
         }
-    return n;
+        dl_encode_end(enc);
+        break;
+    }
+    }
 }
 
-static void shapes_near(const dl_backend *b, const char *test)
+#define DL_TEST_KINDS 7
+
+static void shapes_exact(const dl_backend *b, const char *test)
 {
+    static const char *const names[DL_TEST_KINDS] = {
+        "polylines", "segments", "circles", "polygons", "text", "styled lines", "bit blocks"};
     uint64_t seed = test_seed(test);
     int t, kind;
-    long differ[4] = {0, 0, 0, 0}, total[4] = {0, 0, 0, 0};
+    long total[DL_TEST_KINDS] = {0};
     if (!usable(b)) {
         skip();
         return;
     }
-    for (kind = 0; kind < 4; kind++)
+    for (kind = 0; kind < DL_TEST_KINDS; kind++)
         for (t = 0; t < 12; t++) {
             dl_encoder enc;
             uint8_t *buf;
             size_t len, i;
             dl_frame ref, got;
-            int w = 64, h = 64, xy[16], j, twice;
+            int w = 64, h = 64, j, twice;
+            uint64_t s2 = seed;
             for (twice = 0; twice <= 1; twice++) {
-                uint64_t s2 = seed;
                 dl_encode_init(&enc, w, h, 0);
-                if (twice)
+                if (twice) {
                     dl_encode_word(&enc, DL_LOGIC_OP, DL_OP_XOR);
+                } else {
+                    dl_encode_word(&enc, DL_LOGIC_OP, (unsigned)rnd(&seed, 1, 16));
+                    dl_encode_plane_mask(&enc, (unsigned)rnd(&seed, 0, 255));
+                    dl_encode_word(&enc, DL_LINE_COLOUR, (unsigned)rnd(&seed, 0, 255));
+                    dl_encode_word(&enc, DL_INTERIOR_COLOUR, (unsigned)rnd(&seed, 0, 255));
+                }
                 for (j = 0; j <= twice; j++) {
-                    int k;
-                    seed = s2;
-                    for (k = 0; k < 16; k++)
-                        xy[k] = rnd(&seed, -4, 67);
-                    switch (kind) {
-                    case 0: dl_encode_points(&enc, DL_POLYLINE, xy, 5); break;
-                    case 1: dl_encode_points(&enc, DL_SEGMENTS, xy, 8); break;
-                    case 2:
-                        dl_encode_circle(&enc, t & 1 ? DL_FILL_CIRCLE : DL_CIRCLE, xy[0], xy[1],
-                                         (unsigned)rnd(&seed, 0, 40));
-                        break;
-                    default:
-                        dl_encode_simple(&enc, DL_BEGIN_POLYGON);
-                        dl_encode_points(&enc, DL_POLYLINE, xy, (size_t)rnd(&seed, 3, 8));
-                        dl_encode_simple(&enc, DL_END_POLYGON);
-                        break;
-                    }
+                    uint64_t s3 = s2;
+                    shape(&enc, &s3, kind, twice);
+                    if (j == twice)
+                        s2 = s3;
                 }
                 encode(&enc, &buf, &len);
                 draw(&dl_backend_png, buf, len, &ref);
                 draw(b, buf, len, &got);
-                if (twice) {
-                    /* xor twice restores the screen: each pixel written once */
-                    for (i = 0; i < (size_t)w * h; i++)
-                        assert_int_equal(got.px[i], 0);
-                } else {
-                    long fa = far_pixels(&got, &ref), fb = far_pixels(&ref, &got);
-                    if (fa || fb)
-                        fail_msg("%s: kind %d case %d: %ld/%ld pixels more than one pixel away, "
-                                 "e.g. %d,%d (points %d,%d %d,%d %d,%d ...)", b->name, kind, t,
-                                 fa, fb, far_x, far_y, xy[0], xy[1], xy[2], xy[3], xy[4], xy[5]);
-                    for (i = 0; i < (size_t)w * h; i++) {
-                        differ[kind] += got.px[i] != ref.px[i];
+                for (i = 0; i < (size_t)w * h; i++) {
+                    if (got.px[i] != ref.px[i])
+                        fail_msg("%s: %s case %d%s: pixel %zu,%zu is 0x%02X, software raster "
+                                 "0x%02X", b->name, names[kind], t, twice ? " (xor twice)" : "",
+                                 i % (size_t)w, i / (size_t)w, got.px[i], ref.px[i]);
+                    if (twice && got.px[i])   /* xor twice restores the screen: each pixel written once */
+                        fail_msg("%s: %s case %d: pixel %zu,%zu left by xor twice", b->name,
+                                 names[kind], t, i % (size_t)w, i / (size_t)w);
+                    else
                         total[kind] += ref.px[i] != 0;
-                    }
                 }
                 dl_frame_free(&ref);
                 dl_frame_free(&got);
                 mem_free(buf);
             }
+            seed = s2;
         }
-    print_message("%s: pixels differing from the software raster (none by more than one pixel): "
-                  "polylines %ld/%ld, segments %ld/%ld, circles %ld/%ld, polygons %ld/%ld\n",
-                  b->name, differ[0], total[0], differ[1], total[1], differ[2], total[2],
-                  differ[3], total[3]);
+    for (kind = 0; kind < DL_TEST_KINDS; kind++)
+        assert_true(total[kind] > 100);   /* the cases drew something */
+    print_message("%s: identical to the software raster: polylines %ld, segments %ld, circles "
+                  "%ld, polygons %ld, text %ld, styled lines %ld, bit blocks %ld set pixels\n",
+                  b->name, total[0], total[1], total[2], total[3], total[4], total[5], total[6]);
 }
 
-static void test_dl_backend_osmesa_shapes_within_one_pixel(void **state)
+static void test_dl_backend_osmesa_shapes_exact(void **state)
 {
     (void)state;
-    shapes_near(&dl_backend_osmesa, "test_dl_backend_osmesa_shapes_within_one_pixel");
+    shapes_exact(&dl_backend_osmesa, "test_dl_backend_osmesa_shapes_exact");
 }
 
-static void test_dl_backend_egl_shapes_within_one_pixel(void **state)
+static void test_dl_backend_egl_shapes_exact(void **state)
 {
     (void)state;
-    shapes_near(&dl_backend_egl, "test_dl_backend_egl_shapes_within_one_pixel");
+    shapes_exact(&dl_backend_egl, "test_dl_backend_egl_shapes_exact");
+}
+
+/* ---- what maprt writes: an encoded frame with a wireframe ---------------- */
+
+static void written_exact(const dl_backend *b, const char *test)
+{
+    uint64_t seed = test_seed(test);
+    image img;
+    dl_image_polyline pl[3];
+    dl_image_opts o;
+    int xy[3][12], k, j;
+    uint8_t *buf;
+    size_t len, i;
+    dl_frame ref, got;
+    diag err;
+    if (!usable(b)) {
+        skip();
+        return;
+    }
+    diag_init(&err);
+    assert_int_equal(image_alloc(&img, 97, 61, 3, "t", &err), 0);
+    for (i = 0; i < (size_t)97 * 61 * 3; i++)   /* smooth bands and noise: runs and blocks */
+        img.px[i] = (uint8_t)(i % 3 == 0 ? (i / 300) * 20 : test_rand(&seed) % 4 ? 40 : test_rand(&seed));
+    for (k = 0; k < 3; k++) {
+        for (j = 0; j < 12; j++)
+            xy[k][j] = rnd(&seed, -5, 100);
+        pl[k].n = 6;
+        pl[k].xy = xy[k];
+        pl[k].r = (uint8_t)(k * 100);
+        pl[k].g = 255;
+        pl[k].b = (uint8_t)(k * 50);
+    }
+    memset(&o, 0, sizeof o);
+    o.polylines = pl;
+    o.npolylines = 3;
+    for (k = 0; k <= 1; k++) {
+        o.dither = k;
+        assert_int_equal(dl_image_encode(&img, &o, &buf, &len, NULL, &err), 0);
+        draw(&dl_backend_png, buf, len, &ref);
+        draw(b, buf, len, &got);
+        assert_memory_equal(got.px, ref.px, (size_t)97 * 61);
+        dl_frame_free(&ref);
+        dl_frame_free(&got);
+        mem_free(buf);
+    }
+    image_free(&img);
+}
+
+static void test_dl_backend_osmesa_written_exact(void **state)
+{
+    (void)state;
+    written_exact(&dl_backend_osmesa, "test_dl_backend_osmesa_written_exact");
+}
+
+static void test_dl_backend_egl_written_exact(void **state)
+{
+    (void)state;
+    written_exact(&dl_backend_egl, "test_dl_backend_egl_written_exact");
 }
 
 static void test_dl_backend_find(void **state)
@@ -332,8 +426,10 @@ int main(void)
         cmocka_unit_test(test_dl_backend_f_image_egl),
         cmocka_unit_test(test_dl_backend_osmesa_fills_exact),
         cmocka_unit_test(test_dl_backend_egl_fills_exact),
-        cmocka_unit_test(test_dl_backend_osmesa_shapes_within_one_pixel),
-        cmocka_unit_test(test_dl_backend_egl_shapes_within_one_pixel),
+        cmocka_unit_test(test_dl_backend_osmesa_shapes_exact),
+        cmocka_unit_test(test_dl_backend_egl_shapes_exact),
+        cmocka_unit_test(test_dl_backend_osmesa_written_exact),
+        cmocka_unit_test(test_dl_backend_egl_written_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

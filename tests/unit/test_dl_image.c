@@ -175,7 +175,7 @@ static void test_dl_image_rows_pick_smaller_encoding(void **state)
     assert_int_equal(dl_image_encode(&img, &io, &buf, &len, &st, &err), 0);
     assert_int_equal(st.blt_rows, 1);
     assert_int_equal(st.run_rows, 1);
-    assert_int_equal(dl_validate(buf, len, "m", &sum, &err), 0);
+    assert_int_equal(dl_validate(buf, len, "m", NULL, &sum, &err), 0);
     assert_int_equal(sum.count[dl_format_slot(DL_BLT)], 1);
     assert_int_equal(sum.count[dl_format_slot(DL_RUN_ROW)], 1);
     assert_int_equal(sum.count[dl_format_slot(DL_CLEAR)], 1);
@@ -232,7 +232,7 @@ static void test_dl_image_write_file_and_errors(void **state)
     assert_int_equal(dl_image_write(path, &img, NULL, NULL, &err), 0);
     data = test_read_file(path, &len);
     assert_non_null(data);
-    assert_int_equal(dl_validate((uint8_t *)data, len, path, &sum, &err), 0);
+    assert_int_equal(dl_validate((uint8_t *)data, len, path, NULL, &sum, &err), 0);
     assert_int_equal(sum.header.width, 20);
     mem_free(data);
     remove(path);
