@@ -6,6 +6,7 @@
 #include "cli/cli_scene.h"
 #include "image/image_diff.h"
 #include "render/render.h"
+#include "util/exe.h"
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <math.h>
@@ -54,25 +55,6 @@ static void bench_help(FILE *f)
         RENDER_MAX_THREADS, omp_get_max_threads());
 }
 
-/* 1 when an executable gnuplot is on PATH. */
-static int bench_has_gnuplot(void)
-{
-    const char *path = getenv("PATH");
-    char buf[4096];
-    while (path && *path) {
-        const char *end = strchr(path, ':');
-        size_t len = end ? (size_t)(end - path) : strlen(path);
-        if (len && len < sizeof buf - 10) {
-            memcpy(buf, path, len);
-            strcpy(buf + len, "/gnuplot");
-            if (access(buf, X_OK) == 0)
-                return 1;
-        }
-        path = end ? end + 1 : NULL;
-    }
-    return 0;
-}
-
 /* Charts seconds against max difference, one labelled point per run, by
  * piping a script with inline data to gnuplot. The PNG is written under a
  * temporary name and renamed when gnuplot succeeds. CLI_OK or CLI_IO. */
@@ -82,7 +64,7 @@ static int bench_plot(const char *out, const bench_row *rows, int n)
     char *tmp;
     int i, rc;
     size_t len = strlen(out) + 16;
-    if (!bench_has_gnuplot()) {
+    if (!exe_on_path("gnuplot")) {
         fprintf(stderr, "maprt: %s: error: --plot needs gnuplot, which is not installed\n", out);
         return CLI_IO;
     }

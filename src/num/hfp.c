@@ -213,8 +213,9 @@ static uint64_t hfp_div(uint64_t a, uint64_t b, int nd)
 
 /* ---- square root, halve -------------------------------------------------- */
 
-/* floor(sqrt(n)) for n < 2^(2*bits), bits <= 56: two radicand bits per step. */
-static uint64_t hfp_isqrt(hfp_pair n, int bits)
+/* floor(sqrt(n)) for n < 2^(2*bits), bits <= 56: two radicand bits per
+ * step; *rem = n - root^2. */
+static uint64_t hfp_isqrt(hfp_pair n, int bits, uint64_t *rem)
 {
     uint64_t q = 0, r = 0, t;
     int i;
@@ -229,16 +230,21 @@ static uint64_t hfp_isqrt(hfp_pair n, int bits)
             q |= 1;
         }
     }
+    *rem = r;
     return q;
 }
 
-/* Square root truncated: value f * 16^e with e even is sqrt(f) * 16^(e/2);
- * with e odd it is sqrt(f/16) * 16^((e+1)/2). Either fraction lies in
- * [1/16, 1), so the root is normalised and cannot overflow or underflow. */
+/* Square root, rounded to nearest (as Hercules executes SQER/SQDR; see
+ * docs/numerics.md): value f * 16^e with e even is sqrt(f) * 16^(e/2); with
+ * e odd it is sqrt(f/16) * 16^((e+1)/2). Either fraction lies in [1/16, 1),
+ * so the root is normalised and cannot overflow or underflow. The radicand
+ * n is an integer, so the root is never halfway between two fractions: it
+ * rounds up when n - q^2 > q. Rounding up never carries: q + 1 < 2^(4*nd). */
 static uint64_t hfp_sqrt(uint64_t a, int nd)
 {
     hfp_num x = hfp_unpack(a, nd);
     int fb = 4 * nd, e, sh;
+    uint64_t q, rem;
     hfp_pair n;
     if (!x.f)
         return 0;
@@ -251,7 +257,10 @@ static uint64_t hfp_sqrt(uint64_t a, int nd)
     sh = e % 2 ? fb - 4 : fb;
     n.hi = x.f >> (64 - sh);            /* sh is 20 or more */
     n.lo = x.f << sh;
-    return hfp_finish(0, 64 + (e % 2 ? (e + 1) / 2 : e / 2), hfp_isqrt(n, fb), nd);
+    q = hfp_isqrt(n, fb, &rem);
+    if (rem > q)
+        q++;
+    return hfp_finish(0, 64 + (e % 2 ? (e + 1) / 2 : e / 2), q, nd);
 }
 
 /* Halve: the fraction moves right one bit, the bit shifted out kept in the

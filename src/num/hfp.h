@@ -12,7 +12,8 @@
  *   ME             short operands, exact long product (MER/ME)
  *   MD             long product truncated to 14 digits
  *   DE DD          quotient truncated
- *   SQE SQD        square root truncated (ESA/390 square-root facility)
+ *   SQE SQD        square root rounded to nearest (ESA/390 square-root
+ *                  facility, as Hercules executes it; the 3081 had none)
  *   HER HDR        halve: shift right one bit into the guard digit, normalise
  *   CE CD          compare (condition code as -1, 0, +1)
  *   LRER LRDR      load rounded: long to short, extended to long

@@ -27,6 +27,7 @@
 #include "num/hfp.h"
 #include "num/hfp_data.h"
 #include "support.h"
+#include "hfp_test.h"
 
 __extension__ typedef unsigned __int128 ref_u128;
 __extension__ typedef __int128 ref_i128;
@@ -68,11 +69,20 @@ static uint64_t ref_max(int s, int nd)
 
 /* The nd-digit HFP number of the exact nonzero value v (or of any value in
  * [m, m+1) * 2^e, which truncates the same): 16^(X-1) <= |v| < 16^X, the
- * fraction floor(|v| / 16^(X-nd)), characteristic X + 64. */
-static uint64_t ref_trunc_hex(ref_val v, int nd, unsigned long *exc)
+ * fraction floor(|v| / 16^(X-nd)) (or nearest, if round), characteristic
+ * X + 64. */
+static uint64_t ref_hex(ref_val v, int nd, int round, unsigned long *exc)
 {
     int len = ref_bitlen(v.m), x = -ref_floordiv4(-(len + v.e)), sh = 4 * x - 4 * nd - v.e;
     uint64_t f = (uint64_t)(sh >= 0 ? v.m >> sh : v.m << -sh);
+    /* Rounding to nearest: the first bit below the last digit. The callers
+     * that round (square root) never have a value exactly halfway. */
+    if (round && sh > 0 && (uint64_t)(v.m >> (sh - 1)) & 1) {
+        if (++f >> (4 * nd)) {
+            f >>= 4;
+            x++;
+        }
+    }
     if (x + 64 > 127) {
         exc[HFP_EXC_OVERFLOW]++;
         return ref_max(v.s, nd);
@@ -105,7 +115,7 @@ static uint64_t ref_add(uint64_t a, uint64_t b, int negb, int nd, unsigned long 
     r.s = sum < 0;
     r.m = (ref_u128)(sum < 0 ? -sum : sum);
     r.e = ge;
-    return ref_trunc_hex(r, nd, exc);
+    return ref_hex(r, nd, 0, exc);
 }
 
 /* Exact value order; every zero fraction is equal to every other. */
@@ -137,7 +147,7 @@ static uint64_t ref_mul(uint64_t a, uint64_t b, int nd, unsigned long *exc)
     r.s = x.s ^ y.s;
     r.m = x.m * y.m;
     r.e = x.e + y.e;
-    return ref_trunc_hex(r, 14, exc);
+    return ref_hex(r, 14, 0, exc);
 }
 
 /* Divide: floor(mx * 2^64 / my) carries more than enough quotient bits. */
@@ -153,11 +163,12 @@ static uint64_t ref_div(uint64_t a, uint64_t b, int nd, unsigned long *exc)
         return 0;
     r.m = (x.m << 64) / y.m;
     r.e = x.e - y.e - 64;
-    return ref_trunc_hex(r, nd, exc);
+    return ref_hex(r, nd, 0, exc);
 }
 
-/* Square root: the radicand scaled to about 2^124 with an even exponent;
- * a long double root, then made exactly floor(sqrt) with integer squares. */
+/* Square root, rounded to nearest: the radicand scaled to about 2^124 with
+ * an even exponent; a long double root, made exactly floor(sqrt) with
+ * integer squares, then rounded at the last digit. */
 static uint64_t ref_sqrt(uint64_t a, int nd, unsigned long *exc)
 {
     ref_val x = ref_decode(a, nd), r;
@@ -183,7 +194,7 @@ static uint64_t ref_sqrt(uint64_t a, int nd, unsigned long *exc)
     r.s = 0;
     r.m = q;
     r.e = (x.e - 2 * k) / 2;
-    return ref_trunc_hex(r, nd, exc);
+    return ref_hex(r, nd, 1, exc);
 }
 
 static uint64_t ref_halve(uint64_t a, int nd, unsigned long *exc)
@@ -192,7 +203,7 @@ static uint64_t ref_halve(uint64_t a, int nd, unsigned long *exc)
     if (!x.m)
         return 0;
     x.e -= 1;
-    return ref_trunc_hex(x, nd, exc);
+    return ref_hex(x, nd, 0, exc);
 }
 
 /* LRER in long double: |fraction| / 2^32 + 1/2, floored, is exact. */
@@ -241,7 +252,7 @@ static uint64_t ref_from_i32(int32_t i, int nd, unsigned long *exc)
     v.s = i < 0;
     v.m = (ref_u128)(i < 0 ? -(int64_t)i : (int64_t)i);
     v.e = 0;
-    return ref_trunc_hex(v, nd, exc);
+    return ref_hex(v, nd, 0, exc);
 }
 
 static int32_t ref_to_i32(uint64_t a, int nd, unsigned long *exc)
@@ -264,7 +275,7 @@ static uint64_t ref_long_from_double(double d, unsigned long *exc)
     v.s = signbit(d) != 0;
     v.m = (ref_u128)(uint64_t)ldexp(m, 53);
     v.e = k - 53;
-    return ref_trunc_hex(v, 14, exc);
+    return ref_hex(v, 14, 0, exc);
 }
 
 /* Nearest short number, ties away from zero, in long double; values below
@@ -293,71 +304,7 @@ static uint64_t ref_short_from_double(double d, unsigned long *exc)
     return ((uint64_t)s << 31) | ((uint64_t)(x + 64) << 24) | (uint64_t)f;
 }
 
-/* ---- operands ------------------------------------------------------------ */
-
-/* A normalised number (or, rarely, a true zero) with characteristics
- * bunched near 64 and at both ends of the range, and fractions that are
- * random, all ones, or a leading digit with few other bits. */
-static uint64_t gen_image(uint64_t *st, int nd)
-{
-    uint64_t r = test_rand(st), f = test_rand(st), fmask = ((uint64_t)1 << (4 * nd)) - 1;
-    int c, fb = 4 * nd;
-    if ((r & 63) == 0)
-        return 0;
-    switch ((r >> 6) & 7) {
-    case 5: c = (int)((r >> 9) % 128); break;
-    case 6: c = (int)((r >> 9) % 4); break;
-    case 7: c = 124 + (int)((r >> 9) % 4); break;
-    default: c = 60 + (int)((r >> 9) % 9); break;
-    }
-    switch ((r >> 16) & 7) {
-    case 4: f = fmask; break;
-    case 5: f = ((uint64_t)1 << (fb - 4)) | (f & 1); break;
-    case 6: f &= ~(((uint64_t)1 << ((r >> 20) % (uint64_t)fb)) - 1); break;
-    default: break;
-    }
-    f &= fmask;
-    if (!(f >> (fb - 4)))
-        f |= (uint64_t)(1 + (r >> 24) % 15) << (fb - 4);
-    return ((uint64_t)((r >> 30) & 1) << (fb + 7)) | ((uint64_t)c << fb) | f;
-}
-
-/* A second operand: often a near neighbour of the first (cancellation,
- * guard-digit and carry cases), else independent. */
-static uint64_t gen_second(uint64_t *st, uint64_t a, int nd)
-{
-    uint64_t r = test_rand(st), b;
-    int fb = 4 * nd, c;
-    switch (r & 7) {
-    case 0:
-        return a;
-    case 1:
-        return a ^ ((uint64_t)1 << (fb + 7));
-    case 2:
-    case 3:
-        if (!a)
-            return gen_image(st, nd);
-        b = a ^ (test_rand(st) & (((uint64_t)1 << ((r >> 3) % (uint64_t)fb)) - 1));
-        c = (int)(a >> fb & 0x7f) - (int)((r >> 10) % (uint64_t)(nd + 3));
-        if (c < 0)
-            c = 0;
-        b = (b & ~((uint64_t)0x7f << fb)) | ((uint64_t)c << fb);
-        if ((r >> 16) & 1)
-            b ^= (uint64_t)1 << (fb + 7);
-        if (!((b >> (fb - 4)) & 0xf))           /* keep it normalised */
-            b |= (uint64_t)1 << (fb - 4);
-        return b;
-    default:
-        return gen_image(st, nd);
-    }
-}
-
-static long hfp_n(void)
-{
-    const char *s = getenv("MAPRT_HFP_N");
-    long n = s ? strtol(s, NULL, 10) : 100000;
-    return n > 0 ? n : 100000;
-}
+static long hfp_n(void) { return hfp_test_count("MAPRT_HFP_N", 100000); }
 
 /* ---- checks -------------------------------------------------------------- */
 
@@ -382,7 +329,7 @@ static const char *const op_name[2][OP_N] = {
 static int check_one(uint64_t *st, enum op op, int nd, uint64_t *shown_a, uint64_t *shown_b)
 {
     unsigned long before[HFP_EXC_N], want[HFP_EXC_N] = {0};
-    uint64_t a = gen_image(st, nd), b = gen_second(st, a, nd), got = 0, ref = 0;
+    uint64_t a = hfp_test_image(st, nd), b = hfp_test_second(st, a, nd), got = 0, ref = 0;
     int lng = nd == 14;
     double d;
     int32_t i;
@@ -433,7 +380,7 @@ static int check_one(uint64_t *st, enum op op, int nd, uint64_t *shown_a, uint64
             got = hfp_lrdr(a, b);
             ref = ref_lrdr(a, b, want);
         } else {
-            a = gen_image(st, 14);
+            a = hfp_test_image(st, 14);
             *shown_a = a;
             got = hfp_lrer(a);
             ref = ref_lrer(a, want);
@@ -591,9 +538,9 @@ static void test_hfp_vectors(void **state)
             /* sqrt 4: 0.4 x 16^1, odd exponent: sqrt(0.4/16) x 16^1 = 0.2 x
              * 16^1 = 2. */
             EV(hfp_sqe(0x41400000), 0x41200000, -1);
-            /* sqrt 3 = 1.BB67AE|8584CAA73B...: short 411BB67A (rounding would
-             * give ...7B), long 411BB67AE8584CAA. */
-            EV(hfp_sqe(0x41300000), 0x411BB67A, -1);
+            /* sqrt 3 = 1.BB67AE|8584CAA73B...: the short root rounds up at
+             * the 8 (411BB67B), the long one keeps ...CAA at the 7. */
+            EV(hfp_sqe(0x41300000), 0x411BB67B, -1);
             /* sqrt(16^-2): exponent -1, odd: sqrt(0.1/16) x 16^0 = 0.1: 40100000. */
             EV(hfp_sqe(0x3F100000), 0x40100000, -1);
             EV(hfp_sqe(0xC1100000), 0x00000000, HFP_EXC_SQRT);
@@ -713,7 +660,7 @@ static void test_hfp_data_round_trips(void **state)
     for (k = 0; k < n; k++) {
         unsigned char b[8];
         double x = ldexp(test_uniform(&s, -1, 1), (int)(test_rand(&s) % 480) - 240), y;
-        uint64_t img = gen_image(&s, 14), back;
+        uint64_t img = hfp_test_image(&s, 14), back;
         int e, i;
         if (x == 0)
             continue;
