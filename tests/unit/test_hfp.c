@@ -582,6 +582,8 @@ static void test_hfp_vectors(void **state)
             EV(hfp_sqd(0x4130000000000000u), 0x411BB67AE8584CAAu, -1);
             /* 1/3 long: floor(2^56 / 3) = 55555555555555. */
             EV(hfp_dd(0x4110000000000000u, 0x4130000000000000u), 0x4055555555555555u, -1);
+            /* AD carry: 8 + 8, 80000000000000 + 80000000000000 carries: 16. */
+            EV(hfp_ad(0x4180000000000000u, 0x4180000000000000u), 0x4210000000000000u, -1);
             /* AD guard digit: 1 - (1 - 16^-14) = 16^-14: 0x33100000000000. */
             EV(hfp_sd(0x4110000000000000u, 0x40FFFFFFFFFFFFFFu), 0x3310000000000000u, -1);
             /* Integers: X'4E000000 nnnnnnnn' normalised. 1 = 0.1 x 16^1;
