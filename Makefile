@@ -13,7 +13,7 @@ WARN     := -std=c99 -pedantic -Wall -Wextra -Werror
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I. -MMD -MP
 ALL_CFLAGS = $(WARN) $(CFLAGS) -fopenmp $(MODULE_CFLAGS)
 LIBS     = $(MODULE_LIBS) -lpng -lm
-MODES    := q16 q32 f32 f64
+MODES    := q16 q32 f32 f64 hfp32 hfp64
 
 # Directories compiled once per numeric mode (symbols prefixed by mode).
 MODAL_DIRS  := src/geom src/pds src/trace

@@ -13,6 +13,7 @@ int cmd_dl(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_cms(int argc, char **argv);
+int cmd_hfp(int argc, char **argv);
 
 /* Prints "maprt CMD: error: TEXT" and a hint to use --help; returns CLI_USAGE. */
 int cli_usage_error(const char *cmd, const char *fmt, ...)

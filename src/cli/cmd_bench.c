@@ -6,6 +6,7 @@
 #include "cli/cli_scene.h"
 #include "image/image_diff.h"
 #include "render/render.h"
+#include "util/exe.h"
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <math.h>
@@ -15,13 +16,13 @@
 #include <string.h>
 #include <unistd.h>
 
-#define BENCH_MAX_MODES 4
+#define BENCH_MAX_MODES 6
 
 typedef struct bench_row {
     const char *scene, *mode;
     int threads;
-    double seconds, rays_per_s, rays_per_s_core, psnr, pct_over2, maxdiff;
-    unsigned long long rays, overflows;
+    double seconds, rays_per_s, rays_per_s_core, psnr, pct_over2, maxdiff, pct_pid;
+    unsigned long long rays, overflows, hfp_exc;
 } bench_row;
 
 static void bench_help(FILE *f)
@@ -34,12 +35,15 @@ static void bench_help(FILE *f)
         "reflected, refracted), and the error against the same scene rendered in\n"
         "f64, which is the reference (rendered once more per scene for that):\n"
         "PSNR in dB (inf when identical), the %% of pixels where some channel differs\n"
-        "by more than 2/255, the largest channel difference (0..255), and the\n"
-        "fixed-point overflow count.\n"
+        "by more than 2/255, the largest channel difference (0..255), the %% of\n"
+        "pixels whose primitive id differs from f64's, the fixed-point overflow\n"
+        "count, and the HFP exceptions other than significance (exponent overflow\n"
+        "and underflow, divide, square root, conversion; 0 outside hfp32/hfp64).\n"
         "\n"
         "options:\n"
         "  --size WxH        image size, 1..%d each (default: each deck's SIZE)\n"
-        "  --modes LIST      comma-separated modes out of q16,q32,f32,f64 (default: all)\n"
+        "  --modes LIST      comma-separated modes out of q16,q32,f32,f64,hfp32,hfp64\n"
+        "                    (default: all)\n"
         "  --threads N       worker threads, 1..%d (default: OpenMP's count, %d here)\n"
         "  --csv OUT.csv     also write the rows as CSV with a header line\n"
         "  --plot OUT.png    chart seconds against max difference with gnuplot\n"
@@ -51,25 +55,6 @@ static void bench_help(FILE *f)
         SCENE_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads());
 }
 
-/* 1 when an executable gnuplot is on PATH. */
-static int bench_has_gnuplot(void)
-{
-    const char *path = getenv("PATH");
-    char buf[4096];
-    while (path && *path) {
-        const char *end = strchr(path, ':');
-        size_t len = end ? (size_t)(end - path) : strlen(path);
-        if (len && len < sizeof buf - 10) {
-            memcpy(buf, path, len);
-            strcpy(buf + len, "/gnuplot");
-            if (access(buf, X_OK) == 0)
-                return 1;
-        }
-        path = end ? end + 1 : NULL;
-    }
-    return 0;
-}
-
 /* Charts seconds against max difference, one labelled point per run, by
  * piping a script with inline data to gnuplot. The PNG is written under a
  * temporary name and renamed when gnuplot succeeds. CLI_OK or CLI_IO. */
@@ -79,7 +64,7 @@ static int bench_plot(const char *out, const bench_row *rows, int n)
     char *tmp;
     int i, rc;
     size_t len = strlen(out) + 16;
-    if (!bench_has_gnuplot()) {
+    if (!exe_on_path("gnuplot")) {
         fprintf(stderr, "maprt: %s: error: --plot needs gnuplot, which is not installed\n", out);
         return CLI_IO;
     }
@@ -120,13 +105,14 @@ static int bench_csv(const char *path, const bench_row *rows, int n)
     if (outfile_open(&of, path, &err))
         goto fail;
     snprintf(line, sizeof line, "scene,mode,threads,seconds,rays,rays_per_s,rays_per_s_core,"
-                                "psnr_db,pct_pixels_over_2,max_abs_diff,fx_overflows\n");
+                                "psnr_db,pct_pixels_over_2,max_abs_diff,fx_overflows,"
+                                "pct_pid_diff,hfp_exceptions\n");
     outfile_write(&of, line, strlen(line), &err);
     for (i = 0; i < n; i++) {
-        snprintf(line, sizeof line, "%s,%s,%d,%.6f,%llu,%.0f,%.0f,%.3f,%.4f,%.0f,%llu\n",
+        snprintf(line, sizeof line, "%s,%s,%d,%.6f,%llu,%.0f,%.0f,%.3f,%.4f,%.0f,%llu,%.4f,%llu\n",
                  rows[i].scene, rows[i].mode, rows[i].threads, rows[i].seconds, rows[i].rays,
                  rows[i].rays_per_s, rows[i].rays_per_s_core, rows[i].psnr, rows[i].pct_over2,
-                 rows[i].maxdiff, rows[i].overflows);
+                 rows[i].maxdiff, rows[i].overflows, rows[i].pct_pid, rows[i].hfp_exc);
         outfile_write(&of, line, strlen(line), &err);
     }
     if (outfile_commit(&of, &err))
@@ -136,6 +122,15 @@ fail:
     outfile_abort(&of);
     diag_print(stderr, &err);
     return CLI_IO;
+}
+
+/* The fraction of pixels whose primitive id differs between a and b (same size). */
+static double bench_pid_diff(const render_fb *a, const render_fb *b)
+{
+    size_t i, n = (size_t)a->img.width * (size_t)a->img.height, d = 0;
+    for (i = 0; i < n; i++)
+        d += a->pid[i] != b->pid[i];
+    return n ? (double)d / (double)n : 0;
 }
 
 /* Parses "q16,f64" into ops tables; 0 or CLI_USAGE. */
@@ -150,7 +145,7 @@ static int bench_modes(const char *s, const render_ops **ops, int *n)
     for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
         const render_ops *o = render_ops_find(tok);
         if (!o)
-            return cli_usage_error("bench", "--modes: '%s' is not q16, q32, f32 or f64", tok);
+            return cli_usage_error("bench", "--modes: '%s' is not q16, q32, f32, f64, hfp32 or hfp64", tok);
         for (k = 0; k < *n; k++)
             if (ops[k] == o)
                 return cli_usage_error("bench", "--modes: '%s' given twice", tok);
@@ -167,7 +162,7 @@ int cmd_bench(int argc, char **argv)
     const char *csv = NULL, *plot = NULL, *v, **scenes;
     bench_row *rows;
     render_opts o;
-    int nmodes = 0, nscenes = 0, nrows = 0, i, s, m, status = CLI_OK;
+    int nmodes = 0, nscenes = 0, nrows = 0, i, s, m, k, status = CLI_OK;
     long n;
 
     if (cli_wants_help(argc, argv)) {
@@ -179,7 +174,7 @@ int cmd_bench(int argc, char **argv)
     o.threads = omp_get_max_threads();
     if (o.threads > RENDER_MAX_THREADS)
         o.threads = RENDER_MAX_THREADS;
-    bench_modes("q16,q32,f32,f64", modes, &nmodes);
+    bench_modes("q16,q32,f32,f64,hfp32,hfp64", modes, &nmodes);
     scenes = mem_alloc(sizeof *scenes * (size_t)argc);
     rows = mem_alloc(sizeof *rows * (size_t)argc * BENCH_MAX_MODES);
     if (!scenes || !rows) {
@@ -217,8 +212,8 @@ int cmd_bench(int argc, char **argv)
         cli_usage_error("bench", "no SCENE given");
         goto usage;
     }
-    printf("%-28s %-4s %3s %9s %12s %12s %8s %8s %4s %9s\n", "scene", "mode", "thr", "seconds",
-           "rays/s", "rays/s/core", "psnr_db", "%>2/255", "max", "overflows");
+    printf("%-28s %-5s %3s %9s %12s %12s %8s %8s %4s %8s %9s %7s\n", "scene", "mode", "thr", "seconds",
+           "rays/s", "rays/s/core", "psnr_db", "%>2/255", "max", "%pid", "overflows", "hfp_exc");
     for (s = 0; s < nscenes && status == CLI_OK; s++) {
         scene *sc = NULL;
         render_fb ref, fb;
@@ -251,14 +246,19 @@ int cmd_bench(int argc, char **argv)
             r->rays_per_s = r->seconds > 0 ? (double)r->rays / r->seconds : 0;
             r->rays_per_s_core = r->rays_per_s / o.threads;
             r->overflows = st.fx_overflows;
+            r->hfp_exc = 0;
+            for (k = 0; k < HFP_EXC_N; k++)
+                if (k != HFP_EXC_SIGNIFICANCE)
+                    r->hfp_exc += st.hfp_exc[k];
+            r->pct_pid = 100.0 * bench_pid_diff(&fb, &ref);
             image_diff(&fb.img, &ref.img, 2, &d);
             r->psnr = d.psnr;
             r->pct_over2 = 100.0 * d.over;
             r->maxdiff = d.max;
             render_fb_free(&fb);
-            printf("%-28s %-4s %3d %9.4f %12.0f %12.0f %8.2f %8.4f %4.0f %9llu\n", r->scene, r->mode,
-                   r->threads, r->seconds, r->rays_per_s, r->rays_per_s_core, r->psnr, r->pct_over2,
-                   r->maxdiff, r->overflows);
+            printf("%-28s %-5s %3d %9.4f %12.0f %12.0f %8.2f %8.4f %4.0f %8.4f %9llu %7llu\n", r->scene,
+                   r->mode, r->threads, r->seconds, r->rays_per_s, r->rays_per_s_core, r->psnr,
+                   r->pct_over2, r->maxdiff, r->pct_pid, r->overflows, r->hfp_exc);
             fflush(stdout);
             nrows++;
         }

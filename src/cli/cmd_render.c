@@ -29,7 +29,8 @@ static void render_help(FILE *f)
         "  --dither              Floyd-Steinberg dithering when quantising (--dl)\n"
         "  --wireframe           add the outlines of the primitives as seen (--dl)\n"
         "  --numeric MODE        arithmetic of the geometry: q16 (Q16.16 fixed point, the\n"
-        "                        default), q32 (Q32.32), f32 or f64 (IEEE binary32/64)\n"
+        "                        default), q32 (Q32.32), f32 or f64 (IEEE binary32/64),\n"
+        "                        hfp32 or hfp64 (System/370 short/long hexadecimal)\n"
         "  --size WxH            image size in pixels, 1..%d each (default: the\n"
         "                        deck's SIZE; at most %d with --dl)\n"
         "  --threads N           worker threads, 1..%d (default: OpenMP's count, %d here)\n"
@@ -191,7 +192,7 @@ int cmd_render(int argc, char **argv)
     if (!status && !out_png && !out_dl)
         status = cli_usage_error("render", "no output: give -o OUT.png and/or --dl OUT.dl5080");
     if (!status && !(ops = render_ops_find(mode)))
-        status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32 or f64", mode);
+        status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32, f64, hfp32 or hfp64", mode);
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
         status = cli_usage_error("render", "--dac, --dither and --wireframe need --dl");
     if (status) {

@@ -15,6 +15,7 @@ static const cli_command commands[] = {
     {"compare", cmd_compare, "measure a render against a reference image (PSNR, SSIM)"},
     {"bench",   cmd_bench,   "benchmark run time against error across numeric modes"},
     {"cms",     cmd_cms,     "VM/CMS files: import, list, type, export"},
+    {"hfp",     cmd_hfp,     "System/370 hexadecimal floating-point numbers to and from IEEE"},
 };
 
 static void usage(FILE *f)

@@ -3,14 +3,16 @@
  * Files in the modal directories (src/geom, src/pds, src/trace) are compiled
  * once per numeric mode with -DNUM_MODE=<mode> -DNUM_MODE_<mode>; this header
  * then provides, for that mode:
- *   num                          the scalar type (arithmetic: <, ==, etc. work)
+ *   num                          the scalar type: <, == etc. compare values;
+ *                                arithmetic goes through num_* only (in the
+ *                                hfp modes a num is an order key, not a value)
  *   NUM_ZERO NUM_ONE NUM_HALF NUM_MAX NUM_ULP   constants (NUM_ULP: smallest
  *                                positive step; 1/65536 in q16)
  *   num_add sub neg abs mul div sqrt min max   arithmetic (fixed point
  *                                saturates and counts overflows, see fx.h)
  *   num_from_d(double) num_to_d(num) num_from_i(int)   conversions
- *   NUM_IS_FIXED                 1 for q16/q32, 0 for f32/f64
- *   NUM_NAME                     "q16" | "q32" | "f32" | "f64"
+ *   NUM_IS_FIXED                 1 for q16/q32, 0 for f32/f64/hfp32/hfp64
+ *   NUM_NAME                     "q16" | "q32" | "f32" | "f64" | "hfp32" | "hfp64"
  *   NS(name)                     mode-prefixed symbol: NS(trace) -> q16_trace
  * Mode-independent code reaches modal code only through per-mode ops tables
  * (e.g. q16_render_ops), never by including this header. */
@@ -29,8 +31,12 @@
 #include "num/num_f32.h"
 #elif defined(NUM_MODE_f64)
 #include "num/num_f64.h"
+#elif defined(NUM_MODE_hfp32)
+#include "num/num_hfp32.h"
+#elif defined(NUM_MODE_hfp64)
+#include "num/num_hfp64.h"
 #else
-#error "num.h: compile with -DNUM_MODE=<q16|q32|f32|f64> -DNUM_MODE_<mode>"
+#error "num.h: compile with -DNUM_MODE=<q16|q32|f32|f64|hfp32|hfp64> -DNUM_MODE_<mode>"
 #endif
 
 static inline num num_min(num a, num b) { return a < b ? a : b; }

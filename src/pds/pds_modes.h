@@ -10,7 +10,7 @@
 #include "util/diag.h"
 
 typedef struct pds_mode_ops {
-    const char *mode;                         /* "q16" "q32" "f32" "f64" */
+    const char *mode;                         /* "q16" "q32" "f32" "f64" "hfp32" "hfp64" */
     int (*compile)(const pds_def *def, const char *file, void **out, diag *err);
     void (*free)(void *pds);
     int32_t (*locate)(const void *pds, double u, double v);
@@ -22,5 +22,6 @@ typedef struct pds_mode_ops {
     size_t (*locate_many)(const void *pds, const double *uv, size_t n, unsigned reps, int32_t *out);
 } pds_mode_ops;
 
-extern const pds_mode_ops q16_pds_mode_ops, q32_pds_mode_ops, f32_pds_mode_ops, f64_pds_mode_ops;
+extern const pds_mode_ops q16_pds_mode_ops, q32_pds_mode_ops, f32_pds_mode_ops, f64_pds_mode_ops,
+    hfp32_pds_mode_ops, hfp64_pds_mode_ops;
 #endif

@@ -163,7 +163,7 @@ static int pds_mosaic_in_band(query *q, size_t i)
     dd = pds_wide_sq2(num_sub(s->u, q->u), num_sub(s->v, q->v));
     if (dd > q->reach2)
         return 0;
-    return pds_wide_band(dd - q->best, q->m->mortar, pds_wide_sq2(num_sub(s->u, b->u), num_sub(s->v, b->v)));
+    return pds_wide_band(pds_wide_sub(dd, q->best), q->m->mortar, pds_wide_sq2(num_sub(s->u, b->u), num_sub(s->v, b->v)));
 }
 
 static int pds_mosaic_band(query *q, size_t lo, size_t hi, int depth)

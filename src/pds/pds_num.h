@@ -28,7 +28,7 @@ static inline long pds_num_cell(num x, long n)
 #elif defined(NUM_MODE_q32)
     c = (long)(((uint64_t)x * (uint64_t)n) >> 32);   /* x < 2^32, n <= 2^15 */
 #else
-    c = (long)((double)x * (double)n);               /* exact for f32; f64 rounds once */
+    c = (long)(num_to_d(x) * (double)n);             /* exact for f32, hfp32; f64, hfp64 round */
 #endif
     return c >= n ? n - 1 : c;
 }
@@ -45,11 +45,11 @@ static inline long pds_num_floordiv(num x, num w, num *rem)
     *rem = r;
     return (long)q;
 #else
-    num q = (num)floor((double)x / (double)w), r = x - q * w;
-    if (r < 0) { r += w; q -= 1; }
-    if (r >= w) { r -= w; q += 1; }
+    num q = num_from_d(floor(num_to_d(x) / num_to_d(w))), r = num_sub(x, num_mul(q, w));
+    if (r < NUM_ZERO) { r = num_add(r, w); q = num_sub(q, NUM_ONE); }
+    if (r >= w) { r = num_sub(r, w); q = num_add(q, NUM_ONE); }
     *rem = r;
-    return (long)q;
+    return (long)num_to_d(q);
 #endif
 }
 
@@ -93,10 +93,10 @@ static inline int pds_num_orient(num ax, num ay, num bx, num by, num px, num py)
 #else
     /* Kahan's a*b - c*d with fused multiply-adds has relative error below
      * 2 units of rounding, so its sign is the sign of the exact value of the
-     * operands. f32: the differences are formed exactly in double; f64:
-     * they are the rounded double differences. */
-    double a = (double)bx - (double)ax, b = (double)py - (double)ay;
-    double c = (double)by - (double)ay, d = (double)px - (double)ax;
+     * operands. f32, hfp32: the differences are formed exactly in double;
+     * f64, hfp64: they are the rounded double differences. */
+    double a = num_to_d(bx) - num_to_d(ax), b = num_to_d(py) - num_to_d(ay);
+    double c = num_to_d(by) - num_to_d(ay), d = num_to_d(px) - num_to_d(ax);
     double w = c * d, e = fma(-c, d, w), x = fma(a, b, -w) + e;
     return (x > 0) - (x < 0);
 #endif
@@ -106,11 +106,13 @@ static inline int pds_num_orient(num ax, num ay, num bx, num by, num px, num py)
 typedef int64_t pds_wide;
 static inline pds_wide pds_wide_sq2(num dx, num dy) { return (int64_t)dx * dx + (int64_t)dy * dy; }
 static inline pds_wide pds_wide_from_d(double x) { return (int64_t)floor(x * 4294967296.0 + 0.5); }
+static inline pds_wide pds_wide_sub(pds_wide a, pds_wide b) { return a - b; }
 #define PDS_WIDE_MAX INT64_MAX
 #else
 typedef num pds_wide;
 static inline pds_wide pds_wide_sq2(num dx, num dy) { return num_add(num_mul(dx, dx), num_mul(dy, dy)); }
 static inline pds_wide pds_wide_from_d(double x) { return num_from_d(x); }
+static inline pds_wide pds_wide_sub(pds_wide a, pds_wide b) { return num_sub(a, b); }
 #define PDS_WIDE_MAX NUM_MAX
 #endif
 
@@ -141,7 +143,7 @@ static inline pds_wide pds_wide_reach2(pds_wide best, num mortar, num l1)
 #if defined(NUM_MODE_q16)
     return best + 2 * (int64_t)mortar * l1 + (int64_t)mortar * mortar;
 #else
-    num r = num_add(num_add(num_sqrt(best), mortar), 4 * NUM_ULP);
+    num r = num_add(num_add(num_sqrt(best), mortar), num_mul(num_from_i(4), NUM_ULP));
     (void)l1;
     return num_mul(r, r);
 #endif

@@ -150,7 +150,7 @@ static int32_t pds_tiling_locate(const void *impl, num u, num v, unsigned long *
             for (a = 0; a < 3; a++)
                 if (a != best && dd[a] < dd[second])
                     second = a;
-            if (t->hm > 0 && dd[second] - dd[best] <= t->mw)
+            if (t->hm > 0 && pds_wide_sub(dd[second], dd[best]) <= t->mw)
                 return t->mortar_attr;
             /* Lattice point (ci, cj) in axial form: row cj, column ci. */
             return pds_tiling_cell_attr(t, ci[best], cj[best], 0);

@@ -1,14 +1,15 @@
 /* render — ops lookup, tiles over OpenMP threads, counter sums (see render.h). */
 #include "render/render.h"
 #include "num/fx.h"
+#include "num/hfp.h"
 #include "util/mem.h"
 #include <omp.h>
 #include <string.h>
 
 const render_ops *render_ops_find(const char *name)
 {
-    static const render_ops *const all[] = {&q16_render_ops, &q32_render_ops,
-                                            &f32_render_ops, &f64_render_ops};
+    static const render_ops *const all[] = {&q16_render_ops, &q32_render_ops, &f32_render_ops,
+                                            &f64_render_ops, &hfp32_render_ops, &hfp64_render_ops};
     size_t i;
     for (i = 0; name && i < sizeof all / sizeof all[0]; i++)
         if (!strcmp(all[i]->name, name))
@@ -23,14 +24,27 @@ void render_fb_free(render_fb *fb)
     fb->pid = NULL;
 }
 
+/* Adds this thread's fixed-point overflows and HFP exceptions since the
+ * snapshot fx0, hfp0 to st. */
+static void render_stats_numeric(render_stats *st, unsigned long fx0, const unsigned long *hfp0)
+{
+    int k;
+    st->fx_overflows += fx_overflows - fx0;
+    for (k = 0; k < HFP_EXC_N; k++)
+        st->hfp_exc[k] += hfp_exc[k] - hfp0[k];
+}
+
 static void render_stats_add(render_stats *a, const render_stats *b)
 {
+    int k;
     a->rays_primary += b->rays_primary;
     a->rays_shadow += b->rays_shadow;
     a->rays_reflected += b->rays_reflected;
     a->rays_refracted += b->rays_refracted;
     a->pds_lookups += b->pds_lookups;
     a->fx_overflows += b->fx_overflows;
+    for (k = 0; k < HFP_EXC_N; k++)
+        a->hfp_exc[k] += b->hfp_exc[k];
     a->prim_tests += b->prim_tests;
     a->bound_tests += b->bound_tests;
     a->csg_pruned += b->csg_pruned;
@@ -39,12 +53,15 @@ static void render_stats_add(render_stats *a, const render_stats *b)
 
 void render_stats_print(FILE *f, const render_stats *st)
 {
+    int k;
     fprintf(f, "rays.primary=%llu\nrays.shadow=%llu\nrays.reflected=%llu\nrays.refracted=%llu\n"
                "pds.lookups=%llu\nfx.overflows=%llu\ntests.prim=%llu\ntests.bound=%llu\n"
                "csg.pruned=%llu\ntime.compile_s=%.6f\ntime.render_s=%.6f\n",
             st->rays_primary, st->rays_shadow, st->rays_reflected, st->rays_refracted,
             st->pds_lookups, st->fx_overflows, st->prim_tests, st->bound_tests,
             st->csg_pruned, st->time_compile_s, st->time_render_s);
+    for (k = 0; k < HFP_EXC_N; k++)
+        fprintf(f, "hfp.%s=%llu\n", hfp_exc_name[k], st->hfp_exc[k]);
     if (st->arena_full)
         fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
 }
@@ -56,7 +73,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     render_fb out;
     render_stats total;
     void *cs = NULL, **tcs = NULL;
-    unsigned long ov0;
+    unsigned long ov0, hfp0[HFP_EXC_N];
     double t0;
     long ntx, nty, ntiles, done = 0;
     int i, status = 0, nthreads;
@@ -75,6 +92,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     nthreads = opt.threads;
 
     ov0 = fx_overflows;
+    memcpy(hfp0, hfp_exc, sizeof hfp0);
     t0 = omp_get_wtime();
     if ((status = ops->compile(sc, &cs, err)) != 0)
         return status;
@@ -92,7 +110,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
             status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for thread contexts");
             goto done;
         }
-    total.fx_overflows += fx_overflows - ov0;
+    render_stats_numeric(&total, ov0, hfp0);
 
     ntx = (opt.width + RENDER_TILE - 1) / RENDER_TILE;
     nty = (opt.height + RENDER_TILE - 1) / RENDER_TILE;
@@ -101,10 +119,11 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
 #pragma omp parallel num_threads(nthreads)
     {
         render_stats mine;
-        unsigned long before = fx_overflows;
+        unsigned long before = fx_overflows, hbefore[HFP_EXC_N];
         int me = omp_get_thread_num();
         long k;
         memset(&mine, 0, sizeof mine);
+        memcpy(hbefore, hfp_exc, sizeof hbefore);
 #pragma omp for schedule(dynamic, 1)
         for (k = 0; k < ntiles; k++) {
             int x0 = (int)(k % ntx) * RENDER_TILE, y0 = (int)(k / ntx) * RENDER_TILE;
@@ -119,7 +138,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
                 }
             }
         }
-        mine.fx_overflows += fx_overflows - before;
+        render_stats_numeric(&mine, before, hbefore);
 #pragma omp critical(render_sum)
         render_stats_add(&total, &mine);
     }

@@ -9,6 +9,7 @@
 #include "model/scene.h"
 #include "image/image.h"
 #include "util/diag.h"
+#include "num/hfp.h"
 
 #define RENDER_TILE 32        /* tile side in pixels */
 #define RENDER_MAX_AA 16      /* samples per pixel side */
@@ -17,6 +18,7 @@
 typedef struct render_stats {
     unsigned long long rays_primary, rays_shadow, rays_reflected, rays_refracted;
     unsigned long long pds_lookups, fx_overflows;
+    unsigned long long hfp_exc[HFP_EXC_N];   /* hfp modes: exceptions by kind (hfp.h) */
     unsigned long long prim_tests, bound_tests, csg_pruned, arena_full;
     double time_compile_s, time_render_s;
 } render_stats;
@@ -48,9 +50,11 @@ typedef struct render_ops {
                         int x0, int y0, int x1, int y1, render_fb *fb, render_stats *st);
 } render_ops;
 
-extern const render_ops q16_render_ops, q32_render_ops, f32_render_ops, f64_render_ops;
+extern const render_ops q16_render_ops, q32_render_ops, f32_render_ops, f64_render_ops,
+    hfp32_render_ops, hfp64_render_ops;
 
-/* The ops table for "q16", "q32", "f32" or "f64"; NULL for anything else. */
+/* The ops table for "q16", "q32", "f32", "f64", "hfp32" or "hfp64"; NULL for
+ * anything else. */
 const render_ops *render_ops_find(const char *name);
 
 /* Renders sc in mode ops into *fb (allocated here; release with

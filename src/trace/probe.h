@@ -35,5 +35,6 @@ typedef struct probe_ops {
     int (*refract)(const double *d, const double *n, double eta, double *t);
 } probe_ops;
 
-extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops;
+extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops,
+    hfp32_probe_ops, hfp64_probe_ops;
 #endif

@@ -19,7 +19,7 @@ done
 ls "$tmp" | grep -q tmp- && fail "temporary file left behind"
 
 $MAPRT render scenes/fig1.scene -o "$tmp/x.png" --numeric q8 2> "$tmp/err"; [ $? -eq 2 ] || fail "bad mode should exit 2"
-grep -q "'q8' is not q16, q32, f32 or f64" "$tmp/err" || fail "bad mode message"
+grep -q "'q8' is not q16, q32, f32, f64, hfp32 or hfp64" "$tmp/err" || fail "bad mode message"
 $MAPRT render scenes/fig1.scene 2> /dev/null; [ $? -eq 2 ] || fail "no output should exit 2"
 $MAPRT render -o "$tmp/x.png" 2> /dev/null; [ $? -eq 2 ] || fail "no scene should exit 2"
 $MAPRT render scenes/fig1.scene -o "$tmp/x.png" --aa 0 2> /dev/null; [ $? -eq 2 ] || fail "--aa 0 should exit 2"

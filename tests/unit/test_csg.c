@@ -46,7 +46,7 @@ static void test_csg_identities(void **state)
     uint64_t s = test_seed("test_csg_identities");
     int m, k, n, j;
     (void)state;
-    for (m = 0; m < 4; m++)
+    for (m = 0; m < TT_MODES; m++)
         for (k = 0; k < 4; k++)
             for (n = 0; n < 4; n++) {
                 char tail[256], tail2[256], a[64], b[64];
@@ -214,7 +214,7 @@ static void test_csg_random_trees_match_classification(void **state)
                 }
         }
     }
-    for (m = 0; m < 4; m++) {
+    for (m = 0; m < TT_MODES; m++) {
         const probe_ops *ops = tt_mode(m);
         long compared = 0, bad = 0;
         for (n = 0; n < CSG_TREES; n++) {
@@ -341,7 +341,7 @@ static void test_csg_coincident_oblique_rays(void **state)
     assert_non_null(sc);
     plate = csg_find_prim(sc, "PLATE");
     plug = csg_find_prim(sc, "PLUG");
-    for (m = 0; m < 4; m++) {
+    for (m = 0; m < TT_MODES; m++) {
         const probe_ops *ops = tt_mode(m);
         void *cs;
         diag err;

@@ -23,12 +23,14 @@
 #define M_PI 3.14159265358979323846
 
 static const pds_mode_ops *const modes[] = {
-    &q16_pds_mode_ops, &q32_pds_mode_ops, &f32_pds_mode_ops, &f64_pds_mode_ops
+    &q16_pds_mode_ops, &q32_pds_mode_ops, &f32_pds_mode_ops, &f64_pds_mode_ops,
+    &hfp32_pds_mode_ops, &hfp64_pds_mode_ops
 };
 /* Boundary skip distance per mode (same order): a few units of rounding of
- * coordinates near 1 and of the products the lookups form. */
-static const double mode_eps[] = { 4e-4, 1e-7, 3e-5, 1e-9 };
-#define NMODES 4
+ * coordinates near 1 and of the products the lookups form (hfp32's last
+ * digit near 1 is 16 times f32's). */
+static const double mode_eps[] = { 4e-4, 1e-7, 3e-5, 1e-9, 5e-4, 1e-9 };
+#define NMODES 6
 
 static const scene_loc L0 = { 0, 0 };
 static scene_loc at(long line, long col) { scene_loc l; l.line = line; l.col = col; return l; }

@@ -17,7 +17,7 @@
 static double prim_tol(const char *mode)
 {
     if (!strcmp(mode, "q16")) return 1e-3;
-    if (!strcmp(mode, "f32")) return 5e-4;
+    if (!strcmp(mode, "f32") || !strcmp(mode, "hfp32")) return 5e-4;
     return 1e-6;
 }
 
@@ -99,7 +99,7 @@ static void test_prim_properties_all_modes(void **state)
     uint64_t s = test_seed("test_prim_properties_all_modes");
     int m, kind, n;
     (void)state;
-    for (m = 0; m < 4; m++)
+    for (m = 0; m < TT_MODES; m++)
         for (kind = 0; kind < PRIM_KIND_COUNT; kind++) {
             prim_fail f;
             unsigned long ov0 = fx_overflows;
@@ -209,7 +209,7 @@ static void test_prim_stress_grazing(void **state)
     size_t i;
     int m;
     (void)state;
-    for (m = 0; m < 4; m++)
+    for (m = 0; m < TT_MODES; m++)
         for (i = 0; i < sizeof c / sizeof c[0]; i++) {
             char deck[512];
             scene *sc;

@@ -12,10 +12,12 @@
 #include "util/recsrc.h"
 #include "support.h"
 
+/* The numeric modes the property tests run in, by index 0..TT_MODES-1. */
+#define TT_MODES 6
 static inline const probe_ops *tt_mode(int i)
 {
-    static const probe_ops *const all[4] = {&q16_probe_ops, &q32_probe_ops,
-                                            &f32_probe_ops, &f64_probe_ops};
+    static const probe_ops *const all[TT_MODES] = {&q16_probe_ops, &q32_probe_ops, &f32_probe_ops,
+                                                   &f64_probe_ops, &hfp32_probe_ops, &hfp64_probe_ops};
     return all[i];
 }
 
