@@ -1,5 +1,6 @@
 /* main — maprt's entry point: dispatches git-style subcommands. */
 #include "cli/cli.h"
+#include "cli/cli_mpi.h"
 #include <string.h>
 
 typedef struct cli_command {
@@ -15,6 +16,7 @@ static const cli_command commands[] = {
     {"compare", cmd_compare, "measure a render against a reference image (PSNR, SSIM)"},
     {"bench",   cmd_bench,   "benchmark run time against error across numeric modes"},
     {"cms",     cmd_cms,     "VM/CMS files: import, list, type, export"},
+    {"merge",   cmd_merge,   "assemble region files of 'render --region' into the whole image"},
 };
 
 static void usage(FILE *f)
@@ -30,7 +32,8 @@ static void usage(FILE *f)
                "exit status: 0 ok, 1 bad input, 2 usage, 3 I/O or internal failure\n");
 }
 
-int main(int argc, char **argv)
+/* The subcommand's exit status; under mpirun every rank runs it. */
+static int run(int argc, char **argv)
 {
     size_t i;
     if (argc < 2) {
@@ -47,4 +50,14 @@ int main(int argc, char **argv)
     fprintf(stderr, "maprt: error: unknown command '%s'\n", argv[1]);
     usage(stderr);
     return CLI_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+    int rc;
+    if (cli_mpi_start(&argc, &argv))
+        return CLI_IO;
+    rc = run(argc, argv);
+    cli_mpi_stop();
+    return rc;
 }
