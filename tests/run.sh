@@ -2,7 +2,7 @@
 # Runs every cmocka binary in BUILD/tests and every CLI script in tests/cli, and
 # ends with the "N passed, N failed" line. Exit status 1 if anything failed.
 build=${1:-build}
-pass=0; fail=0; failed_names=""
+pass=0; fail=0; skip=0; failed_names=""
 errf=$(mktemp) || exit 1
 trap 'rm -f "$errf"' EXIT
 for t in "$build"/tests/test_*; do
@@ -23,8 +23,11 @@ for t in "$build"/tests/test_*; do
 done
 for s in tests/cli/*.sh; do
   [ -f "$s" ] || continue
-  if out=$(MAPRT="$build/maprt" sh "$s" 2>&1); then
+  out=$(MAPRT="$build/maprt" sh "$s" 2>&1); rc=$?
+  if [ $rc -eq 0 ]; then
     pass=$((pass + 1)); st=ok
+  elif [ $rc -eq 77 ]; then           # skipped: the script says what is missing
+    skip=$((skip + 1)); st="skipped ($(printf '%s\n' "$out" | tail -n 1))"
   else
     fail=$((fail + 1)); st=FAILED; failed_names="$failed_names $(basename "$s")"
     printf '%s\n' "$out" >&2
@@ -32,5 +35,5 @@ for s in tests/cli/*.sh; do
   printf '%-40s %s\n' "cli/$(basename "$s")" "$st"
 done
 [ -n "$failed_names" ] && echo "failed:$failed_names"
-echo "$pass passed, $fail failed"
+echo "$pass passed, $fail failed, $skip skipped"
 [ "$fail" -eq 0 ]

@@ -73,6 +73,30 @@ int cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, i
     return 0;
 }
 
+int cli_region(const char *cmd, const char *opt, const char *s, int max, int r[4])
+{
+    long v[4];
+    char buf[64];
+    const char *p = s;
+    int k;
+    for (k = 0; k < 4; k++) {
+        const char *c = strchr(p, ',');
+        size_t n = c && k < 3 ? (size_t)(c - p) : strlen(p);
+        if ((k < 3 && !c) || n == 0 || n >= sizeof buf)
+            return cli_usage_error(cmd, "%s: '%s' is not X0,Y0,X1,Y1", opt, s);
+        memcpy(buf, p, n);
+        buf[n] = '\0';
+        if (cli_long(cmd, opt, buf, 0, max, &v[k]))
+            return CLI_USAGE;
+        p += n + 1;
+    }
+    if (v[0] >= v[2] || v[1] >= v[3])
+        return cli_usage_error(cmd, "%s: '%s' is empty (it needs X0 < X1 and Y0 < Y1)", opt, s);
+    for (k = 0; k < 4; k++)
+        r[k] = (int)v[k];
+    return 0;
+}
+
 int cli_wants_help(int argc, char **argv)
 {
     int i;

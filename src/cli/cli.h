@@ -14,6 +14,7 @@ int cmd_compare(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
 int cmd_cms(int argc, char **argv);
 int cmd_hfp(int argc, char **argv);
+int cmd_merge(int argc, char **argv);
 
 /* Prints "maprt CMD: error: TEXT" and a hint to use --help; returns CLI_USAGE. */
 int cli_usage_error(const char *cmd, const char *fmt, ...)
@@ -30,6 +31,9 @@ int cli_long(const char *cmd, const char *opt, const char *s, long lo, long hi, 
 int cli_double(const char *cmd, const char *opt, const char *s, double *out);
 /* Parses "WxH" with 1 <= W,H <= max; 0 ok, else CLI_USAGE after a message. */
 int cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, int *h);
+/* Parses a region "X0,Y0,X1,Y1" (pixels [X0,X1) x [Y0,Y1), whole numbers
+ * 0..max with X0 < X1 and Y0 < Y1); 0 ok, else CLI_USAGE after a message. */
+int cli_region(const char *cmd, const char *opt, const char *s, int max, int r[4]);
 /* 1 if argv contains -h or --help. */
 int cli_wants_help(int argc, char **argv);
 /* 1 when stderr is a terminal (progress bars go there only then). */

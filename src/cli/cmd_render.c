@@ -2,9 +2,12 @@
  * mode -> tiled render -> PNG (and, later, a DL5080 display list). */
 #include "image/image_png.h"
 #include "cli/cli.h"
+#include "cli/cli_sink.h"
+#include "cli/cli_mpi.h"
 #include "cli/cli_scene.h"
 #include "render/render.h"
-#include "render/outline.h"
+#include "render/render_part.h"
+#include "util/outfile.h"
 #include "display5080/dl_format.h"
 #include "display5080/dl_image.h"
 #include "util/mem.h"
@@ -23,6 +26,10 @@ static void render_help(FILE *f)
         "\n"
         "options:\n"
         "  -o, --output OUT.png  write a true-colour PNG\n"
+        "  --part OUT.part       write the rendered pixels as a region file for 'maprt\n"
+        "                        merge' (docs/cluster.md)\n"
+        "  --region X0,Y0,X1,Y1  render only pixels [X0,X1) x [Y0,Y1) (with --part), e.g.\n"
+        "                        one job of a batch array\n"
         "  --dl OUT.dl5080       write a DL5080 display list: the frame quantised to at\n"
         "                        most 256 colours in the DAC's colour space\n"
         "  --dac 4|8             bits per gun of the 5081 colour table (default 4)\n"
@@ -43,7 +50,9 @@ static void render_help(FILE *f)
         "%s"
         "  -h, --help            show this help\n"
         "\n"
-        "A progress bar is drawn on stderr when it is a terminal.\n"
+        "A progress bar is drawn on stderr when it is a terminal. Under 'mpirun -n N'\n"
+        "(a build with MPI) the ranks share the image and rank 0 writes the outputs\n"
+        "(--stats adds mpi.ranks and each rank's share).\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
         SCENE_MAX_SIDE, DL_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA,
         cli_files_help);
@@ -60,58 +69,41 @@ static void render_progress(void *ctx, long done, long total)
         fputc('\n', stderr);
 }
 
-/* Outline segments of the rendered primitives as 2-point polylines in
- * device coordinates (lower-left origin) for the display list. */
-static int render_wireframe(const render_fb *fb, int **xy, dl_image_polyline **lines,
-                            size_t *nlines, diag *err)
+/* Writes the rendered region (the whole image without --region) as a
+ * region file for 'maprt merge'. */
+static int render_write_part(const char *path, const render_fb *fb, const render_opts *o,
+                             const scene *sc, const render_ops *ops, const render_stats *st,
+                             diag *err)
 {
-    outline_seg *segs;
-    size_t n, k;
-    int w = fb->img.width, h = fb->img.height;
-    if (outline_trace(fb->pid, w, h, &segs, &n, err))
-        return err->status;
-    *xy = mem_calloc(n ? 4 * n : 1, sizeof **xy);
-    *lines = mem_calloc(n, sizeof **lines);
-    if (!*xy || !*lines) {
-        mem_free(segs);
-        mem_free(*xy);
-        mem_free(*lines);
-        return diag_at(err, DIAG_IO, "wireframe", 0, 0, "out of memory");
+    render_part_info info;
+    uint8_t *buf;
+    size_t len;
+    int rc;
+    memset(&info, 0, sizeof info);
+    info.width = fb->img.width;
+    info.height = fb->img.height;
+    memcpy(info.region, o->region, sizeof info.region);
+    if (!info.region[2]) {
+        info.region[2] = info.width;
+        info.region[3] = info.height;
     }
-    for (k = 0; k < n; k++) {
-        int *p = *xy + 4 * k;
-        p[0] = segs[k].x0;
-        p[1] = h - 1 - segs[k].y0;
-        p[2] = segs[k].x1;
-        p[3] = h - 1 - segs[k].y1;
-        (*lines)[k].n = 2;
-        (*lines)[k].xy = p;
-        (*lines)[k].r = (*lines)[k].g = (*lines)[k].b = 255;
-    }
-    mem_free(segs);
-    *nlines = n;
-    return 0;
-}
-
-/* Writes the frame as a display list to the host path `path`. */
-static int render_write_dl(const char *path, const render_fb *fb, dl_image_opts *dlo,
-                           int wireframe, dl_image_stats *dls, diag *err)
-{
-    int *xy = NULL, st;
-    dl_image_polyline *lines = NULL;
-    if (wireframe && render_wireframe(fb, &xy, &lines, &dlo->npolylines, err))
-        return err->status;
-    dlo->polylines = lines;
-    st = dl_image_write(path, &fb->img, dlo, dls, err);
-    mem_free(xy);
-    mem_free(lines);
-    return st;
+    info.aa = o->aa;
+    strncpy(info.mode, ops->name, sizeof info.mode - 1);
+    info.stats = *st;
+    (void)sc;
+    if ((rc = render_part_encode(fb, &info, &buf, &len, err)) != 0)
+        return rc;
+    rc = outfile_write_all(path, buf, len, err);
+    mem_free(buf);
+    return rc;
 }
 
 int cmd_render(int argc, char **argv)
 {
-    const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *mode = "q16", *v;
-    char *png_path = NULL, *dl_path = NULL;
+    const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *out_part = NULL;
+    const char *mode = "q16", *v;
+    char *png_path = NULL, *dl_path = NULL, *part_path = NULL;
+    cli_mpi_share share[CLI_MPI_MAX_RANKS];
     const render_ops *ops = NULL;
     render_opts o;
     render_stats st;
@@ -122,7 +114,7 @@ int cmd_render(int argc, char **argv)
     scene *sc = NULL;
     diag err;
     long n;
-    int i, stats = 0, wireframe = 0, status = 0, rendered = 0;
+    int i, stats = 0, wireframe = 0, status = 0, rendered = 0, quiet = 0, root_status = 0;
 
     if (cli_wants_help(argc, argv)) {
         render_help(stdout);
@@ -149,6 +141,11 @@ int cmd_render(int argc, char **argv)
             if (!(out_png = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--dl")) {
             if (!(out_dl = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--part")) {
+            if (!(out_part = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--region")) {
+            if (!(v = cli_value("render", argc, argv, &i)) || cli_region("render", a, v, SCENE_MAX_SIDE, o.region))
+                status = CLI_USAGE;
         } else if (!strcmp(a, "--dac")) {
             if (!(v = cli_value("render", argc, argv, &i)) || cli_long("render", a, v, 4, 8, &n)
                 || (n != 4 && n != 8))
@@ -189,8 +186,12 @@ int cmd_render(int argc, char **argv)
     }
     if (!status && !scene_name)
         status = cli_usage_error("render", "no SCENE given");
-    if (!status && !out_png && !out_dl)
-        status = cli_usage_error("render", "no output: give -o OUT.png and/or --dl OUT.dl5080");
+    if (!status && !out_png && !out_dl && !out_part)
+        status = cli_usage_error("render", "no output: give -o OUT.png, --dl OUT.dl5080 or "
+                                 "--part OUT.part");
+    if (!status && o.region[2] && (out_png || out_dl))
+        status = cli_usage_error("render", "--region renders part of the image: write it with "
+                                 "--part and assemble the parts with 'maprt merge'");
     if (!status && !(ops = render_ops_find(mode)))
         status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32, f64, hfp32 or hfp64", mode);
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
@@ -203,26 +204,42 @@ int cmd_render(int argc, char **argv)
     /* Resolve every name before the long work, so a bad fileid fails fast. */
     if ((out_png && cli_output_path(&files, out_png, &png_path, &err))
         || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
-        || cli_scene_load(&files, scene_name, &sc, &err))
+        || (out_part && cli_output_path(&files, out_part, &part_path, &err))
+        || cli_scene_load(&files, scene_name, &sc, &err)) {
+        cli_mpi_agree(err.status, &root_status);
+        quiet = cli_mpi_rank() != 0 && root_status;   /* rank 0 says it */
         goto done;
+    }
+    /* Under mpirun every rank has read the deck; all go on, or none. */
+    if (cli_mpi_agree(0, NULL)) {
+        diag_at(&err, DIAG_INPUT, scene_name, 0, 0, "another MPI rank could not read the deck");
+        quiet = cli_mpi_rank() != 0;
+        goto done;
+    }
     if (out_dl && ((o.width ? o.width : sc->view.width) > DL_MAX_SIDE
                    || (o.height ? o.height : sc->view.height) > DL_MAX_SIDE)) {
         diag_at(&err, DIAG_USAGE, out_dl, 0, 0, "a display list holds at most %dx%d pixels",
                 DL_MAX_SIDE, DL_MAX_SIDE);
         goto done;
     }
-    if (cli_is_tty())
+    if (cli_is_tty() && cli_mpi_rank() == 0)
         o.progress = render_progress;
-    if (render_scene(sc, ops, &o, &fb, &st, &err))
+    if (cli_mpi_render(sc, ops, &o, &fb, &st, share, &err))
         goto done;
     rendered = 1;
+    if (cli_mpi_rank() != 0)
+        goto done;                    /* rank 0 writes and reports */
+    if (part_path && render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
+        goto done;
     if (png_path && image_write_png(png_path, &fb.img, &err))
         goto done;
-    if (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
+    if (dl_path && cli_sink_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
         goto done;
     if (stats) {
         printf("numeric=%s\n", ops->name);
         render_stats_print(stdout, &st);
+        if (cli_mpi_size() > 1)
+            cli_mpi_print_shares(stdout, share, cli_mpi_size());
         if (dl_path)
             printf("dl.colours=%d\ndl.bytes=%lu\ndl.psnr=%.2f\n", dls.colours,
                    (unsigned long)dls.bytes, dls.psnr);
@@ -233,9 +250,11 @@ done:
     scene_free(sc);
     mem_free(png_path);
     mem_free(dl_path);
+    mem_free(part_path);
     cli_files_free(&files);
     if (err.status) {
-        diag_print(stderr, &err);
+        if (!quiet)
+            diag_print(stderr, &err);
         return err.status;
     }
     return CLI_OK;

@@ -1,5 +1,6 @@
 /* main — maprt's entry point: dispatches git-style subcommands. */
 #include "cli/cli.h"
+#include "cli/cli_mpi.h"
 #include <string.h>
 
 typedef struct cli_command {
@@ -16,6 +17,7 @@ static const cli_command commands[] = {
     {"bench",   cmd_bench,   "benchmark run time against error across numeric modes"},
     {"cms",     cmd_cms,     "VM/CMS files: import, list, type, export"},
     {"hfp",     cmd_hfp,     "System/370 hexadecimal floating-point numbers to and from IEEE"},
+    {"merge",   cmd_merge,   "assemble region files of 'render --region' into the whole image"},
 };
 
 static void usage(FILE *f)
@@ -31,7 +33,8 @@ static void usage(FILE *f)
                "exit status: 0 ok, 1 bad input, 2 usage, 3 I/O or internal failure\n");
 }
 
-int main(int argc, char **argv)
+/* The subcommand's exit status; under mpirun every rank runs it. */
+static int run(int argc, char **argv)
 {
     size_t i;
     if (argc < 2) {
@@ -48,4 +51,14 @@ int main(int argc, char **argv)
     fprintf(stderr, "maprt: error: unknown command '%s'\n", argv[1]);
     usage(stderr);
     return CLI_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+    int rc;
+    if (cli_mpi_start(&argc, &argv))
+        return CLI_IO;
+    rc = run(argc, argv);
+    cli_mpi_stop();
+    return rc;
 }

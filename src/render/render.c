@@ -34,7 +34,7 @@ static void render_stats_numeric(render_stats *st, unsigned long fx0, const unsi
         st->hfp_exc[k] += hfp_exc[k] - hfp0[k];
 }
 
-static void render_stats_add(render_stats *a, const render_stats *b)
+void render_stats_add(render_stats *a, const render_stats *b)
 {
     int k;
     a->rays_primary += b->rays_primary;
@@ -66,6 +66,14 @@ void render_stats_print(FILE *f, const render_stats *st)
         fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
 }
 
+int render_region_check(const int region[4], int width, int height)
+{
+    if (!region[0] && !region[1] && !region[2] && !region[3])
+        return 0;
+    return region[0] >= 0 && region[0] < region[2] && region[2] <= width &&
+           region[1] >= 0 && region[1] < region[3] && region[3] <= height ? 0 : -1;
+}
+
 int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
                  render_fb *fb, render_stats *st, diag *err)
 {
@@ -75,7 +83,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     void *cs = NULL, **tcs = NULL;
     unsigned long ov0, hfp0[HFP_EXC_N];
     double t0;
-    long ntx, nty, ntiles, done = 0;
+    long tx0, ty0, ntx, nty, ntiles, done = 0;
     int i, status = 0, nthreads;
 
     memset(&total, 0, sizeof total);
@@ -89,6 +97,14 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
                        "image size %dx%d out of range", opt.width, opt.height);
     if (opt.aa < 1 || opt.aa > RENDER_MAX_AA || opt.threads < 1 || opt.threads > RENDER_MAX_THREADS)
         return diag_at(err, DIAG_USAGE, "", 0, 0, "bad anti-aliasing or thread count");
+    if (render_region_check(opt.region, opt.width, opt.height))
+        return diag_at(err, DIAG_USAGE, "", 0, 0, "region %d,%d,%d,%d is not inside the %dx%d image",
+                       opt.region[0], opt.region[1], opt.region[2], opt.region[3], opt.width,
+                       opt.height);
+    if (!opt.region[2]) {
+        opt.region[2] = opt.width;
+        opt.region[3] = opt.height;
+    }
     nthreads = opt.threads;
 
     ov0 = fx_overflows;
@@ -112,8 +128,12 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
         }
     render_stats_numeric(&total, ov0, hfp0);
 
-    ntx = (opt.width + RENDER_TILE - 1) / RENDER_TILE;
-    nty = (opt.height + RENDER_TILE - 1) / RENDER_TILE;
+    /* Tiles on the image's 32-pixel grid, clipped to the region, so a
+     * region render computes exactly the pixels the whole render would. */
+    tx0 = opt.region[0] / RENDER_TILE;
+    ty0 = opt.region[1] / RENDER_TILE;
+    ntx = (opt.region[2] + RENDER_TILE - 1) / RENDER_TILE - tx0;
+    nty = (opt.region[3] + RENDER_TILE - 1) / RENDER_TILE - ty0;
     ntiles = ntx * nty;
     t0 = omp_get_wtime();
 #pragma omp parallel num_threads(nthreads)
@@ -126,9 +146,13 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
         memcpy(hbefore, hfp_exc, sizeof hbefore);
 #pragma omp for schedule(dynamic, 1)
         for (k = 0; k < ntiles; k++) {
-            int x0 = (int)(k % ntx) * RENDER_TILE, y0 = (int)(k / ntx) * RENDER_TILE;
-            int x1 = x0 + RENDER_TILE > opt.width ? opt.width : x0 + RENDER_TILE;
-            int y1 = y0 + RENDER_TILE > opt.height ? opt.height : y0 + RENDER_TILE;
+            int x0 = (int)(tx0 + k % ntx) * RENDER_TILE, y0 = (int)(ty0 + k / ntx) * RENDER_TILE;
+            int x1 = x0 + RENDER_TILE > opt.region[2] ? opt.region[2] : x0 + RENDER_TILE;
+            int y1 = y0 + RENDER_TILE > opt.region[3] ? opt.region[3] : y0 + RENDER_TILE;
+            if (x0 < opt.region[0])
+                x0 = opt.region[0];
+            if (y0 < opt.region[1])
+                y0 = opt.region[1];
             ops->render_tile(cs, tcs[me], &opt, x0, y0, x1, y1, &out, &mine);
             if (opt.progress) {
 #pragma omp critical(render_progress)

@@ -27,6 +27,10 @@ typedef struct render_opts {
     int width, height;        /* image size; 0 = the scene view's size */
     int threads;              /* worker threads, >= 1 */
     int aa;                   /* NxN samples per pixel, 1..RENDER_MAX_AA */
+    /* Pixels [x0,x1) x [y0,y1) of the image to render (a region of a
+     * larger job, e.g. one rank's share); all 0 = the whole image. Pixels
+     * outside it are left 0 in the framebuffer (pid 0 too). */
+    int region[4];
     /* Called (serialised) after each finished tile; may be NULL. */
     void (*progress)(void *ctx, long done, long total);
     void *progress_ctx;
@@ -57,13 +61,19 @@ extern const render_ops q16_render_ops, q32_render_ops, f32_render_ops, f64_rend
  * anything else. */
 const render_ops *render_ops_find(const char *name);
 
-/* Renders sc in mode ops into *fb (allocated here; release with
- * render_fb_free). st receives the counters and timings. 0 on success, else
+/* Checks a region (x0 y0 x1 y1) against a width x height image: 0 when
+ * 0 <= x0 < x1 <= width and 0 <= y0 < y1 <= height, or all four are 0. */
+int render_region_check(const int region[4], int width, int height);
+
+/* Renders sc in mode ops into *fb (allocated here, the whole image even when
+ * o->region asks for part of it; release with render_fb_free). st receives the counters and timings. 0 on success, else
  * the diag status (DIAG_INPUT for scene problems found at compile time,
  * DIAG_USAGE for bad options, DIAG_IO for memory). *fb is untouched then. */
 int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
                  render_fb *fb, render_stats *st, diag *err);
 void render_fb_free(render_fb *fb);
+/* Adds b's counters (not its times) to a. */
+void render_stats_add(render_stats *a, const render_stats *b);
 /* Prints the counters as key=value lines (the --stats format). */
 void render_stats_print(FILE *f, const render_stats *st);
 #endif

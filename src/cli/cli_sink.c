@@ -1,0 +1,53 @@
+/* cli_sink — writing a rendered frame as a DL5080 display list (render and
+ * merge share it; see cli_sink.h). */
+#include "cli/cli_sink.h"
+#include "render/outline.h"
+#include "util/mem.h"
+
+/* Outline segments of the rendered primitives as 2-point polylines in
+ * device coordinates (lower-left origin) for the display list. */
+static int cli_sink_wireframe(const render_fb *fb, int **xy, dl_image_polyline **lines,
+                            size_t *nlines, diag *err)
+{
+    outline_seg *segs;
+    size_t n, k;
+    int w = fb->img.width, h = fb->img.height;
+    if (outline_trace(fb->pid, w, h, &segs, &n, err))
+        return err->status;
+    *xy = mem_calloc(4 * n, sizeof **xy);
+    *lines = mem_calloc(n, sizeof **lines);
+    if (!*xy || !*lines) {
+        mem_free(segs);
+        mem_free(*xy);
+        mem_free(*lines);
+        return diag_at(err, DIAG_IO, "wireframe", 0, 0, "out of memory");
+    }
+    for (k = 0; k < n; k++) {
+        int *p = *xy + 4 * k;
+        p[0] = segs[k].x0;
+        p[1] = h - 1 - segs[k].y0;
+        p[2] = segs[k].x1;
+        p[3] = h - 1 - segs[k].y1;
+        (*lines)[k].n = 2;
+        (*lines)[k].xy = p;
+        (*lines)[k].r = (*lines)[k].g = (*lines)[k].b = 255;
+    }
+    mem_free(segs);
+    *nlines = n;
+    return 0;
+}
+
+/* Writes the frame as a display list to the host path `path`. */
+int cli_sink_dl(const char *path, const render_fb *fb, dl_image_opts *dlo, int wireframe,
+                 dl_image_stats *dls, diag *err)
+{
+    int *xy = NULL, st;
+    dl_image_polyline *lines = NULL;
+    if (wireframe && cli_sink_wireframe(fb, &xy, &lines, &dlo->npolylines, err))
+        return err->status;
+    dlo->polylines = lines;
+    st = dl_image_write(path, &fb->img, dlo, dls, err);
+    mem_free(xy);
+    mem_free(lines);
+    return st;
+}

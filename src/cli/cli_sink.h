@@ -1,0 +1,15 @@
+/* cli_sink — the outputs of a rendered frame shared by render and merge: a
+ * DL5080 display list, the frame quantised to the 5081's colour table
+ * (dl_image), optionally with the outlines of the primitives as seen
+ * (--wireframe, from the pid map). */
+#ifndef CLI_SINK_H
+#define CLI_SINK_H
+#include "display5080/dl_image.h"
+#include "render/render.h"
+#include "util/diag.h"
+
+/* Writes fb as a display list to the host path `path`; dls receives the
+ * colour count, size and PSNR. 0 or the diag status. */
+int cli_sink_dl(const char *path, const render_fb *fb, dl_image_opts *dlo, int wireframe,
+                 dl_image_stats *dls, diag *err);
+#endif

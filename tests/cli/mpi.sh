@@ -1,0 +1,57 @@
+#!/bin/sh
+# maprt under mpirun (Open MPI): three ranks (oversubscribed on a small
+# machine) write exactly the bytes of a single-process render, PNG and
+# DL5080, with the counters summed over ranks and each rank's share; a rank
+# killed mid-render fails the job with a message and leaves no output.
+# Exit 77 (skipped) when the binary was built without MPI or mpirun is absent.
+set -u
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "mpi.sh: $*" >&2; exit 1; }
+command -v mpirun >/dev/null 2>&1 || { echo "mpi.sh: skipped: no mpirun (apt-get install openmpi-bin)"; exit 77; }
+ldd "$MAPRT" 2>/dev/null | grep -q libmpi || { echo "mpi.sh: skipped: $MAPRT built without MPI (apt-get install libopenmpi-dev)"; exit 77; }
+# Open MPI refuses root unless told; leak checkers do not know its caches.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=detect_leaks=0
+mpi() { mpirun --oversubscribe -n 3 "$@"; }
+deck=scenes/fig1.scene
+for m in q16 f64; do
+  $MAPRT render $deck -o "$tmp/one-$m.png" --dl "$tmp/one-$m.dl" --size 120x90 --aa 2 --numeric $m \
+    --threads 2 --stats > "$tmp/one-$m.st" || fail "single render $m"
+  mpi $MAPRT render $deck -o "$tmp/mpi-$m.png" --dl "$tmp/mpi-$m.dl" --size 120x90 --aa 2 \
+    --numeric $m --threads 1 --stats > "$tmp/mpi-$m.st" || fail "mpirun render $m"
+  cmp -s "$tmp/one-$m.png" "$tmp/mpi-$m.png" || fail "$m: PNG differs from the single-process render"
+  cmp -s "$tmp/one-$m.dl" "$tmp/mpi-$m.dl" || fail "$m: DL5080 differs from the single-process render"
+  grep -v '^time\.' "$tmp/one-$m.st" > "$tmp/a"
+  grep -v '^time\.\|^mpi\.' "$tmp/mpi-$m.st" > "$tmp/b"
+  cmp -s "$tmp/a" "$tmp/b" || fail "$m: counters differ: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
+  grep -qx 'mpi.ranks=3' "$tmp/mpi-$m.st" || fail "no mpi.ranks=3"
+  bands=$(sed -n 's/^mpi\.rank[0-9]*\.bands=//p' "$tmp/mpi-$m.st" | awk '{s+=$1} END {print s}')
+  [ "$bands" = 3 ] || fail "$m: ranks rendered $bands bands of 3"
+done
+# A deck error is reported once (by rank 0) and fails every rank.
+printf 'SPHERE S 1\nOBJECT T\n' > "$tmp/bad.scene"
+mpi $MAPRT render "$tmp/bad.scene" -o "$tmp/bad.png" 2> "$tmp/e" && fail "bad deck accepted"
+[ "$(grep -c 'error:' "$tmp/e")" = 1 ] || fail "bad deck: not one message: $(cat "$tmp/e")"
+[ ! -e "$tmp/bad.png" ] || fail "bad deck wrote a file"
+# Kill rank 1 while the ranks render: the job fails, nothing is written.
+mpi $MAPRT render $deck -o "$tmp/killed.png" --size 640x480 --aa 3 --threads 1 \
+  > "$tmp/k.out" 2> "$tmp/k.err" &
+job=$!
+victim=""
+i=0
+while [ -z "$victim" ] && [ $i -lt 200 ]; do
+  for p in /proc/[0-9]*; do
+    { tr '\0' '\n' < "$p/environ" | grep -qx 'OMPI_COMM_WORLD_RANK=1'; } 2>/dev/null || continue
+    grep -q maprt "$p/cmdline" 2>/dev/null && victim=${p#/proc/}
+  done
+  i=$((i + 1))
+  [ -n "$victim" ] || sleep 0.05
+done
+[ -n "$victim" ] || { kill $job; fail "rank 1 never started"; }
+sleep 0.5
+kill -9 "$victim"
+wait $job && fail "the job succeeded although rank 1 was killed"
+[ -s "$tmp/k.err" ] || fail "no message when a rank died"
+[ ! -e "$tmp/killed.png" ] || fail "output written although a rank died"
+ls "$tmp" | grep -q 'tmp-' && fail "temporary file left behind"
+exit 0
