@@ -10,7 +10,7 @@
 #include "util/outfile.h"
 #include <string.h>
 
-static void merge_help(FILE *f)
+static void cmd_merge_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt merge PART... [-o OUT.png] [--dl OUT.dl5080 [--dac 4|8] [--dither]\n"
@@ -33,7 +33,7 @@ static void merge_help(FILE *f)
 
 /* Reads one part file, checks it against the first (*first, filled from the
  * first part) and places it into *fb (allocated at the first part). */
-static int merge_one(const char *path, render_part_info *first, render_fb *fb, uint8_t **covered,
+static int cmd_merge_one(const char *path, render_part_info *first, render_fb *fb, uint8_t **covered,
                      render_stats *total, diag *err)
 {
     render_part_info info;
@@ -88,7 +88,7 @@ int cmd_merge(int argc, char **argv)
     int i, nparts = 0, stats = 0, wireframe = 0, status = 0;
     size_t k, npx;
     if (cli_wants_help(argc, argv)) {
-        merge_help(stdout);
+        cmd_merge_help(stdout);
         return CLI_OK;
     }
     memset(&fb, 0, sizeof fb);
@@ -136,7 +136,7 @@ int cmd_merge(int argc, char **argv)
         }
         if (a[0] == '-' && a[1])
             continue;
-        if (merge_one(a, &first, &fb, &covered, &total, &err))
+        if (cmd_merge_one(a, &first, &fb, &covered, &total, &err))
             goto done;
     }
     npx = (size_t)first.width * (size_t)first.height;
