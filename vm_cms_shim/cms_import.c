@@ -184,18 +184,34 @@ static int import_claim(import_ctx *c, const cms_fileid *id, long long where, im
     return 0;
 }
 
+/* A file in the staging directory, written in place: the directory is the
+ * transaction's own, so no temporary name is needed there. */
+typedef struct import_out {
+    FILE *f;
+    int failed;
+} import_out;
+
+static void import_out_sink(void *ctx, const void *data, size_t len)
+{
+    import_out *o = ctx;
+    if (!o->failed && len && fwrite(data, 1, len, o->f) != len)
+        o->failed = 1;
+}
+
 /* Writes a decoded file into the staging directory, and its sidecar. */
 static int import_stage(import_ctx *c, import_file *f, const cms_recs *r, const cms_attr *attr,
                         diag *err)
 {
-    outfile of;
+    import_out o;
     char *p = import_join(c->stage, f->host);
     size_t i;
     int rc = 0;
     long lrecl = r->lrecl > 0 ? r->lrecl : 1;
     if (!p)
         return diag_at(err, DIAG_IO, c->path, 0, 0, "out of memory");
-    if ((rc = outfile_open(&of, p, err))) {
+    o.failed = 0;
+    if (!(o.f = fopen(p, "wb"))) {
+        rc = diag_at(err, DIAG_IO, p, 0, 0, "cannot create: %s", strerror(errno));
         mem_free(p);
         return rc;
     }
@@ -204,19 +220,28 @@ static int import_stage(import_ctx *c, import_file *f, const cms_recs *r, const 
         const char *rec = cms_recs_at(r, i, &len);
         if (r->binary)
             rc = cms_recs_encode_binary(r->recfm == 'F' ? CMS_FORM_EBCDIC : CMS_FORM_VSTREAM,
-                                        r->recfm, lrecl, rec, len, outfile_sink, &of, c->path,
+                                        r->recfm, lrecl, rec, len, import_out_sink, &o, c->path,
                                         (long)i + 1, err);
         else
             rc = cms_recs_encode_record(CMS_FORM_TEXT, r->recfm, lrecl, NULL, rec, len,
-                                        outfile_sink, &of, c->path, (long)i + 1, err);
+                                        import_out_sink, &o, c->path, (long)i + 1, err);
     }
-    if (rc)
-        outfile_abort(&of);
-    else
-        rc = outfile_commit(&of, err);
+    if (fclose(o.f) != 0)
+        o.failed = 1;
+    if (!rc && o.failed)
+        rc = diag_at(err, DIAG_IO, p, 0, 0, "write failed");
     if (!rc && attr) {
-        rc = cms_attr_write(p, attr, err);
-        f->has_attr = rc == 0;
+        char buf[256], *a = cms_attr_path(p);
+        size_t n = cms_attr_format(attr, buf, sizeof buf);
+        FILE *af = a ? fopen(a, "wb") : NULL;
+        if (!a)
+            rc = diag_at(err, DIAG_IO, p, 0, 0, "out of memory");
+        else if (!af || fwrite(buf, 1, n, af) != n)
+            rc = diag_at(err, DIAG_IO, a, 0, 0, "cannot write the attribute file");
+        if (af && fclose(af) != 0 && !rc)
+            rc = diag_at(err, DIAG_IO, a, 0, 0, "cannot write the attribute file");
+        f->has_attr = 1;      /* also on failure: unstaging removes it */
+        mem_free(a);
     }
     mem_free(p);
     f->item.recfm = r->recfm;

@@ -439,12 +439,16 @@ static int tape_put_name(unsigned char *p, const char *s, size_t n, diag *err)
 
 static unsigned char tape_to_dcb(int v) { return (unsigned char)(((v / 10) << 4) | (v % 10)); }
 
-/* Date fields of a directory entry from "YYYY-MM-DD HH:MM[:SS]" (or now). */
+/* Date fields of a directory entry from "YYYY-MM-DD HH:MM[:SS]" (or now);
+ * the EDF date (adt, may be NULL) only when the seconds are known. */
 static void tape_put_date(const char *date, unsigned char *adt, unsigned char *year,
                           unsigned char *mdhm, unsigned char *flags)
 {
-    int y, mo, d, h, mi, s = 0;
-    if (!date || sscanf(date, "%4d-%2d-%2d %2d:%2d:%2d", &y, &mo, &d, &h, &mi, &s) < 5) {
+    int y, mo, d, h, mi, s = 0, k = date ? sscanf(date, "%4d-%2d-%2d %2d:%2d:%2d", &y, &mo, &d,
+                                                  &h, &mi, &s) : 0;
+    if (k == 5)
+        adt = NULL;        /* a date without seconds stays one (the short FST date) */
+    if (k < 5) {
         time_t now = time(NULL);
         struct tm tm;
         gmtime_r(&now, &tm);

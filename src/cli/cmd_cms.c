@@ -99,13 +99,11 @@ static unsigned action_opts(const char *action)
 }
 
 /* Options shared by the subcommands. */
-#define CMS_CLI_MAX_POS 1000
-
 typedef enum cms_out { OUT_RECORDS = 0, OUT_READER, OUT_AWS, OUT_HET } cms_out;
 
 typedef struct cms_cli {
     cms_disks disks;
-    const char *pos[CMS_CLI_MAX_POS];
+    const char **pos;         /* argc entries (owned) */
     int npos;
     cms_out out;
     cms_tape_kind tape_format;
@@ -244,8 +242,6 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
         default:
             if (a[0] == '-' && a[1])
                 return cli_usage_error("cms", "unknown option '%s'", a);
-            if (c->npos == CMS_CLI_MAX_POS)
-                return cli_usage_error("cms", "too many arguments ('%s')", a);
             c->pos[c->npos++] = a;
         }
     }
@@ -631,6 +627,11 @@ int cmd_cms(int argc, char **argv)
         return cli_usage_error("cms", "unknown action '%s' (import, list, type, export)", argv[1]);
     memset(&c, 0, sizeof c);
     cms_disks_init(&c.disks);
+    if (!(c.pos = mem_calloc((size_t)argc, sizeof *c.pos))) {
+        fprintf(stderr, "maprt: error: out of memory\n");
+        cms_disks_free(&c.disks);
+        return CLI_IO;
+    }
     if ((rc = cms_cli_parse(&c, argc, argv)) == 0) {
         if (!strcmp(argv[1], "import"))
             rc = cms_do_import(&c);
@@ -642,5 +643,6 @@ int cmd_cms(int argc, char **argv)
             rc = cms_do_export(&c);
     }
     cms_disks_free(&c.disks);
+    mem_free(c.pos);
     return rc;
 }
