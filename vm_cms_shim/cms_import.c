@@ -151,7 +151,7 @@ static void import_where(const import_ctx *c, long long w, char *buf, size_t siz
 static int import_claim(import_ctx *c, const cms_fileid *id, long long where, import_file **out,
                         diag *err)
 {
-    char key[IMPORT_NAME_MAX], a[300], b[300], t[CMS_FILEID_TEXT_MAX];
+    char key[IMPORT_NAME_MAX], a[300], b[300];
     import_file *f;
     long prev;
     snprintf(key, sizeof key, "%s.%s", id->fn, id->ft);
@@ -162,9 +162,8 @@ static int import_claim(import_ctx *c, const cms_fileid *id, long long where, im
         import_where(c, c->files[prev].where, a, sizeof a);
         import_where(c, where, b, sizeof b);
         return diag_at(err, DIAG_INPUT, c->path, 0, 0,
-                       "%s occurs twice in one import: at %s and at %s (CMS holds one file of "
-                       "a name per disk; rename one on CMS)", cms_fileid_format(id, t, sizeof t),
-                       a, b);
+                       "%s %s occurs twice in one import: at %s and at %s (CMS holds one file "
+                       "of a name per disk; rename one on CMS)", id->fn, id->ft, a, b);
     }
     if (mem_grow((void **)&c->files, &c->capfiles, c->nfiles + 1, sizeof *c->files))
         return diag_at(err, DIAG_IO, c->path, 0, 0, "out of memory");

@@ -9,6 +9,7 @@
 #include <time.h>
 
 #define TAPE_HDR 5
+#define TAPE_AT 11                   /* record offset to its data: AWS header + TAPE_HDR */
 #define TAPE_TRAILER_MIN 82          /* trailer bytes after the header */
 #define TAPE_BLOCK 800               /* CMS TAPE DUMP data block (VM/370) */
 #define TAPE_BLOCK_BIG 4096          /* later levels ('F'/'V' blocks) */
@@ -182,12 +183,12 @@ static int tape_dump_trailer(tape_state *t, const unsigned char *p, size_t n, lo
         return diag_offset(err, DIAG_INPUT, t->name, off,
                            "CMS tape trailer of %zu bytes is shorter than %d", n, TAPE_TRAILER_MIN);
     f.kind = CMS_TAPE_DUMP;
-    if ((rc = tape_recfm(p[10], &f.recfm, t->name, off + TAPE_HDR + 10, err)) ||
-        (rc = tape_fileid(p + 64, p + 72, p + 80, &f.id, t->name, off + TAPE_HDR + 64, err)))
+    if ((rc = tape_recfm(p[10], &f.recfm, t->name, off + TAPE_AT + 10, err)) ||
+        (rc = tape_fileid(p + 64, p + 72, p + 80, &f.id, t->name, off + TAPE_AT + 64, err)))
         return rc;
     f.lrecl = (long)tape_be(p + 12, 4);
     if (f.lrecl < 1 || f.lrecl > CMS_LRECL_MAX)
-        return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_HDR + 12,
+        return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT + 12,
                            "LRECL %lu is outside 1..%d", tape_be(p + 12, 4), CMS_LRECL_MAX);
     c16 = tape_be(p + 6, 2);
     c32 = tape_be(p + 32, 4);
@@ -196,7 +197,7 @@ static int tape_dump_trailer(tape_state *t, const unsigned char *p, size_t n, lo
     } else {
         f.count = (long)c16;
         if (c32 && c32 != c16)
-            cms_warn_emit(t->warn, t->name, off + TAPE_HDR + 32,
+            cms_warn_emit(t->warn, t->name, off + TAPE_AT + 32,
                           "trailer: the 32-bit field %lu does not extend the 16-bit record "
                           "count %lu (a VM/370 trailer has no 32-bit count); %lu records used",
                           c32, c16, c16);
@@ -219,16 +220,16 @@ static int tape_plc_header(tape_state *t, const unsigned char *p, size_t n, long
         return diag_offset(err, DIAG_INPUT, t->name, off,
                            "VMFPLC2 header of %zu bytes is shorter than the %d-byte FST", n, PLC_FST);
     f->kind = CMS_TAPE_VMFPLC2;
-    if ((rc = tape_recfm(p[30], &f->recfm, t->name, off + TAPE_HDR + 30, err)) ||
-        (rc = tape_fileid(p, p + 8, p + 24, &f->id, t->name, off + TAPE_HDR, err)))
+    if ((rc = tape_recfm(p[30], &f->recfm, t->name, off + TAPE_AT + 30, err)) ||
+        (rc = tape_fileid(p, p + 8, p + 24, &f->id, t->name, off + TAPE_AT, err)))
         return rc;
     f->lrecl = (long)tape_be(p + 32, 4);
     if (f->lrecl < 1 || f->lrecl > CMS_LRECL_MAX)
-        return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_HDR + 32,
+        return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT + 32,
                            "LRECL %lu is outside 1..%d", tape_be(p + 32, 4), CMS_LRECL_MAX);
     aic = tape_be(p + 56, 4);
     if (aic > 0x7FFFFFFFUL)
-        return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_HDR + 56,
+        return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT + 56,
                            "record count %lu is too large", aic);
     f->count = aic ? (long)aic : (long)tape_be(p + 26, 2);
     tape_date(p + 62, p + 38, p + 16, p[31], f->date);
@@ -343,7 +344,7 @@ static int tape_record(tape_state *t, const unsigned char *r, size_t n, long lon
             return tape_dump_trailer(t, p, pn, off, err);
         if (type == 0x40 || type == 0xC6 || type == 0xE5 || type == 0xF0)
             return tape_dump_block(t, type, p, pn, off, err);
-        return diag_offset(err, DIAG_INPUT, t->name, off + 4,
+        return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT - 1,
                            "unknown CMS tape block type X'%02X'", type);
     }
     if (n >= TAPE_HDR && memcmp(r, tape_hdr_plch, 5) == 0) {
