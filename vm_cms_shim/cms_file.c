@@ -21,7 +21,7 @@ struct cms_file {
 
 /* A text file's records fit a sidecar's RECFM/LRECL (F: every record exactly
  * LRECL columns; V: none longer). */
-static int file_fits(const cms_recs *r, char recfm, long lrecl)
+static int file_attr_fits(const cms_recs *r, char recfm, long lrecl)
 {
     size_t i;
     for (i = 0; i < r->count; i++) {
@@ -35,7 +35,7 @@ static int file_fits(const cms_recs *r, char recfm, long lrecl)
     return 1;
 }
 
-static void info_from_name(cms_file_info *info, const cms_name *n)
+static void file_info_from_name(cms_file_info *info, const cms_name *n)
 {
     memset(info, 0, sizeof *info);
     snprintf(info->label, sizeof info->label, "%s", n->label);
@@ -58,7 +58,7 @@ int cms_file_open_read(cms_file **f, const cms_disks *d, const char *arg,
         cms_name_free(&n);
         return diag_at(err, DIAG_IO, arg, 0, 0, "out of memory");
     }
-    info_from_name(&r->info, &n);
+    file_info_from_name(&r->info, &n);
     if ((rc = infile_read_all(n.path, (size_t)CMS_FILE_MAX_BYTES, &data, &len, err)) != 0) {
         if (n.is_fileid)   /* name the fileid, not the host path */
             snprintf(err->file, sizeof err->file, "%s", n.label);
@@ -78,7 +78,7 @@ int cms_file_open_read(cms_file **f, const cms_disks *d, const char *arg,
     } else if (!rc) {
         rc = cms_recs_decode((const unsigned char *)data, len, o, r->info.label, &r->recs, err);
         if (!rc && attr.present && attr.recfm && attr.lrecl &&
-            file_fits(&r->recs, attr.recfm, attr.lrecl)) {
+            file_attr_fits(&r->recs, attr.recfm, attr.lrecl)) {
             r->recs.recfm = attr.recfm;
             r->recs.lrecl = attr.lrecl;
         }
@@ -142,7 +142,7 @@ int cms_file_open_write(cms_file **f, const cms_disks *d, const char *arg, char 
         cms_name_free(&n);
         return diag_at(err, DIAG_IO, arg, 0, 0, "out of memory");
     }
-    info_from_name(&w->info, &n);
+    file_info_from_name(&w->info, &n);
     w->writing = 1;
     w->info.recfm = recfm;
     w->info.lrecl = lrecl;
