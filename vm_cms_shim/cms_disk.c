@@ -58,8 +58,7 @@ int cms_disks_set(cms_disks *d, const char *spec, diag *err)
     return disk_put(d, l - 'A', spec + 2, err);
 }
 
-/* Joins dir and name into a new string. */
-static char *disk_path_join(const char *dir, const char *name)
+char *cms_disks_join(const char *dir, const char *name)
 {
     size_t a = strlen(dir), b = strlen(name);
     char *p = mem_alloc(a + b + 2);
@@ -139,7 +138,7 @@ static int disk_find_on(const cms_disks *d, int i, const cms_fileid *id, char **
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
     if (r == 0)
         return 0;
-    p = disk_path_join(d->dir[i], name);
+    p = cms_disks_join(d->dir[i], name);
     mem_free(name);
     if (!p)
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
@@ -201,7 +200,7 @@ int cms_disks_output_path(const cms_disks *d, const cms_fileid *id, char **path,
     for (k = 0; name[k]; k++)
         if (name[k] >= 'A' && name[k] <= 'Z')
             name[k] = (char)(name[k] - 'A' + 'a');
-    if (!(*path = disk_path_join(d->dir[i], name)))
+    if (!(*path = cms_disks_join(d->dir[i], name)))
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
     return 0;
 }
@@ -269,7 +268,7 @@ int cms_disks_list(const cms_disks *d, char letter,
     if (!rc && n)
         qsort(names, n, sizeof *names, disk_name_cmp);
     for (i = 0; i < n && !rc; i++) {
-        char *p = disk_path_join(d->dir[letter - 'A'], names[i]);
+        char *p = cms_disks_join(d->dir[letter - 'A'], names[i]);
         if (!p) {
             rc = diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
             break;

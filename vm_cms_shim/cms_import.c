@@ -126,18 +126,6 @@ typedef struct import_ctx {
     int punch;
 } import_ctx;
 
-static char *import_join(const char *dir, const char *name)
-{
-    size_t a = strlen(dir), b = strlen(name);
-    char *p = mem_alloc(a + b + 2);
-    if (p) {
-        memcpy(p, dir, a);
-        p[a] = '/';
-        memcpy(p + a + 1, name, b + 1);
-    }
-    return p;
-}
-
 static void import_where(const import_ctx *c, long long w, char *buf, size_t size)
 {
     if (c->punch)
@@ -202,7 +190,7 @@ static int import_stage(import_ctx *c, import_file *f, const cms_recs *r, const 
                         diag *err)
 {
     import_out o;
-    char *p = import_join(c->stage, f->host);
+    char *p = cms_disks_join(c->stage, f->host);
     size_t i;
     int rc = 0;
     long lrecl = r->lrecl > 0 ? r->lrecl : 1;
@@ -405,45 +393,35 @@ static int import_commit(import_ctx *c, diag *err)
     int rc, have_in = stat(c->path, &in) == 0;
     memset(&disk, 0, sizeof disk);
     rc = import_scan_disk(c->dir, &disk, &names, &nnames, err);
-    for (i = 0; i < c->nfiles && !rc; i++) {
-        import_file *f = &c->files[i];
-        char key[IMPORT_NAME_MAX], *target;
-        if (!f->host[0])
-            continue;
-        snprintf(key, sizeof key, "%s.%s", f->item.id.fn, f->item.id.ft);
-        f->existing = import_map_get(&disk, key);
-        if (f->existing < 0)
-            continue;
-        cms_fileid_format(&f->item.id, t, sizeof t);
-        if (!c->o->replace) {
-            rc = diag_at(err, DIAG_INPUT, t, 0, 0, "file exists on disk %c as '%s' (nothing "
-                         "imported; --replace replaces existing files)", c->disk,
-                         names[f->existing]);
-            break;
-        }
-        if (!(target = import_join(c->dir, names[f->existing]))) {
-            rc = diag_at(err, DIAG_IO, c->path, 0, 0, "out of memory");
-            break;
-        }
-        if (have_in && import_same_file(&in, target))
-            rc = diag_at(err, DIAG_INPUT, t, 0, 0, "would replace the input '%s' itself "
-                         "(import onto another disk)", c->path);
-        mem_free(target);
-    }
-    /* every path first, so that nothing but rename() runs once files move */
+    /* every check and every path first, so that nothing but rename() runs
+     * once files move */
     if (!rc && !(paths = mem_calloc(c->nfiles ? 4 * c->nfiles : 1, sizeof *paths)))
         rc = diag_at(err, DIAG_IO, c->path, 0, 0, "out of memory");
     for (i = 0; i < c->nfiles && !rc; i++) {
         import_file *f = &c->files[i];
-        char **p = paths + 4 * i;
+        char key[IMPORT_NAME_MAX], **p = paths + 4 * i;
         if (!f->host[0])
             continue;
-        p[0] = import_join(c->stage, f->host);
-        p[1] = import_join(c->dir, f->existing >= 0 ? names[f->existing] : f->host);
+        snprintf(key, sizeof key, "%s.%s", f->item.id.fn, f->item.id.ft);
+        f->existing = import_map_get(&disk, key);
+        p[0] = cms_disks_join(c->stage, f->host);
+        p[1] = cms_disks_join(c->dir, f->existing >= 0 ? names[f->existing] : f->host);
         p[2] = p[0] ? cms_attr_path(p[0]) : NULL;
         p[3] = p[1] ? cms_attr_path(p[1]) : NULL;
-        if (!p[0] || !p[1] || !p[2] || !p[3])
+        if (!p[0] || !p[1] || !p[2] || !p[3]) {
             rc = diag_at(err, DIAG_IO, c->path, 0, 0, "out of memory");
+            break;
+        }
+        if (f->existing < 0)
+            continue;
+        cms_fileid_format(&f->item.id, t, sizeof t);
+        if (!c->o->replace)
+            rc = diag_at(err, DIAG_INPUT, t, 0, 0, "file exists on disk %c as '%s' (nothing "
+                         "imported; --replace replaces existing files)", c->disk,
+                         names[f->existing]);
+        else if (have_in && import_same_file(&in, p[1]))
+            rc = diag_at(err, DIAG_INPUT, t, 0, 0, "would replace the input '%s' itself "
+                         "(import onto another disk)", c->path);
     }
     for (i = 0; i < c->nfiles && !rc; i++) {
         import_file *f = &c->files[i];
@@ -495,7 +473,7 @@ int cms_import(const cms_disks *d, const char *path, const cms_import_opts *o,
     }
     if ((rc = infile_read_all(path, (size_t)CMS_IMPORT_MAX_BYTES, &data, &len, err)))
         return rc;
-    if (!(c.stage = import_join(c.dir, ".maprt-import-XXXXXX")) || !mkdtemp(c.stage)) {
+    if (!(c.stage = cms_disks_join(c.dir, ".maprt-import-XXXXXX")) || !mkdtemp(c.stage)) {
         rc = diag_at(err, DIAG_IO, c.dir, 0, 0, "cannot create a staging directory: %s",
                      c.stage ? strerror(errno) : "out of memory");
         mem_free(c.stage);

@@ -153,6 +153,22 @@ static void tape_got_free(tape_got *g)
         free(g->data[i]);
 }
 
+/* A tape file description for the writer. */
+static void t_tape_file(cms_tape_file *f, const char *fn, const char *ft, char num, char recfm,
+                        long lrecl, long count, const unsigned char *data, size_t len)
+{
+    memset(f, 0, sizeof *f);
+    strcpy(f->id.fn, fn);
+    strcpy(f->id.ft, ft);
+    f->id.mode = 'A';
+    f->id.num = num;
+    f->recfm = recfm;
+    f->lrecl = lrecl;
+    f->count = count;
+    f->data = data;
+    f->len = len;
+}
+
 /* A file of 70,000 one-byte records: the TAPE DUMP trailer's 16-bit count
  * holds 4,464, the 32-bit count 70,000, and the 32-bit count wins; both
  * formats and both containers carry it. */
@@ -170,17 +186,8 @@ static void test_cms_tape_write_read_counts(void **state)
             cms_tape_file f;
             tape_got g;
             diag e;
-            memset(&f, 0, sizeof f);
             memset(&g, 0, sizeof g);
-            strcpy(f.id.fn, "MANY");
-            strcpy(f.id.ft, "DATA");
-            f.id.mode = 'A';
-            f.id.num = '2';
-            f.recfm = 'F';
-            f.lrecl = 1;
-            f.count = 70000;
-            f.data = stream;
-            f.len = 70000;
+            t_tape_file(&f, "MANY", "DATA", '2', 'F', 1, 70000, stream, 70000);
             strcpy(f.date, "1985-03-04 05:06:07");
             cms_tape_writer_init(&w, kinds[k], (cms_aws_comp)comp, sink_tb, &t);
             diag_init(&e);
@@ -214,17 +221,8 @@ static void test_cms_tape_count_rule(void **state)
     diag e;
     size_t tr;
     (void)state;
-    memset(&f, 0, sizeof f);
     memset(&g, 0, sizeof g);
-    strcpy(f.id.fn, "A");
-    strcpy(f.id.ft, "B");
-    f.id.mode = 'A';
-    f.id.num = '1';
-    f.recfm = 'F';
-    f.lrecl = 80;
-    f.count = 3;
-    f.data = (const unsigned char *)calloc(240, 1);
-    f.len = 240;
+    t_tape_file(&f, "A", "B", '1', 'F', 80, 3, (const unsigned char *)calloc(240, 1), 240);
     cms_tape_writer_init(&w, CMS_TAPE_DUMP, CMS_AWS_PLAIN, sink_tb, &t);
     diag_init(&e);
     assert_int_equal(cms_tape_write_file(&w, &f, &e), 0);
@@ -382,14 +380,6 @@ static void test_cms_import_transaction(void **state)
     assert_int_equal(reports, 0);
     assert_int_equal(t_count_files(dir), 1);        /* only the deck: nothing imported */
     /* a binary V file on a tape: kept byte for byte, mode number 3 */
-    memset(&f, 0, sizeof f);
-    strcpy(f.id.fn, "PROG");
-    strcpy(f.id.ft, "MODULE");
-    f.id.mode = 'A';
-    f.id.num = '3';
-    f.recfm = 'V';
-    f.lrecl = 16;
-    f.count = 2;
     {
         static unsigned char s[2 + 16 + 2 + 4];
         s[0] = 0;
@@ -398,8 +388,7 @@ static void test_cms_import_transaction(void **state)
         s[18] = 0;
         s[19] = 4;
         memcpy(s + 20, bin + 12, 4);
-        f.data = s;
-        f.len = sizeof s;
+        t_tape_file(&f, "PROG", "MODULE", '3', 'V', 16, 2, s, sizeof s);
         cms_tape_writer_init(&w, CMS_TAPE_VMFPLC2, CMS_AWS_BZIP2, sink_tb, &t);
         assert_int_equal(cms_tape_write_file(&w, &f, &e), 0);
         cms_tape_writer_end(&w);
