@@ -88,25 +88,13 @@ static int attr_line(cms_attr *a, const char *s, size_t len, const char *name, l
     return 0;
 }
 
-int cms_attr_read(const char *path, cms_attr *a, diag *err)
+int cms_attr_parse(const char *data, size_t len, const char *name, cms_attr *a, diag *err)
 {
     cms_attr r;
-    char *p = cms_attr_path(path), *data = NULL;
-    size_t len = 0, pos = 0;
+    size_t pos = 0;
     long line = 0;
-    int rc;
-    if (!p)
-        return diag_at(err, DIAG_IO, path, 0, 0, "out of memory");
+    int rc = 0;
     memset(&r, 0, sizeof r);
-    if (access(p, F_OK) != 0) {
-        mem_free(p);
-        *a = r;
-        return 0;
-    }
-    if ((rc = infile_read_all(p, ATTR_MAX_BYTES, &data, &len, err))) {
-        mem_free(p);
-        return rc;
-    }
     r.present = 1;
     while (pos < len && !rc) {
         const char *s = data + pos, *nl = memchr(s, '\n', len - pos);
@@ -115,18 +103,35 @@ int cms_attr_read(const char *path, cms_attr *a, diag *err)
         line++;
         if (line == 1) {
             if (n != strlen(ATTR_MAGIC) || memcmp(s, ATTR_MAGIC, n) != 0)
-                rc = diag_at(err, DIAG_INPUT, p, 1, 1, "not a maprt attribute file "
+                rc = diag_at(err, DIAG_INPUT, name, 1, 1, "not a maprt attribute file "
                              "(first line must be '" ATTR_MAGIC "')");
             continue;
         }
         if (n)
-            rc = attr_line(&r, s, n, p, line, err);
+            rc = attr_line(&r, s, n, name, line, err);
     }
     if (!rc && line == 0)
-        rc = diag_at(err, DIAG_INPUT, p, 0, 0, "empty attribute file");
-    mem_free(data);
-    mem_free(p);
+        rc = diag_at(err, DIAG_INPUT, name, 0, 0, "empty attribute file");
     if (!rc)
         *a = r;
+    return rc;
+}
+
+int cms_attr_read(const char *path, cms_attr *a, diag *err)
+{
+    char *p = cms_attr_path(path), *data = NULL;
+    size_t len = 0;
+    int rc;
+    if (!p)
+        return diag_at(err, DIAG_IO, path, 0, 0, "out of memory");
+    if (access(p, F_OK) != 0) {
+        mem_free(p);
+        memset(a, 0, sizeof *a);
+        return 0;
+    }
+    if (!(rc = infile_read_all(p, ATTR_MAX_BYTES, &data, &len, err)))
+        rc = cms_attr_parse(data, len, p, a, err);
+    mem_free(data);
+    mem_free(p);
     return rc;
 }

@@ -14,6 +14,7 @@
  * dots, which no fileid's host name does). */
 #ifndef CMS_ATTR_H
 #define CMS_ATTR_H
+#include <stddef.h>
 #include "util/diag.h"
 
 #define CMS_ATTR_SUFFIX ".cms"
@@ -34,6 +35,9 @@ char *cms_attr_path(const char *path);
  * a->present = 0 and status 0. Errors: DIAG_INPUT with file:line:col for a
  * malformed sidecar, DIAG_IO. */
 int cms_attr_read(const char *path, cms_attr *a, diag *err);
+
+/* Parses sidecar text (data, len bytes; name labels the diagnostics). */
+int cms_attr_parse(const char *data, size_t len, const char *name, cms_attr *a, diag *err);
 
 /* Writes the sidecar of path (committed through util/outfile). */
 int cms_attr_write(const char *path, const cms_attr *a, diag *err);

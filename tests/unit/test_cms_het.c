@@ -435,6 +435,34 @@ static void test_cms_import_transaction(void **state)
     t_rmdir(dir);
 }
 
+/* Sidecar text: accepted as formatted, errors placed by line and column. */
+static void test_cms_attr_parse(void **state)
+{
+    static const char good[] = "maprt-cms-attributes 1\nform binary\nrecfm V\nlrecl 80\nmode 2\n"
+                               "date 2022-01-07 19:57:00\n";
+    cms_attr a;
+    char buf[256];
+    diag e;
+    (void)state;
+    diag_init(&e);
+    assert_int_equal(cms_attr_parse(good, strlen(good), "x.cms", &a, &e), 0);
+    assert_int_equal(a.binary, 1);
+    assert_int_equal(a.recfm, 'V');
+    assert_int_equal(a.lrecl, 80);
+    assert_int_equal(a.num, '2');
+    assert_string_equal(a.date, "2022-01-07 19:57:00");
+    assert_int_equal(cms_attr_format(&a, buf, sizeof buf), strlen(good));
+    assert_string_equal(buf, good);
+    assert_int_equal(cms_attr_parse("maprt-cms-attributes 1\nlrecl 0\n", 31, "y.cms", &a, &e),
+                     DIAG_INPUT);
+    assert_int_equal(e.line, 2);
+    assert_int_equal(e.col, 7);
+    assert_string_equal(e.msg, "lrecl must be 1..65535");
+    diag_init(&e);
+    assert_int_equal(cms_attr_parse("recfm F\n", 8, "z.cms", &a, &e), DIAG_INPUT);
+    assert_int_equal(e.line, 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -445,6 +473,7 @@ int main(void)
         cmocka_unit_test(test_cms_tape_real_layouts),
         cmocka_unit_test(test_cms_punch_single_byte),
         cmocka_unit_test(test_cms_import_transaction),
+        cmocka_unit_test(test_cms_attr_parse),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
