@@ -45,6 +45,25 @@ grep -q '^WATFIV HELPCMD A2    F    80       18 records  (vmfplc2, code page 104
   "$d/h1.log" || fail "real tape: WATFIV HELPCMD line"
 [ "$(grep -c 'binary' "$d/h1.log")" -eq 0 ] || fail "real tape: a file read as binary"
 
+# a broken previous-length chain: tapemap reads the tape anyway, and so does
+# maprt, with one warning naming the offset (the second block's header)
+cp "$d/help.aws" "$d/broken.aws"
+printf '\377' | dd of="$d/broken.aws" bs=1 seek=$((6 + 77 + 2)) conv=notrunc 2>/dev/null
+tapemap "$d/broken.aws" > "$d/map" 2>&1 || fail "tapemap refuses the broken chain"
+rm -rf "$d/b"; mkdir "$d/b"
+"$MAPRT" cms import "$d/broken.aws" --disk A="$d/b" > "$d/b.log" 2> "$d/b.err" || fail "broken chain: $(cat "$d/b.err")"
+grep -q '^46 files imported' "$d/b.log" || fail "broken chain: $(tail -1 "$d/b.log")"
+grep -q "broken.aws: offset 83: warning: AWS header: previous length" "$d/b.err" || fail "no warning: $(cat "$d/b.err")"
+diff -r "$d/h1" "$d/b" >/dev/null || fail "broken chain imports differently"
+
+# an import never replaces its own input: a tape named like a CMS file on the disk
+mkdir "$d/self"
+cp tests/fuzz/seeds/fuzz_cms_tape/vmfplc2 "$d/self/plcf.data"
+"$MAPRT" cms import "$d/self/plcf.data" --disk A="$d/self" --replace > "$d/self.log" 2>&1; rc=$?
+[ $rc -eq 1 ] || fail "importing over the input: exit $rc"
+grep -q "would replace the input" "$d/self.log" || fail "self import: $(cat "$d/self.log")"
+cmp -s tests/fuzz/seeds/fuzz_cms_tape/vmfplc2 "$d/self/plcf.data" || fail "the input was changed"
+
 # a disk with a binary file (the seed tape's hole) next to the help files
 cp "$d"/h1/* "$d/h2/" 2>/dev/null
 "$MAPRT" cms import tests/fuzz/seeds/fuzz_cms_tape/dump --disk A="$d/h2" >/dev/null || fail "seed import"
