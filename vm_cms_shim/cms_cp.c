@@ -3,9 +3,9 @@
 #include <iconv.h>
 #include <string.h>
 
-static cms_cp cp037 = {CMS_CP_037, {0}, {0}};
-static cms_cp cp1047 = {CMS_CP_1047, {0}, {0}};
-static int ready037, ready1047;
+static cms_cp cp_037 = {CMS_CP_037, {0}, {0}};
+static cms_cp cp_1047 = {CMS_CP_1047, {0}, {0}};
+static int cp_ready037, cp_ready1047;
 
 /* Fills cp's tables by converting each byte with iconv. */
 static int cp_build(cms_cp *cp, const char *name, diag *err)
@@ -37,17 +37,17 @@ static int cp_build(cms_cp *cp, const char *name, diag *err)
 int cms_cp_get(cms_cp_id id, const cms_cp **cp, diag *err)
 {
     if (id == CMS_CP_037) {
-        if (!ready037 && cp_build(&cp037, "IBM037", err))
+        if (!cp_ready037 && cp_build(&cp_037, "IBM037", err))
             return DIAG_IO;
-        ready037 = 1;
-        *cp = &cp037;
+        cp_ready037 = 1;
+        *cp = &cp_037;
         return 0;
     }
     if (id == CMS_CP_1047) {
-        if (!ready1047 && cp_build(&cp1047, "IBM1047", err))
+        if (!cp_ready1047 && cp_build(&cp_1047, "IBM1047", err))
             return DIAG_IO;
-        ready1047 = 1;
-        *cp = &cp1047;
+        cp_ready1047 = 1;
+        *cp = &cp_1047;
         return 0;
     }
     return diag_at(err, DIAG_USAGE, "", 0, 0, "unknown code page %d (use 037 or 1047)", (int)id);

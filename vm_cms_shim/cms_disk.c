@@ -58,8 +58,7 @@ int cms_disks_set(cms_disks *d, const char *spec, diag *err)
     return disk_put(d, l - 'A', spec + 2, err);
 }
 
-/* Joins dir and name into a new string. */
-static char *path_join(const char *dir, const char *name)
+char *cms_disks_join(const char *dir, const char *name)
 {
     size_t a = strlen(dir), b = strlen(name);
     char *p = mem_alloc(a + b + 2);
@@ -71,7 +70,7 @@ static char *path_join(const char *dir, const char *name)
     return p;
 }
 
-static int not_accessed(const cms_fileid *id, char letter, const char *dir, diag *err)
+static int disk_not_accessed(const cms_fileid *id, char letter, const char *dir, diag *err)
 {
     char t[CMS_FILEID_TEXT_MAX];
     cms_fileid_format(id, t, sizeof t);
@@ -121,39 +120,31 @@ static int disk_lookup(const char *dir, const cms_fileid *id, char **name)
     return 1;
 }
 
-/* Resolves id on one disk: 1 found (*path set), 0 not there, else status. */
+/* Resolves id on one disk: 0 with *found 1 (and *path set) or 0 (not
+ * there), else DIAG_INPUT (disk not accessed) or DIAG_IO. A disk that is not
+ * accessed counts as "not there" when quiet_missing_dir (a '*' search). */
 static int disk_find_on(const cms_disks *d, int i, const cms_fileid *id, char **path,
-                        int quiet_missing_dir, diag *err)
+                        int quiet_missing_dir, int *found, diag *err)
 {
     char *name = NULL, *p;
     int r;
-    if (!d->dir[i]) {
-        if (quiet_missing_dir)
-            return 0;
-        not_accessed(id, (char)('A' + i), NULL, err);
-        return -DIAG_INPUT;
-    }
+    *found = 0;
+    if (!d->dir[i])
+        return quiet_missing_dir ? 0 : disk_not_accessed(id, (char)('A' + i), NULL, err);
     r = disk_lookup(d->dir[i], id, &name);
-    if (r == -1) {
-        if (quiet_missing_dir)
-            return 0;
-        not_accessed(id, (char)('A' + i), d->dir[i], err);
-        return -DIAG_INPUT;
-    }
-    if (r == -2) {
-        diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
-        return -DIAG_IO;
-    }
+    if (r == -1)
+        return quiet_missing_dir ? 0 : disk_not_accessed(id, (char)('A' + i), d->dir[i], err);
+    if (r == -2)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
     if (r == 0)
         return 0;
-    p = path_join(d->dir[i], name);
+    p = cms_disks_join(d->dir[i], name);
     mem_free(name);
-    if (!p) {
-        diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
-        return -DIAG_IO;
-    }
+    if (!p)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
     *path = p;
-    return 1;
+    *found = 1;
+    return 0;
 }
 
 int cms_disks_find(const cms_disks *d, const cms_fileid *id, char **path,
@@ -169,12 +160,12 @@ int cms_disks_find(const cms_disks *d, const cms_fileid *id, char **path,
         lo = hi = id->mode - 'A';
     }
     for (i = lo; i <= hi; i++) {
-        int k = disk_find_on(d, i, id, path, id->mode == '*', err);
-        if (k < 0)
-            return -k;
+        int hit, rc = disk_find_on(d, i, id, path, id->mode == '*', &hit, err);
+        if (rc)
+            return rc;
         if (d->dir[i])
             any = 1;
-        if (k == 1) {
+        if (hit) {
             r.mode = (char)('A' + i);
             if (found)
                 *found = r;
@@ -182,7 +173,7 @@ int cms_disks_find(const cms_disks *d, const cms_fileid *id, char **path,
         }
     }
     if (!any)
-        return not_accessed(id, '*', NULL, err);
+        return disk_not_accessed(id, '*', NULL, err);
     diag_at(err, DIAG_INPUT, cms_fileid_format(id, t, sizeof t), 0, 0,
             "file not found (RC 28)");
     err->rc = CMS_RC_NOTFOUND;
@@ -193,7 +184,7 @@ int cms_disks_output_path(const cms_disks *d, const cms_fileid *id, char **path,
 {
     char name[2 * CMS_NAME_MAX + 2], t[CMS_FILEID_TEXT_MAX];
     size_t k;
-    int i, r;
+    int i, r, found;
     if (id->mode == '*') {
         diag_at(err, DIAG_INPUT, cms_fileid_format(id, t, sizeof t), 0, 0,
                 "invalid filemode (RC 24): an output file needs a disk letter, not '*'");
@@ -201,27 +192,26 @@ int cms_disks_output_path(const cms_disks *d, const cms_fileid *id, char **path,
         return DIAG_INPUT;
     }
     i = id->mode - 'A';
-    r = disk_find_on(d, i, id, path, 0, err);
-    if (r < 0)
-        return -r;
-    if (r == 1)
+    if ((r = disk_find_on(d, i, id, path, 0, &found, err)) != 0)
+        return r;
+    if (found)
         return 0;
     snprintf(name, sizeof name, "%s.%s", id->fn, id->ft);
     for (k = 0; name[k]; k++)
         if (name[k] >= 'A' && name[k] <= 'Z')
             name[k] = (char)(name[k] - 'A' + 'a');
-    if (!(*path = path_join(d->dir[i], name)))
+    if (!(*path = cms_disks_join(d->dir[i], name)))
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
     return 0;
 }
 
-static int name_cmp(const void *a, const void *b)
+static int disk_name_cmp(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
 /* Reads "fn.ft" host names into a fileid on disk letter; 0 if not one. */
-static int host_name_fileid(const char *name, char letter, cms_fileid *id)
+static int disk_host_fileid(const char *name, char letter, cms_fileid *id)
 {
     const char *dot = strchr(name, '.');
     char fn[CMS_NAME_MAX + 1], ft[CMS_NAME_MAX + 1], fm[3];
@@ -260,13 +250,13 @@ int cms_disks_list(const cms_disks *d, char letter,
     strcpy(id.fn, "*");
     strcpy(id.ft, "*");
     if (letter < 'A' || letter > 'Z' || !d->dir[letter - 'A'])
-        return not_accessed(&id, letter, NULL, err);
+        return disk_not_accessed(&id, letter, NULL, err);
     if (!(dh = opendir(d->dir[letter - 'A'])))
-        return not_accessed(&id, letter, d->dir[letter - 'A'], err);
+        return disk_not_accessed(&id, letter, d->dir[letter - 'A'], err);
     while ((e = readdir(dh)) != NULL && n < CMS_DISK_MAX_ENTRIES) {
         cms_fileid fid;
         char *c;
-        if (!host_name_fileid(e->d_name, letter, &fid))
+        if (!disk_host_fileid(e->d_name, letter, &fid))
             continue;
         if (mem_grow((void **)&names, &cap, n + 1, sizeof *names) || !(c = mem_strdup(e->d_name))) {
             rc = diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
@@ -276,14 +266,14 @@ int cms_disks_list(const cms_disks *d, char letter,
     }
     closedir(dh);
     if (!rc && n)
-        qsort(names, n, sizeof *names, name_cmp);
+        qsort(names, n, sizeof *names, disk_name_cmp);
     for (i = 0; i < n && !rc; i++) {
-        char *p = path_join(d->dir[letter - 'A'], names[i]);
+        char *p = cms_disks_join(d->dir[letter - 'A'], names[i]);
         if (!p) {
             rc = diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
             break;
         }
-        host_name_fileid(names[i], letter, &id);
+        disk_host_fileid(names[i], letter, &id);
         rc = fn(ctx, p, &id);
         mem_free(p);
     }

@@ -40,6 +40,9 @@ int cms_disks_find(const cms_disks *d, const cms_fileid *id, char **path,
  * (CMS_RC_NOTACCESSED; CMS_RC_BADMODE for mode '*'). */
 int cms_disks_output_path(const cms_disks *d, const cms_fileid *id, char **path, diag *err);
 
+/* dir "/" name as a new string (mem_free it); NULL when out of memory. */
+char *cms_disks_join(const char *dir, const char *name);
+
 /* Calls fn(ctx, host_name, id) for every host file in disk `letter` whose name
  * is a valid "fn.ft" fileid, in byte order of the host names; stops at the
  * first non-zero return and returns it. Errors: CMS_RC_NOTACCESSED. */

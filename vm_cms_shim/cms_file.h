@@ -24,10 +24,16 @@ typedef struct cms_file_info {
     cms_cp_id cp;                     /* EBCDIC page, CMS_CP_AUTO for text */
     int has_header;                   /* a :READ card led the deck */
     cms_fileid header;
+    int binary;                       /* raw records (a binary file, see cms_attr) */
+    char date[20];                    /* date last written from the sidecar, or "" */
 } cms_file_info;
 
 /* Opens an existing file for reading and decodes it whole (at most
- * CMS_FILE_MAX_BYTES). o may be NULL (auto-detect everything). Errors: CMS
+ * CMS_FILE_MAX_BYTES). o may be NULL (auto-detect everything). An attribute
+ * sidecar (cms_attr) beside the host file gives the mode number and date,
+ * marks a binary file (its bytes are then the CMS record stream, records
+ * returned raw), and gives a text file its RECFM and LRECL when the records
+ * fit them. Errors: CMS
  * RCs for fileids (err->rc), DIAG_IO when the host file cannot be read,
  * DIAG_INPUT for undecodable content (located in the file). */
 int cms_file_open_read(cms_file **f, const cms_disks *d, const char *arg,
@@ -48,6 +54,9 @@ typedef struct cms_write_opts {
     cms_cp_id cp;                 /* for EBCDIC forms; AUTO = 1047 */
     const cms_fileid *header;     /* punch form: the :READ card's fileid;
                                      NULL = the output fileid, if it is one */
+    int binary;                   /* records are raw bytes (ebcdic/vstream forms) */
+    const char *date;             /* for the sidecar; NULL = none */
+    char num;                     /* mode number for the sidecar; 0 = none */
 } cms_write_opts;
 
 /* Creates (or replaces, on close) a file. recfm 'F' or 'V', 1 <= lrecl <=
@@ -61,12 +70,26 @@ int cms_file_open_write(cms_file **f, const cms_disks *d, const char *arg, char 
  * records); a longer record is a DIAG_INPUT error naming the record. */
 int cms_file_write(cms_file *f, const char *rec, size_t len, diag *err);
 
+/* Writes bytes as they are ahead of the records (control cards such as the
+ * CP ID card of a reader deck). */
+void cms_file_put_raw(cms_file *f, const void *data, size_t len);
+
 /* Closes: a written file is committed (renamed into place) unless a write
- * failed; a read file is released. f is freed in every case. */
+ * failed; a read file is released. f is freed in every case. A binary file,
+ * or one with a mode number other than 1, gets an attribute sidecar; a stale
+ * sidecar of the replaced file is removed. */
 int cms_file_close(cms_file *f, diag *err);
 
 /* Releases without committing (written data is discarded). NULL is fine. */
 void cms_file_abort(cms_file *f);
+
+/* The CMS record stream of a file opened for reading, as a CMS disk or tape
+ * holds it: F = the records padded to LRECL, V = each record led by its
+ * 2-byte length; text records in EBCDIC page cp, binary records as they
+ * are. *data (mem_free it) and *len on success; DIAG_INPUT names the record
+ * that does not fit or has no EBCDIC code. */
+int cms_file_stream(const cms_file *f, cms_cp_id cp, unsigned char **data, size_t *len,
+                    diag *err);
 
 /* STATE: information about an existing file (decodes it). */
 int cms_file_stat(const cms_disks *d, const char *arg, const cms_decode_opts *o,

@@ -14,6 +14,17 @@ static int name_path(const char *arg, cms_name *n, diag *err)
     return 0;
 }
 
+/* Fills n for a resolved fileid (path owned by n from here on). */
+static int name_fileid(cms_name *n, char *path, const cms_fileid *id)
+{
+    memset(n, 0, sizeof *n);
+    n->path = path;
+    n->is_fileid = 1;
+    n->id = *id;
+    cms_fileid_format(id, n->label, sizeof n->label);
+    return 0;
+}
+
 int cms_name_input(const cms_disks *d, const char *arg, cms_name *n, diag *err)
 {
     cms_fileid id, found;
@@ -30,12 +41,7 @@ int cms_name_input(const cms_disks *d, const char *arg, cms_name *n, diag *err)
     cms_fileid_parse(arg, &id, err);
     if ((rc = cms_disks_find(d, &id, &path, &found, err)))
         return rc;
-    memset(n, 0, sizeof *n);
-    n->path = path;
-    n->is_fileid = 1;
-    n->id = found;
-    cms_fileid_format(&found, n->label, sizeof n->label);
-    return 0;
+    return name_fileid(n, path, &found);
 }
 
 int cms_name_output(const cms_disks *d, const char *arg, cms_name *n, diag *err)
@@ -48,12 +54,7 @@ int cms_name_output(const cms_disks *d, const char *arg, cms_name *n, diag *err)
     cms_fileid_parse(arg, &id, err);
     if ((rc = cms_disks_output_path(d, &id, &path, err)))
         return rc;
-    memset(n, 0, sizeof *n);
-    n->path = path;
-    n->is_fileid = 1;
-    n->id = id;
-    cms_fileid_format(&id, n->label, sizeof n->label);
-    return 0;
+    return name_fileid(n, path, &id);
 }
 
 void cms_name_free(cms_name *n)

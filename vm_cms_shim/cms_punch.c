@@ -4,7 +4,8 @@
 
 int cms_punch_split(const unsigned char *buf, size_t n, const cms_decode_opts *o,
                     const char *name,
-                    int (*fn)(void *ctx, const cms_fileid *id, const cms_recs *recs, diag *err),
+                    int (*fn)(void *ctx, const cms_fileid *id, const cms_recs *recs, long card,
+                              diag *err),
                     void *ctx, long *nfiles, diag *err)
 {
     cms_decode_opts d;
@@ -69,7 +70,7 @@ int cms_punch_split(const unsigned char *buf, size_t n, const cms_decode_opts *o
             part.header = id;
             if (!rc) {
                 files++;
-                rc = fn(ctx, &id, &part, err);
+                rc = fn(ctx, &id, &part, first > 0 ? (long)first : 1L, err);
             }
             cms_recs_free(&part);
         }

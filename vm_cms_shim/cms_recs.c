@@ -5,7 +5,7 @@
 
 /* Characters (UTF-8 code points) in n bytes of host text: the column count
  * of a record, which is what LRECL limits. */
-static size_t text_cols(const char *s, size_t n)
+static size_t recs_text_cols(const char *s, size_t n)
 {
     size_t i, c = 0;
     for (i = 0; i < n; i++)
@@ -13,18 +13,18 @@ static size_t text_cols(const char *s, size_t n)
     return c;
 }
 
-static const char *const form_names[] = {"auto", "text", "punch", "ebcdic", "vstream", "rdw"};
+static const char *const recs_form_names[] = {"auto", "text", "punch", "ebcdic", "vstream", "rdw"};
 
 const char *cms_form_name(cms_form f)
 {
-    return (unsigned)f < sizeof form_names / sizeof form_names[0] ? form_names[f] : "?";
+    return (unsigned)f < sizeof recs_form_names / sizeof recs_form_names[0] ? recs_form_names[f] : "?";
 }
 
 int cms_form_parse(const char *s, cms_form *f)
 {
     unsigned i;
-    for (i = 0; i < sizeof form_names / sizeof form_names[0]; i++)
-        if (!strcmp(s, form_names[i])) {
+    for (i = 0; i < sizeof recs_form_names / sizeof recs_form_names[0]; i++)
+        if (!strcmp(s, recs_form_names[i])) {
             *f = (cms_form)i;
             return 1;
         }
@@ -67,21 +67,21 @@ typedef struct recs_build {
     size_t tmpcap;
 } recs_build;
 
-static void build_free(recs_build *b)
+static void recs_build_free(recs_build *b)
 {
     cms_recs_free(&b->r);
     mem_free(b->tmp);
 }
 
 /* Hands the finished set to out (the only write to *out). */
-static int build_done(recs_build *b, cms_recs *out)
+static int recs_build_done(recs_build *b, cms_recs *out)
 {
     mem_free(b->tmp);
     *out = b->r;
     return 0;
 }
 
-static int build_tmp(recs_build *b, size_t need, diag *err)
+static int recs_build_tmp(recs_build *b, size_t need, diag *err)
 {
     if (need && mem_grow((void **)&b->tmp, &b->tmpcap, need, 1))
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
@@ -91,11 +91,11 @@ static int build_tmp(recs_build *b, size_t need, diag *err)
 /* Decodes one EBCDIC record through cp and appends it. A bad byte is placed
  * by (recno, column) for cards (offset < 0), else by its byte offset in the
  * stream (offset = where the record's data starts). */
-static int build_ebcdic(recs_build *b, const cms_cp *cp, const unsigned char *data, size_t len,
+static int recs_build_ebcdic(recs_build *b, const cms_cp *cp, const unsigned char *data, size_t len,
                         const char *name, long recno, long long offset, diag *err)
 {
     size_t bad = 0, n;
-    if (build_tmp(b, 2 * len, err))
+    if (recs_build_tmp(b, 2 * len, err))
         return DIAG_IO;
     n = cms_cp_decode(cp, data, len, b->tmp, &bad);
     if (n == (size_t)-1) {
@@ -130,16 +130,30 @@ int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *na
     return 1;
 }
 
-/* cms_recs_read_card with errors as negative statuses. */
-static int punch_header(const char *s, size_t len, cms_fileid *id, const char *name,
-                        long recno, diag *err)
+/* A possible :READ card as record recno of a single-file decode, with
+ * `prior` records already taken: 1 when it named the file (kept in b), 0 when
+ * it is no :READ card, or a DIAG status (a bad fileid, or a second :READ
+ * card, which only deck splitting accepts). */
+static int recs_take_header(recs_build *b, const char *s, size_t len, size_t prior,
+                            const char *name, long recno, diag *err)
 {
-    int h = cms_recs_read_card(s, len, id, name, recno, err);
-    return h < 0 ? -DIAG_INPUT : h;
+    cms_fileid id;
+    int h = cms_recs_read_card(s, len, &id, name, recno, err);
+    if (h <= 0)
+        return h < 0 ? -1 : 0;
+    if (b->r.has_header || prior) {
+        diag_at(err, DIAG_INPUT, name, recno, 1,
+                "a second :READ card: this deck holds several files "
+                "(split it with 'maprt cms import')");
+        return -1;
+    }
+    b->r.has_header = 1;
+    b->r.header = id;
+    return 1;
 }
 
 /* Text and punch decks: one line per record. */
-static int decode_text(const unsigned char *buf, size_t n, cms_form form, int forced,
+static int recs_decode_text(const unsigned char *buf, size_t n, cms_form form, int forced,
                        int raw, const char *name, cms_recs *out, diag *err)
 {
     recs_build b;
@@ -151,51 +165,41 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
         const unsigned char *s = buf + pos, *nl = memchr(s, '\n', n - pos);
         size_t len = nl ? (size_t)(nl - s) : n - pos;
         const unsigned char *z;
-        int h;
         pos += len + (nl ? 1 : 0);
         if (len && s[len - 1] == '\r')
             len--;
         recno++;
         if (len > CMS_LRECL_MAX) {
-            build_free(&b);
+            recs_build_free(&b);
             return diag_at(err, DIAG_INPUT, name, recno, CMS_LRECL_MAX + 1,
                            "record longer than %d bytes", CMS_LRECL_MAX);
         }
         if (!forced && (z = memchr(s, 0, len)) != NULL) {
-            build_free(&b);
+            recs_build_free(&b);
             return diag_at(err, DIAG_INPUT, name, recno, (long)(z - s) + 1,
                            "NUL byte: not a text file, nor a valid V or RDW stream "
                            "(choose the form with --read-as)");
         }
         if (!raw && (form == CMS_FORM_PUNCH || (!forced && recno == 1))) {
-            cms_fileid id;
-            h = punch_header((const char *)s, len, &id, name, recno, err);
+            int h = recs_take_header(&b, (const char *)s, len, b.r.count, name, recno, err);
             if (h < 0) {
-                build_free(&b);
-                return -h;
-            }
-            if (h && (b.r.has_header || b.r.count)) {
-                build_free(&b);
-                return diag_at(err, DIAG_INPUT, name, recno, 1,
-                               "a second :READ card: this deck holds several files "
-                               "(split it with 'maprt cms import')");
+                recs_build_free(&b);
+                return err->status;
             }
             if (h) {
-                b.r.has_header = 1;
-                b.r.header = id;
                 form = CMS_FORM_PUNCH;
                 continue;
             }
         }
         if (form == CMS_FORM_PUNCH) {
-            size_t cols = text_cols((const char *)s, len);
+            size_t cols = recs_text_cols((const char *)s, len);
             if (cols > CMS_CARD_COLS) {
-                build_free(&b);
+                recs_build_free(&b);
                 return diag_at(err, DIAG_INPUT, name, recno, CMS_CARD_COLS + 1,
                                "card longer than %d columns", CMS_CARD_COLS);
             }
-            if (build_tmp(&b, len + CMS_CARD_COLS - cols, err)) {
-                build_free(&b);
+            if (recs_build_tmp(&b, len + CMS_CARD_COLS - cols, err)) {
+                recs_build_free(&b);
                 return DIAG_IO;
             }
             memcpy(b.tmp, s, len);
@@ -204,7 +208,7 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
             s = (const unsigned char *)b.tmp;
         }
         {
-            long cols = (long)text_cols((const char *)s, len);
+            long cols = (long)recs_text_cols((const char *)s, len);
             if (b.r.count && cols != first_cols)
                 same = 0;
             if (!b.r.count)
@@ -213,7 +217,7 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
                 b.r.lrecl = cols;
         }
         if (cms_recs_append(&b.r, &b.textcap, &b.reccap, (const char *)s, len, err)) {
-            build_free(&b);
+            recs_build_free(&b);
             return DIAG_IO;
         }
     }
@@ -224,12 +228,59 @@ static int decode_text(const unsigned char *buf, size_t n, cms_form form, int fo
         b.r.recfm = 'F';
         b.r.lrecl = CMS_CARD_COLS;
     }
-    return build_done(&b, out);
+    return recs_build_done(&b, out);
+}
+
+/* 1 if buf is valid UTF-8 (no overlong forms, no surrogates checked: a
+ * single-byte code page's text fails on its first byte above X'7F' far more
+ * often than it passes). */
+static int recs_utf8_valid(const unsigned char *b, size_t n)
+{
+    size_t i = 0;
+    while (i < n) {
+        unsigned c = b[i];
+        size_t k = c < 0x80 ? 0 : (c & 0xE0) == 0xC0 ? 1 : (c & 0xF0) == 0xE0 ? 2
+                 : (c & 0xF8) == 0xF0 ? 3 : 4;
+        if (k == 4 || (k == 1 && c < 0xC2) || n - i - 1 < k)
+            return 0;
+        for (i++; k; k--, i++)
+            if ((b[i] & 0xC0) != 0x80)
+                return 0;
+    }
+    return 1;
+}
+
+/* Host lines: UTF-8, or else a single-byte code page, read as ISO 8859-1
+ * (code page 819, the host side of Hercules' 819/037 and 819/1047 tables):
+ * Hercules' ASCII punch writes one byte per column, so a cent or not sign
+ * arrives as one byte, which is converted to UTF-8 here before the columns
+ * are counted. */
+static int recs_decode_lines(const unsigned char *buf, size_t n, cms_form form, int forced,
+                             int raw, const char *name, cms_recs *out, diag *err)
+{
+    unsigned char *u;
+    size_t i, k = 0;
+    int rc;
+    if (recs_utf8_valid(buf, n))
+        return recs_decode_text(buf, n, form, forced, raw, name, out, err);
+    if (!(u = mem_alloc(2 * n)))
+        return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
+    for (i = 0; i < n; i++) {
+        if (buf[i] < 0x80) {
+            u[k++] = buf[i];
+        } else {
+            u[k++] = (unsigned char)(0xC0 | (buf[i] >> 6));
+            u[k++] = (unsigned char)(0x80 | (buf[i] & 0x3F));
+        }
+    }
+    rc = recs_decode_text(u, k, form, forced, raw, name, out, err);
+    mem_free(u);
+    return rc;
 }
 
 /* Resolves the code page to use: the forced one, or the one the bytes
  * decide (1047 when they do not matter). */
-static int pick_cp(cms_cp_id want, unsigned evidence, const char *name, const cms_cp **cp, diag *err)
+static int recs_pick_cp(cms_cp_id want, unsigned evidence, const char *name, const cms_cp **cp, diag *err)
 {
     cms_cp_id id = want != CMS_CP_AUTO ? want : cms_cp_choose(evidence, CMS_CP_1047);
     if (id == CMS_CP_AUTO)
@@ -241,7 +292,7 @@ static int pick_cp(cms_cp_id want, unsigned evidence, const char *name, const cm
 
 /* EBCDIC cards of lrecl bytes, no line ends; a leading :READ card names the
  * file. */
-static int decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_id want,
+static int recs_decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_id want,
                         int raw, const char *name, cms_recs *out, diag *err)
 {
     static const unsigned char read_e[5] = {0x7A, 0xD9, 0xC5, 0xC1, 0xC4};
@@ -252,50 +303,40 @@ static int decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_i
         return diag_offset(err, DIAG_INPUT, name, (long long)(n - n % L),
                            "the deck ends with a partial card of %zu bytes (cards are %zu bytes)",
                            n % L, L);
-    if (pick_cp(want, cms_cp_scan(buf, n), name, &cp, err))
+    if (recs_pick_cp(want, cms_cp_scan(buf, n), name, &cp, err))
         return err->status;
     memset(&b, 0, sizeof b);
     ncards = n / L;
     for (i = 0; i < ncards; i++) {
         const unsigned char *c = buf + i * L;
         long recno = (long)i + 1;
-        if (build_ebcdic(&b, cp, c, L, name, recno, -1, err)) {
-            build_free(&b);
+        if (recs_build_ebcdic(&b, cp, c, L, name, recno, -1, err)) {
+            recs_build_free(&b);
             return err->status;
         }
         if (!raw && memcmp(c, read_e, 5) == 0) {
-            cms_fileid id;
             cms_rec *r = &b.r.rec[b.r.count - 1];
-            int h = punch_header(b.r.text + r->off, r->len, &id, name, recno, err);
+            int h = recs_take_header(&b, b.r.text + r->off, r->len, b.r.count - 1, name, recno, err);
             if (h < 0) {
-                build_free(&b);
-                return -h;
+                recs_build_free(&b);
+                return err->status;
             }
-            if (h && (b.r.has_header || b.r.count > 1)) {
-                build_free(&b);
-                return diag_at(err, DIAG_INPUT, name, recno, 1,
-                               "a second :READ card: this deck holds several files "
-                               "(split it with 'maprt cms import')");
-            }
-            if (h) {
-                b.r.has_header = 1;
-                b.r.header = id;
+            if (h)
                 b.r.count--;
-            }
         }
     }
     b.r.form = CMS_FORM_EBCDIC;
     b.r.cp = cp->id;
     b.r.recfm = 'F';
     b.r.lrecl = lrecl;
-    return build_done(&b, out);
+    return recs_build_done(&b, out);
 }
 
 /* Walks a V (rdw = 0) or RDW (rdw = 1) length chain. With b == NULL only
  * checks that the chain covers buf exactly with EBCDIC text records and
  * returns 1/0 without diagnostics, OR-ing code-page evidence into *ev. Otherwise decodes into b
  * and returns 0 or a status. */
-static int walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
+static int recs_walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
                       recs_build *b, const cms_cp *cp, const char *name, diag *err)
 {
     size_t pos = 0, hdr = rdw ? 4 : 2;
@@ -340,7 +381,7 @@ static int walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
                     return 0;
             *ev |= cms_cp_scan(buf + pos + hdr, len);
         } else {
-            if (build_ebcdic(b, cp, buf + pos + hdr, len, name, recno, (long long)(pos + hdr), err))
+            if (recs_build_ebcdic(b, cp, buf + pos + hdr, len, name, recno, (long long)(pos + hdr), err))
                 return err->status;
             if ((long)len > b->r.lrecl)
                 b->r.lrecl = (long)len;
@@ -350,24 +391,24 @@ static int walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
     return b ? 0 : recno > 0;
 }
 
-static int decode_chain(const unsigned char *buf, size_t n, int rdw, cms_cp_id want,
+static int recs_decode_chain(const unsigned char *buf, size_t n, int rdw, cms_cp_id want,
                         const char *name, cms_recs *out, diag *err)
 {
     unsigned ev = 0;
     const cms_cp *cp;
     recs_build b;
-    walk_chain(buf, n, rdw, &ev, NULL, NULL, name, err);
-    if (pick_cp(want, ev, name, &cp, err))
+    recs_walk_chain(buf, n, rdw, &ev, NULL, NULL, name, err);
+    if (recs_pick_cp(want, ev, name, &cp, err))
         return err->status;
     memset(&b, 0, sizeof b);
-    if (walk_chain(buf, n, rdw, &ev, &b, cp, name, err)) {
-        build_free(&b);
+    if (recs_walk_chain(buf, n, rdw, &ev, &b, cp, name, err)) {
+        recs_build_free(&b);
         return err->status;
     }
     b.r.form = rdw ? CMS_FORM_RDW : CMS_FORM_VSTREAM;
     b.r.cp = cp->id;
     b.r.recfm = 'V';
-    return build_done(&b, out);
+    return recs_build_done(&b, out);
 }
 
 /* Content test for EBCDIC cards: every byte a graphic EBCDIC code (X'40' or
@@ -416,95 +457,181 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
         unsigned ev = 0;
         int v, rdw;
         if (cms_recs_looks_ebcdic(buf, n, (size_t)lrecl))
-            return decode_cards(buf, n, lrecl, cp, raw, name, out, err);
-        v = walk_chain(buf, n, 0, &ev, NULL, NULL, name, err);
-        rdw = walk_chain(buf, n, 1, &ev, NULL, NULL, name, err);
+            return recs_decode_cards(buf, n, lrecl, cp, raw, name, out, err);
+        v = recs_walk_chain(buf, n, 0, &ev, NULL, NULL, name, err);
+        rdw = recs_walk_chain(buf, n, 1, &ev, NULL, NULL, name, err);
         if (v && rdw)
             return diag_at(err, DIAG_INPUT, name, 0, 0,
                            "the bytes read both as a CMS V stream and as an RDW stream "
                            "(choose with --read-as vstream or --read-as rdw)");
         if (v || rdw)
-            return decode_chain(buf, n, rdw, cp, name, out, err);
-        return decode_text(buf, n, CMS_FORM_TEXT, 0, raw, name, out, err);
+            return recs_decode_chain(buf, n, rdw, cp, name, out, err);
+        return recs_decode_lines(buf, n, CMS_FORM_TEXT, 0, raw, name, out, err);
     }
     switch (form) {
     case CMS_FORM_TEXT:
     case CMS_FORM_PUNCH:
-        return decode_text(buf, n, form, 1, raw, name, out, err);
+        return recs_decode_lines(buf, n, form, 1, raw, name, out, err);
     case CMS_FORM_EBCDIC:
-        return decode_cards(buf, n, lrecl, cp, raw, name, out, err);
+        return recs_decode_cards(buf, n, lrecl, cp, raw, name, out, err);
     case CMS_FORM_VSTREAM:
     case CMS_FORM_RDW:
-        return decode_chain(buf, n, form == CMS_FORM_RDW, cp, name, out, err);
+        return recs_decode_chain(buf, n, form == CMS_FORM_RDW, cp, name, out, err);
     default:
         return diag_at(err, DIAG_USAGE, name, 0, 0, "unknown form %d", (int)form);
     }
 }
 
-int cms_recs_from_stream(const unsigned char *s, size_t n, char recfm, long lrecl,
-                         long count, cms_cp_id want, const char *name, cms_recs *out,
-                         diag *err)
+/* Walks a CMS byte stream record by record: checks that count records
+ * (count < 0: exactly the whole stream) fit, and calls visit for each
+ * (visit may be NULL). Returns 0 or a status; visit's non-zero return stops
+ * the walk and is returned. */
+typedef int (*recs_visit)(void *ctx, long recno, const unsigned char *rec, size_t len,
+                          size_t offset, diag *err);
+
+static int recs_walk_stream(const unsigned char *s, size_t n, char recfm, long lrecl, long count,
+                            const char *name, recs_visit visit, void *ctx, long *nrecs, diag *err)
 {
-    const cms_cp *cp;
-    recs_build b;
-    unsigned ev = 0;
     size_t pos = 0;
     long i;
+    int rc;
     if (lrecl < 1 || lrecl > CMS_LRECL_MAX)
         return diag_at(err, DIAG_INPUT, name, 0, 0, "LRECL %ld is outside 1..%d", lrecl, CMS_LRECL_MAX);
-    if (count < 0)
-        return diag_at(err, DIAG_INPUT, name, 0, 0, "negative record count");
+    if (recfm != 'F' && recfm != 'V')
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "RECFM X'%02X' is neither F nor V",
+                       (unsigned char)recfm);
     if (recfm == 'F') {
-        if ((unsigned long long)lrecl * (unsigned long long)count > n)
+        if (count < 0) {
+            if (n % (size_t)lrecl)
+                return diag_offset(err, DIAG_INPUT, name, (long long)(n - n % (size_t)lrecl),
+                                   "%zu bytes are no whole number of %ld-byte records", n, lrecl);
+            count = (long)(n / (size_t)lrecl);
+        } else if ((unsigned long long)lrecl * (unsigned long long)count > n) {
             return diag_at(err, DIAG_INPUT, name, 0, 0,
                            "%ld records of %ld bytes need %llu bytes, the data holds %zu",
                            count, lrecl, (unsigned long long)lrecl * (unsigned long long)count, n);
-        ev = cms_cp_scan(s, (size_t)lrecl * (size_t)count);
-    } else if (recfm == 'V') {
-        for (i = 0; i < count; i++) {
-            size_t len;
-            if (n - pos < 2)
-                return diag_offset(err, DIAG_INPUT, name, (long long)pos,
-                                   "record %ld of %ld: data ends before its length", i + 1, count);
-            len = ((size_t)s[pos] << 8) | s[pos + 1];
-            if (len == 0 || (long)len > lrecl || len > n - pos - 2)
-                return diag_offset(err, DIAG_INPUT, name, (long long)pos,
-                                   "record %ld of %ld: bad length %zu (LRECL %ld, %zu bytes left)",
-                                   i + 1, count, len, lrecl, n - pos - 2);
-            ev |= cms_cp_scan(s + pos + 2, len);
-            pos += 2 + len;
         }
-    } else {
-        return diag_at(err, DIAG_INPUT, name, 0, 0, "RECFM X'%02X' is neither F nor V",
-                       (unsigned char)recfm);
     }
-    if (pick_cp(want, ev, name, &cp, err))
-        return err->status;
-    memset(&b, 0, sizeof b);
-    for (i = 0, pos = 0; i < count; i++) {
+    for (i = 0; count < 0 ? pos < n : i < count; i++) {
         size_t len = (size_t)lrecl, hdr = 0;
         if (recfm == 'V') {
+            if (n - pos < 2)
+                return diag_offset(err, DIAG_INPUT, name, (long long)pos,
+                                   "record %ld: data ends before its length", i + 1);
             len = ((size_t)s[pos] << 8) | s[pos + 1];
             hdr = 2;
+            if (len == 0 || (long)len > lrecl || len > n - pos - 2)
+                return diag_offset(err, DIAG_INPUT, name, (long long)pos,
+                                   "record %ld: bad length %zu (LRECL %ld, %zu bytes left)",
+                                   i + 1, len, lrecl, n - pos - 2);
         }
-        if (build_ebcdic(&b, cp, s + pos + hdr, len, name, i + 1, (long long)(pos + hdr), err)) {
-            build_free(&b);
-            return err->status;
-        }
+        if (visit && (rc = visit(ctx, i + 1, s + pos + hdr, len, pos + hdr, err)))
+            return rc;
         pos += hdr + len;
     }
+    if (nrecs)
+        *nrecs = i;
+    return 0;
+}
+
+static int recs_visit_scan(void *ctx, long recno, const unsigned char *rec, size_t len,
+                           size_t offset, diag *err)
+{
+    (void)recno;
+    (void)offset;
+    (void)err;
+    *(unsigned *)ctx |= cms_cp_scan(rec, len);
+    return 0;
+}
+
+typedef struct recs_stream_ctx {
+    recs_build *b;
+    const cms_cp *cp;      /* NULL: keep bytes */
+    const char *name;
+} recs_stream_ctx;
+
+static int recs_visit_build(void *ctx, long recno, const unsigned char *rec, size_t len,
+                            size_t offset, diag *err)
+{
+    recs_stream_ctx *c = ctx;
+    if (!c->cp)
+        return cms_recs_append(&c->b->r, &c->b->textcap, &c->b->reccap, (const char *)rec, len, err);
+    return recs_build_ebcdic(c->b, c->cp, rec, len, c->name, recno, (long long)offset, err) ?
+           err->status : 0;
+}
+
+int cms_recs_from_stream(const unsigned char *s, size_t n, char recfm, long lrecl,
+                         long count, cms_cp_id want, int binary, const char *name,
+                         cms_recs *out, diag *err)
+{
+    recs_stream_ctx c;
+    recs_build b;
+    unsigned ev = 0;
+    int rc;
+    memset(&c, 0, sizeof c);
+    if (!binary) {
+        if ((rc = recs_walk_stream(s, n, recfm, lrecl, count, name, recs_visit_scan, &ev, NULL, err)))
+            return rc;
+        if (recs_pick_cp(want, ev, name, &c.cp, err))
+            return err->status;
+    }
+    memset(&b, 0, sizeof b);
+    c.b = &b;
+    c.name = name;
+    if ((rc = recs_walk_stream(s, n, recfm, lrecl, count, name, recs_visit_build, &c, NULL, err))) {
+        recs_build_free(&b);
+        return rc;
+    }
     b.r.form = recfm == 'V' ? CMS_FORM_VSTREAM : CMS_FORM_EBCDIC;
-    b.r.cp = cp->id;
+    b.r.cp = c.cp ? c.cp->id : CMS_CP_AUTO;
     b.r.recfm = recfm;
     b.r.lrecl = lrecl;
-    return build_done(&b, out);
+    b.r.binary = binary != 0;
+    return recs_build_done(&b, out);
+}
+
+typedef struct recs_control_ctx {
+    long recno, col;
+    unsigned char byte;
+} recs_control_ctx;
+
+static int recs_visit_control(void *ctx, long recno, const unsigned char *rec, size_t len,
+                              size_t offset, diag *err)
+{
+    recs_control_ctx *c = ctx;
+    size_t i;
+    (void)offset;
+    (void)err;
+    for (i = 0; i < len; i++)
+        if (rec[i] < 0x40 || rec[i] == 0xFF) {
+            c->recno = recno;
+            c->col = (long)i + 1;
+            c->byte = rec[i];
+            return 1;
+        }
+    return 0;
+}
+
+int cms_recs_stream_control(const unsigned char *s, size_t n, char recfm, long lrecl,
+                            long count, long *recno, long *col, unsigned char *byte)
+{
+    recs_control_ctx c;
+    diag d;
+    diag_init(&d);
+    memset(&c, 0, sizeof c);
+    if (recs_walk_stream(s, n, recfm, lrecl, count, "", recs_visit_control, &c, NULL, &d) != 1)
+        return 0;
+    *recno = c.recno;
+    *col = c.col;
+    *byte = c.byte;
+    return 1;
 }
 
 /* ---- encoders ---------------------------------------------------------- */
 
-static const char blanks[64] = "                                                                ";
+static const char recs_blanks[64] = "                                                                ";
 
-static void put_pad(cms_sink sink, void *ctx, unsigned char c, size_t n)
+static void recs_put_pad(cms_sink sink, void *ctx, unsigned char c, size_t n)
 {
     unsigned char buf[64];
     memset(buf, c, sizeof buf);
@@ -517,7 +644,7 @@ static void put_pad(cms_sink sink, void *ctx, unsigned char c, size_t n)
 
 /* Encodes rec to EBCDIC through the sink in chunks (no allocation). The
  * record was checked by a counting pass, so encoding cannot fail here. */
-static void put_ebcdic(const cms_cp *cp, const char *rec, size_t len, cms_sink sink, void *ctx)
+static void recs_put_ebcdic(const cms_cp *cp, const char *rec, size_t len, cms_sink sink, void *ctx)
 {
     unsigned char buf[256];
     size_t i = 0, bad;
@@ -536,7 +663,7 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
                            const char *rec, size_t len, cms_sink sink, void *ctx,
                            const char *name, long recno, diag *err)
 {
-    size_t bad = 0, elen = text_cols(rec, len);
+    size_t bad = 0, elen = recs_text_cols(rec, len);
     if (f == CMS_FORM_EBCDIC || f == CMS_FORM_VSTREAM) {
         elen = cms_cp_encode(cp, rec, len, NULL, &bad);
         if (elen == (size_t)-1)
@@ -550,9 +677,9 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
     case CMS_FORM_TEXT:
         sink(ctx, rec, len);
         if (recfm == 'F')
-            put_pad(sink, ctx, ' ', (size_t)lrecl - elen);
+            recs_put_pad(sink, ctx, ' ', (size_t)lrecl - elen);
         else if (len == 0)
-            sink(ctx, blanks, 1);
+            sink(ctx, recs_blanks, 1);
         sink(ctx, "\n", 1);
         return 0;
     case CMS_FORM_PUNCH:
@@ -565,8 +692,8 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
         sink(ctx, "\n", 1);
         return 0;
     case CMS_FORM_EBCDIC:
-        put_ebcdic(cp, rec, len, sink, ctx);
-        put_pad(sink, ctx, 0x40, (size_t)lrecl - elen);
+        recs_put_ebcdic(cp, rec, len, sink, ctx);
+        recs_put_pad(sink, ctx, 0x40, (size_t)lrecl - elen);
         return 0;
     case CMS_FORM_VSTREAM: {
         size_t out = recfm == 'F' ? (size_t)lrecl : (elen ? elen : 1);
@@ -574,13 +701,38 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
         hw[0] = (unsigned char)(out >> 8);
         hw[1] = (unsigned char)(out & 0xFF);
         sink(ctx, hw, 2);
-        put_ebcdic(cp, rec, len, sink, ctx);
-        put_pad(sink, ctx, 0x40, out - elen);
+        recs_put_ebcdic(cp, rec, len, sink, ctx);
+        recs_put_pad(sink, ctx, 0x40, out - elen);
         return 0;
     }
     default:
         return diag_at(err, DIAG_USAGE, name, 0, 0, "cannot write form '%s'", cms_form_name(f));
     }
+}
+
+int cms_recs_encode_binary(cms_form f, char recfm, long lrecl, const char *rec, size_t len,
+                           cms_sink sink, void *ctx, const char *name, long recno, diag *err)
+{
+    unsigned char hw[2];
+    if (f != CMS_FORM_EBCDIC && f != CMS_FORM_VSTREAM)
+        return diag_at(err, DIAG_USAGE, name, 0, 0,
+                       "a binary file is written as ebcdic, vstream or a tape, not as %s",
+                       cms_form_name(f));
+    if ((long)len > lrecl)
+        return diag_at(err, DIAG_INPUT, name, recno, lrecl + 1,
+                       "record of %zu bytes is longer than LRECL %ld", len, lrecl);
+    if (len == 0 && recfm == 'V')
+        return diag_at(err, DIAG_INPUT, name, recno, 1, "empty record (CMS V files have none)");
+    if (f == CMS_FORM_VSTREAM) {
+        size_t out = recfm == 'F' ? (size_t)lrecl : len;
+        hw[0] = (unsigned char)(out >> 8);
+        hw[1] = (unsigned char)(out & 0xFF);
+        sink(ctx, hw, 2);
+    }
+    sink(ctx, rec, len);
+    if (recfm == 'F')
+        recs_put_pad(sink, ctx, 0x00, (size_t)lrecl - len);
+    return 0;
 }
 
 void cms_recs_punch_header(const cms_fileid *id, cms_sink sink, void *ctx)

@@ -51,6 +51,7 @@ typedef struct cms_recs {
     cms_cp_id cp;         /* page used for EBCDIC forms, else CMS_CP_AUTO */
     int has_header;       /* a :READ card named the file */
     cms_fileid header;
+    int binary;           /* records are raw bytes (EBCDIC or binary), not host text */
 } cms_recs;
 
 /* Decodes a whole host file (buf, n bytes) into *out; name labels the
@@ -68,10 +69,20 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
 
 /* Decodes a CMS byte stream as stored on disk/tape: F = count records of
  * lrecl bytes (bytes beyond are block padding), V = count records with
- * 2-byte lengths. EBCDIC through cp. Errors name `name` with byte offsets. */
+ * 2-byte lengths. count < 0: the stream holds whole records exactly (a
+ * binary host file). Text records are EBCDIC through cp; binary != 0 keeps
+ * the bytes as they are (r->binary set). Errors name `name` with byte
+ * offsets. */
 int cms_recs_from_stream(const unsigned char *s, size_t n, char recfm, long lrecl,
-                         long count, cms_cp_id cp, const char *name, cms_recs *out,
-                         diag *err);
+                         long count, cms_cp_id cp, int binary, const char *name,
+                         cms_recs *out, diag *err);
+
+/* The first byte of a valid CMS byte stream (as cms_recs_from_stream
+ * accepts it) that no text record may hold (below X'40', or X'FF'): 1 with
+ * its record number, column (1-based) and value, or 0 if every record is
+ * text. */
+int cms_recs_stream_control(const unsigned char *s, size_t n, char recfm, long lrecl,
+                            long count, long *recno, long *col, unsigned char *byte);
 
 void cms_recs_free(cms_recs *r);
 
@@ -106,6 +117,12 @@ typedef void (*cms_sink)(void *ctx, const void *data, size_t len);
 int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
                            const char *rec, size_t len, cms_sink sink, void *ctx,
                            const char *name, long recno, diag *err);
+
+/* Writes one binary record (raw bytes) in form f: ebcdic (the bytes, F
+ * padded with X'00' to lrecl) or vstream (2-byte length + bytes). Text and
+ * punch forms refuse binary records (DIAG_USAGE). */
+int cms_recs_encode_binary(cms_form f, char recfm, long lrecl, const char *rec, size_t len,
+                           cms_sink sink, void *ctx, const char *name, long recno, diag *err);
 
 /* The :READ card for id (80 columns, ASCII, trailing blanks stripped) + "\n". */
 void cms_recs_punch_header(const cms_fileid *id, cms_sink sink, void *ctx);

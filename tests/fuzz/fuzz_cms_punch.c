@@ -5,10 +5,11 @@
 #include <string.h>
 #include "vm_cms_shim/cms_punch.h"
 
-static int on_file(void *ctx, const cms_fileid *id, const cms_recs *r, diag *err)
+static int on_file(void *ctx, const cms_fileid *id, const cms_recs *r, long card, diag *err)
 {
     (void)ctx;
     (void)err;
+    (void)card;
     return (id->fn[0] == 0 || r->lrecl != CMS_CARD_COLS) ? DIAG_INPUT : 0;
 }
 
