@@ -55,6 +55,12 @@ static int attr_line(cms_attr *a, const char *s, size_t len, const char *name, l
     const char *sp = memchr(s, ' ', len);
     size_t k = sp ? (size_t)(sp - s) : len, v = sp ? len - k - 1 : 0;
     char *end;
+    size_t i;
+    for (i = 0; i < len; i++)
+        if ((unsigned char)s[i] < 0x20 || (unsigned char)s[i] > 0x7E)
+            return diag_at(err, DIAG_INPUT, name, line, (long)i + 1,
+                           "byte X'%02X' in an attribute file (printable ASCII only)",
+                           (unsigned char)s[i]);
     if (!sp || k >= sizeof key || v == 0 || v >= sizeof val)
         return diag_at(err, DIAG_INPUT, name, line, 1, "expected 'key value'");
     memcpy(key, s, k);
@@ -79,8 +85,15 @@ static int attr_line(cms_attr *a, const char *s, size_t len, const char *name, l
             return diag_at(err, DIAG_INPUT, name, line, (long)k + 2, "mode number must be 0..6");
         a->num = val[0];
     } else if (!strcmp(key, "date")) {
-        if (v >= sizeof a->date)
-            return diag_at(err, DIAG_INPUT, name, line, (long)k + 2, "date too long");
+        static const char shape[] = "dddd-dd-dd dd:dd:dd";
+        size_t j;
+        int ok = v == 16 || v == 19;
+        for (j = 0; ok && j < v; j++)
+            ok = shape[j] == 'd' ? val[j] >= '0' && val[j] <= '9' : val[j] == shape[j];
+        if (!ok)
+            return diag_at(err, DIAG_INPUT, name, line, (long)k + 2,
+                           "date must read YYYY-MM-DD HH:MM[:SS]");
+        memset(a->date, 0, sizeof a->date);
         memcpy(a->date, val, v + 1);
     } else {
         return diag_at(err, DIAG_INPUT, name, line, 1, "unknown attribute '%s'", key);

@@ -334,20 +334,19 @@ static int import_scan_disk(const char *dir, import_map *m, char ***names, size_
             closedir(dh);
             return diag_at(err, DIAG_IO, dir, 0, 0, "out of memory");
         }
-        (*names)[*n] = copy;
+        (*names)[(*n)++] = copy;       /* the caller frees names[0 .. *n) */
         /* among case variants the byte-wise smallest wins, as cms_disks_find chooses */
         {
-            long prev = import_map_put(m, key, (long)*n);
+            long prev = import_map_put(m, key, (long)*n - 1);
             if (prev == -2) {
                 closedir(dh);
                 return diag_at(err, DIAG_IO, dir, 0, 0, "out of memory");
             }
             if (prev >= 0 && strcmp(copy, (*names)[prev]) < 0) {
                 int f;
-                m->val[import_map_slot(m, key, &f)] = (long)*n;
+                m->val[import_map_slot(m, key, &f)] = (long)*n - 1;
             }
         }
-        (*n)++;
     }
     closedir(dh);
     return 0;
