@@ -24,7 +24,7 @@
 /* Limits (docs/pds.md explains each). */
 #define PDS_MAX_ATTR        65535    /* largest region attribute id */
 #define PDS_COORD_MAX       64.0     /* |coordinate| after transforms */
-#define PDS_MAX_NODES       65536    /* CPG nodes */
+#define PDS_MAX_NODES       262144   /* CPG nodes */
 #define PDS_MAX_DEPTH       64       /* CPG operator nesting */
 #define PDS_MAX_VERTICES    65536    /* one polygon or one flattened curve */
 #define PDS_MAX_SIDE        32768    /* pixel array side */

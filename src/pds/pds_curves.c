@@ -15,7 +15,7 @@ typedef struct curves {
     size_t n;
 } curves;
 
-static void release(void *impl)
+static void pds_curves_release(void *impl)
 {
     curves *c = impl;
     size_t i;
@@ -28,7 +28,7 @@ static void release(void *impl)
     mem_free(c);
 }
 
-static int compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_curves_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     const pds_curves *d = &def->curves;
     curves *c = mem_calloc(1, sizeof *c);
@@ -53,11 +53,11 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
     *out = c;
     return 0;
 oom:
-    release(c);
+    pds_curves_release(c);
     return NS(pds_oom)(def, file, err);
 }
 
-static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+static int32_t pds_curves_locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const curves *c = impl;
     size_t i;
@@ -67,7 +67,7 @@ static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
     return PDS_NONE;
 }
 
-static size_t bytes(const void *impl)
+static size_t pds_curves_bytes(const void *impl)
 {
     const curves *c = impl;
     size_t s = sizeof *c + c->n * (sizeof *c->rings + sizeof *c->attr), i;
@@ -76,4 +76,10 @@ static size_t bytes(const void *impl)
     return s;
 }
 
-const NS(pds_kind_ops) NS(pds_curves_ops) = { "curves", compile, locate, bytes, release };
+const NS(pds_kind_ops) NS(pds_curves_ops) = {
+    .name = "curves",
+    .compile = pds_curves_compile,
+    .locate = pds_curves_locate,
+    .bytes = pds_curves_bytes,
+    .release = pds_curves_release,
+};

@@ -7,7 +7,7 @@
 
 /* Builds the subtree over vertices i0..i1 at nodes[r->nnodes]; returns its
  * index. Recursion depth is O(log n) because splits stay in the middle half. */
-static uint32_t build(NS(pds_ring) *r, uint32_t i0, uint32_t i1)
+static uint32_t pds_ring_build_node(NS(pds_ring) *r, uint32_t i0, uint32_t i1)
 {
     uint32_t idx = (uint32_t)r->nnodes++, i, k, lo, hi;
     NS(pds_ring_node) *nd = &r->nodes[idx];
@@ -45,7 +45,7 @@ static uint32_t build(NS(pds_ring) *r, uint32_t i0, uint32_t i1)
         }
     }
     {
-        uint32_t left = build(r, i0, k), right = build(r, k, i1);
+        uint32_t left = pds_ring_build_node(r, i0, k), right = pds_ring_build_node(r, k, i1);
         r->nodes[idx].left = left;
         r->nodes[idx].right = right;
     }
@@ -67,7 +67,17 @@ int NS(pds_ring_build)(NS(pds_ring) *r, const double *pts, size_t n)
         r->uv[2 * i + 1] = num_from_d(pts[2 * (i % n) + 1]);
     }
     r->n = n;
-    build(r, 0, (uint32_t)n);
+    pds_ring_build_node(r, 0, (uint32_t)n);
+    {
+        /* 2 n + 1 bounds the node count; keep only what was used (a CPG
+         * holds one ring per polygon leaf). */
+        NS(pds_ring_node) *fit = mem_calloc(r->nnodes, sizeof *fit);
+        if (fit) {
+            memcpy(fit, r->nodes, r->nnodes * sizeof *fit);
+            mem_free(r->nodes);
+            r->nodes = fit;
+        }
+    }
     return 0;
 }
 
@@ -80,7 +90,7 @@ void NS(pds_ring_free)(NS(pds_ring) *r)
 
 /* Crossing parity of the chain under node idx: 0 or 1, or 2 when the point
  * lies on the chain. */
-static int parity(const NS(pds_ring) *r, uint32_t idx, num u, num v, unsigned long *steps)
+static int pds_ring_parity(const NS(pds_ring) *r, uint32_t idx, num u, num v, unsigned long *steps)
 {
     const NS(pds_ring_node) *nd = &r->nodes[idx];
     const num *p = r->uv;
@@ -100,14 +110,14 @@ static int parity(const NS(pds_ring) *r, uint32_t idx, num u, num v, unsigned lo
         }
         return c;
     }
-    c = parity(r, nd->left, u, v, steps);
+    c = pds_ring_parity(r, nd->left, u, v, steps);
     if (c == 2)
         return 2;
-    e = parity(r, nd->right, u, v, steps);
+    e = pds_ring_parity(r, nd->right, u, v, steps);
     return e == 2 ? 2 : c ^ e;
 }
 
 int NS(pds_ring_inside)(const NS(pds_ring) *r, num u, num v, unsigned long *steps)
 {
-    return parity(r, 0, u, v, steps) != 0;
+    return pds_ring_parity(r, 0, u, v, steps) != 0;
 }

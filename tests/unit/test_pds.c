@@ -444,6 +444,265 @@ static void test_pds_cpg_visits_grow_logarithmically(void **state)
         }
 }
 
+/* The same squares listed in spatial, reverse and shuffled order: the
+ * operand order must decide priority only, not the cost. */
+static double order_steps(size_t n, int order, const pds_mode_ops *m, uint64_t *s)
+{
+    pds_def d;
+    size_t side = (size_t)ceil(sqrt((double)n)), *kids = mem_calloc(n, sizeof *kids), i;
+    double cell = 1.0 / (double)side;
+    unsigned long steps = 0;
+    void *p;
+    int t;
+    assert_non_null(kids);
+    pds_def_init(&d, PDS_CPG, L0);
+    for (i = 0; i < n; i++) {
+        size_t x = i % side, y = i / side;
+        kids[i] = (size_t)pds_cpg_rect(&d, x * cell + cell / 8, y * cell + cell / 8, (x + 1) * cell - cell / 8,
+                                       (y + 1) * cell - cell / 8, (int32_t)(i % 5), L0);
+    }
+    if (order == 1)
+        for (i = 0; i < n / 2; i++) {
+            size_t tmp = kids[i];
+            kids[i] = kids[n - 1 - i];
+            kids[n - 1 - i] = tmp;
+        }
+    else if (order == 2)
+        for (i = n; i-- > 1;) {
+            size_t j = (size_t)(test_rand(s) % (i + 1)), tmp = kids[i];
+            kids[i] = kids[j];
+            kids[j] = tmp;
+        }
+    pds_cpg_op_node(&d, PDS_CPG_UNION, kids, n, PDS_INHERIT, L0);
+    p = compile_or_fail(m, &d);
+    for (t = 0; t < 2000; t++)
+        m->locate_steps(p, test_uniform(s, 0, 1), test_uniform(s, 0, 1), &steps);
+    m->free(p);
+    pds_def_free(&d);
+    mem_free(kids);
+    return (double)steps / 2000;
+}
+
+static void test_pds_cpg_visits_independent_of_order(void **state)
+{
+    uint64_t s = test_seed("test_pds_cpg_visits_independent_of_order");
+    static const size_t ns[3] = { 10, 1000, 10000 };
+    static const char *const names[3] = { "spatial", "reverse", "shuffled" };
+    int o, i, mi;
+    (void)state;
+    for (mi = 0; mi < NMODES; mi++)
+        for (o = 0; o < 3; o++) {
+            double v10 = 0;
+            for (i = 0; i < 3; i++) {
+                double v = order_steps(ns[i], o, modes[mi], &s);
+                printf("# %s %s N=%zu mean node visits %.2f\n", modes[mi]->mode, names[o], ns[i], v);
+                if (i == 0)
+                    v10 = v;
+                else
+                    assert_true(v <= 3 * v10);
+            }
+        }
+}
+
+/* Exact reference in the mode itself: each leaf compiled alone (same
+ * placement, so the same rounded shape) answers membership, and the
+ * operator rules are applied here by plain recursion over the definition. */
+typedef struct brute {
+    const pds_def *d;
+    const pds_mode_ops *m;
+    void **leaf;          /* per definition node; NULL for operators */
+} brute;
+
+static int brute_node(const brute *b, size_t i, double u, double v, int32_t *attr)
+{
+    const pds_cpg_node *n = &b->d->cpg.nodes[i];
+    size_t k;
+    int in = 0;
+    int32_t dummy;
+    if (n->op < PDS_CPG_UNION) {
+        int32_t id = b->m->locate(b->leaf[i], u, v);
+        if (id == PDS_NONE)
+            return 0;
+        *attr = n->op == PDS_CPG_NESTED ? id : n->attr;
+        return 1;
+    }
+    if (n->op == PDS_CPG_UNION) {
+        for (k = 0; k < n->count && !in; k++)
+            in = brute_node(b, b->d->cpg.kids[n->first + k], u, v, attr);
+    } else {
+        in = brute_node(b, b->d->cpg.kids[n->first], u, v, attr);
+        for (k = 1; k < n->count && in; k++)
+            if (brute_node(b, b->d->cpg.kids[n->first + k], u, v, &dummy) != (n->op == PDS_CPG_INTER))
+                in = 0;
+    }
+    if (in && n->attr != PDS_INHERIT)
+        *attr = n->attr;
+    return in;
+}
+
+static void brute_init(brute *b, const pds_def *d, const pds_mode_ops *m)
+{
+    double (*pl)[6] = mem_calloc(d->cpg.nnodes, sizeof *pl);
+    int *depth = mem_calloc(d->cpg.nnodes, sizeof *depth);
+    size_t i;
+    assert_true(pl && depth);
+    b->d = d;
+    b->m = m;
+    b->leaf = mem_calloc(d->cpg.nnodes, sizeof *b->leaf);
+    assert_non_null(b->leaf);
+    pds_cpg_placements(d, pl, depth);
+    for (i = 0; i < d->cpg.nnodes; i++) {
+        const pds_cpg_node *n = &d->cpg.nodes[i];
+        pds_def one;
+        long k;
+        if (depth[i] < 0 || n->op >= PDS_CPG_UNION)
+            continue;
+        pds_def_init(&one, PDS_CPG, L0);
+        if (n->op == PDS_CPG_RECT)
+            k = pds_cpg_rect(&one, n->p[0], n->p[1], n->p[2], n->p[3], 0, L0);
+        else if (n->op == PDS_CPG_ELLIPSE)
+            k = pds_cpg_ellipse(&one, n->p[0], n->p[1], n->p[2], n->p[3], 0, L0);
+        else if (n->op == PDS_CPG_POLYGON)
+            k = pds_cpg_polygon(&one, d->cpg.pts + 2 * n->first, n->count, 0, L0);
+        else
+            k = pds_cpg_nested(&one, n->sub, L0);
+        assert_true(k == 0);
+        memcpy(one.cpg.nodes[0].xf, pl[i], sizeof pl[i]);
+        b->leaf[i] = compile_or_fail(m, &one);
+        pds_def_free(&one);
+    }
+    mem_free(pl);
+    mem_free(depth);
+}
+
+static void brute_free(brute *b)
+{
+    size_t i;
+    for (i = 0; i < b->d->cpg.nnodes; i++)
+        if (b->leaf[i])
+            b->m->free(b->leaf[i]);
+    mem_free(b->leaf);
+}
+
+/* A small leaf near (cu, cv), on the 1/256 grid half the time so that
+ * lookups on its edges are exact in every mode. */
+static size_t brute_leaf(pds_def *d, uint64_t *s, double cu, double cv, double r)
+{
+    long idx;
+    int32_t id = test_rand(s) % 9 == 0 ? PDS_NONE : next_attr++;
+    switch (test_rand(s) % 4) {
+    case 0:
+        idx = pds_cpg_rect(d, floor((cu - r) * 256) / 256, floor((cv - r) * 256) / 256,
+                           ceil((cu + r) * 256) / 256, ceil((cv + r * 0.6) * 256) / 256, id, L0);
+        break;
+    case 1:
+        idx = pds_cpg_rect(d, cu - r, cv - r * 0.5, cu + r * 0.7, cv + r, id, L0);
+        break;
+    case 2:
+        idx = pds_cpg_ellipse(d, cu, cv, r, r * test_uniform(s, 0.4, 1.4), id, L0);
+        break;
+    default: {
+        double pts[10];
+        int k;
+        for (k = 0; k < 5; k++) {
+            double ang = 2 * M_PI * (k + test_uniform(s, 0.1, 0.9)) / 5;
+            pts[2 * k] = cu + r * cos(ang);
+            pts[2 * k + 1] = cv + r * sin(ang);
+        }
+        idx = pds_cpg_polygon(d, pts, 5, id, L0);
+    }
+    }
+    assert_true(idx >= 0);
+    return (size_t)idx;
+}
+
+/* A big union of n leaves in random order; sometimes written as a chain
+ * of two-operand unions, some leaves grouped in sub-unions. */
+static size_t brute_union(pds_def *d, uint64_t *s, size_t n, double rmax, int32_t attr)
+{
+    size_t *kids = mem_calloc(n, sizeof *kids), i, root;
+    assert_non_null(kids);
+    for (i = 0; i < n; i++)
+        kids[i] = brute_leaf(d, s, test_uniform(s, 0, 1), test_uniform(s, 0, 1), test_uniform(s, 0.01, rmax));
+    if (test_rand(s) % 3 == 0 && n <= 60) {
+        root = kids[n - 1];      /* UNION(k0, UNION(k1, ... UNION(kn-2, kn-1))) */
+        for (i = n - 1; i-- > 0;) {
+            size_t two[2];
+            two[0] = kids[i];
+            two[1] = root;
+            root = (size_t)pds_cpg_op_node(d, PDS_CPG_UNION, two, 2, i == 0 ? attr : PDS_INHERIT, L0);
+        }
+    } else {
+        for (i = 0; i + 4 < n; i += 7)
+            if (test_rand(s) % 3 == 0) {
+                size_t sub = (size_t)pds_cpg_op_node(d, PDS_CPG_UNION, kids + i, 3,
+                                                     test_rand(s) % 3 ? PDS_INHERIT : next_attr++, L0);
+                kids[i] = sub;
+                memmove(kids + i + 1, kids + i + 3, (n - i - 3) * sizeof *kids);
+                n -= 2;
+            }
+        root = (size_t)pds_cpg_op_node(d, PDS_CPG_UNION, kids, n, attr, L0);
+    }
+    mem_free(kids);
+    return root;
+}
+
+static void test_pds_cpg_index_matches_brute_force(void **state)
+{
+    uint64_t s = test_seed("test_pds_cpg_index_matches_brute_force");
+    int t, mi, i;
+    (void)state;
+    for (t = 0; t < 12; t++) {
+        pds_def d;
+        diag err;
+        size_t top[4];
+        pds_def_init(&d, PDS_CPG, L0);
+        next_attr = 0;
+        /* odd trees: large overlapping leaves, long cell lists (the hierarchy) */
+        top[0] = brute_union(&d, &s, 20 + test_rand(&s) % 300, t % 2 ? 0.45 : 0.12, PDS_INHERIT);
+        top[1] = brute_union(&d, &s, 10 + test_rand(&s) % 40, 0.12, test_rand(&s) % 2 ? PDS_INHERIT : next_attr++);
+        switch (t % 3) {
+        case 0:        /* a union of both */
+            d.cpg.root = (size_t)pds_cpg_op_node(&d, PDS_CPG_UNION, top, 2, PDS_INHERIT, L0);
+            break;
+        case 1:        /* the first minus the second and a third union */
+            top[2] = brute_union(&d, &s, 30, 0.12, PDS_INHERIT);
+            d.cpg.root = (size_t)pds_cpg_op_node(&d, PDS_CPG_DIFF, top, 3, PDS_INHERIT, L0);
+            break;
+        default:       /* intersection with a chain of intersections */
+            top[2] = brute_leaf(&d, &s, 0.5, 0.5, 0.4);
+            top[3] = (size_t)pds_cpg_op_node(&d, PDS_CPG_INTER, top + 1, 2, PDS_INHERIT, L0);
+            top[1] = top[3];
+            d.cpg.root = (size_t)pds_cpg_op_node(&d, PDS_CPG_INTER, top, 2, PDS_INHERIT, L0);
+        }
+        diag_init(&err);
+        assert_int_equal(pds_def_check(&d, "t.deck", &err), 0);
+        for (mi = 0; mi < NMODES; mi++) {
+            brute b;
+            void *p = compile_or_fail(modes[mi], &d);
+            int hits = 0;
+            brute_init(&b, &d, modes[mi]);
+            for (i = 0; i < 3000; i++) {
+                /* half the points on the 1/256 grid: on rectangle edges */
+                double u = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 257) / 256;
+                double v = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 257) / 256;
+                int32_t want = PDS_NONE, got = modes[mi]->locate(p, u, v);
+                if (!brute_node(&b, d.cpg.root, u, v, &want))
+                    want = PDS_NONE;
+                if (got != want)
+                    fail_msg("tree %d, mode %s: at (%.17g, %.17g) got %ld, brute force %ld", t,
+                             modes[mi]->mode, u, v, (long)got, (long)want);
+                hits += want != PDS_NONE;
+            }
+            if (hits < 100)
+                fail_msg("tree %d, mode %s: only %d of 3000 points in a region", t, modes[mi]->mode, hits);
+            brute_free(&b);
+            modes[mi]->free(p);
+        }
+        pds_def_free(&d);
+    }
+}
+
 /* ---- pixel array and quadtree ------------------------------------------ */
 
 typedef struct grid_ref { int w, h; const int32_t *cells; } grid_ref;
@@ -1557,6 +1816,8 @@ int main(void)
         cmocka_unit_test(test_pds_cpg_priority_rules),
         cmocka_unit_test(test_pds_cpg_boundaries_closed),
         cmocka_unit_test(test_pds_cpg_visits_grow_logarithmically),
+        cmocka_unit_test(test_pds_cpg_visits_independent_of_order),
+        cmocka_unit_test(test_pds_cpg_index_matches_brute_force),
         cmocka_unit_test(test_pds_cpg_nested_matches_reference),
         cmocka_unit_test(test_pds_cpg_nested_errors),
         cmocka_unit_test(test_pds_pixels_match_reference),
