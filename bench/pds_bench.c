@@ -7,7 +7,7 @@
  * shared). Output: one line per case,
  *     kind  size  mode  lookups_per_second  ns_per_lookup  mean_steps  bytes
  * mean_steps is the mean number of nodes / cells / edges a lookup visited.
- * Usage: pds_bench [--modes q16,f64] [--seconds S] [--quick] [--scan] [--cpg] */
+ * Usage: pds_bench [--modes q16,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -225,7 +225,9 @@ static void bench_mosaic(int n, int clustered)
     pds_def_free(&d);
 }
 
-static void bench_curve(int n, int bspline)
+/* One closed curve; strips: Ballard's strip trees answer membership
+ * instead of the box hierarchy (docs/pds.md compares the two). */
+static void bench_curve(int n, int bspline, int strips)
 {
     pds_def d;
     double *pts = mem_calloc((size_t)n, 2 * sizeof *pts);
@@ -238,7 +240,8 @@ static void bench_curve(int n, int bspline)
     }
     pds_def_init(&d, PDS_CURVES, L0);
     pds_curve_add(&d, bspline, pts, (size_t)n, 1, L0);
-    snprintf(size, sizeof size, "%s=%d", bspline ? "bspline" : "poly", n);
+    d.curves.strips = strips;
+    snprintf(size, sizeof size, "%s=%d,%s", bspline ? "bspline" : "poly", n, strips ? "strips" : "boxes");
     run("curves", size, &d);
     pds_def_free(&d);
     mem_free(pts);
@@ -246,7 +249,7 @@ static void bench_curve(int n, int bspline)
 
 int main(int argc, char **argv)
 {
-    int i, quick = 0, cpg_only = 0;
+    int i, quick = 0, only = 0;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--modes") && i + 1 < argc) {
             const char *s = argv[++i];
@@ -260,24 +263,35 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--scan"))
             scan_order = 1;
         else if (!strcmp(argv[i], "--cpg"))
-            cpg_only = 1;
+            only = 1;
+        else if (!strcmp(argv[i], "--curves"))
+            only = 2;
         else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg]\n"
+            printf("usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves]\n"
                    "Lookup rates of every PDS kind on one core.\n"
                    "  --modes LIST  numeric modes to measure (default q16,f64)\n"
                    "  --seconds S   minimum timed run per case and round (default 0.3)\n"
                    "  --quick       skip the largest size of each kind\n"
                    "  --cpg         CPG only (N = 10..100,000 in three operand orders)\n"
+                   "  --curves      curves only (box hierarchy and strip trees)\n"
                    "  --scan        points in raster order (256 x 256 pixel centres, row by\n"
                    "                row, as a renderer asks) instead of 65536 random points\n"
                    "Each case runs three rounds and reports the fastest.\n");
             return 0;
         } else {
-            fprintf(stderr, "usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg]\n");
+            fprintf(stderr, "usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves]\n");
             return 2;
         }
     }
     printf("%-10s %-16s %-4s %12s %8s %8s %10s\n", "kind", "size", "mode", "lookups/s", "ns", "steps", "bytes");
+    for (i = 0; i < 2 && only != 1; i++) {
+        bench_curve(24, 1, i);
+        bench_curve(1000, 0, i);
+        if (!quick)
+            bench_curve(60000, 0, i);
+    }
+    if (only == 2)
+        return 0;
     for (i = 0; i < 3; i++) {
         bench_cpg(5, 2, i);
         bench_cpg(10, 10, i);
@@ -286,7 +300,7 @@ int main(int argc, char **argv)
         if (!quick)
             bench_cpg(400, 250, i);
     }
-    if (cpg_only)
+    if (only == 1)
         return 0;
     bench_pixels(16);
     bench_pixels(256);
@@ -306,9 +320,5 @@ int main(int argc, char **argv)
         bench_mosaic(65536, 0);
         bench_mosaic(65536, 1);
     }
-    bench_curve(24, 1);
-    bench_curve(1000, 0);
-    if (!quick)
-        bench_curve(60000, 0);
     return 0;
 }

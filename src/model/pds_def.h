@@ -128,6 +128,9 @@ typedef struct pds_curves {
     pds_curve *curves; size_t ncurves, cap_curves;
     double *pts;       size_t npts, cap_pts;
     double tolerance;  /* B-spline flattening tolerance, (u,v) units */
+    int strips;        /* 1: Ballard's strip trees (pds_strip.h) answer membership;
+                          0: the box hierarchy of pds_ring.h */
+    double strip_width;/* strips: width tolerance of the tree (0: to the leaves) */
 } pds_curves;
 
 typedef struct pds_def {

@@ -128,6 +128,39 @@ static void test_scene_pds_texture_bump_attr(void **state)
     scene_free(s);
 }
 
+/* The paper's attribute kinds: the optical model named by MODEL (with the
+ * defaults a mirror and a transparent attribute get), LOCAL placement,
+ * a height image and grooves along region boundaries. */
+static void test_scene_pds_models_local_grooves(void **state)
+{
+    scene *s;
+    (void)state;
+    stub_calls = 0;
+    s = parse_ok("TEXTURE LABEL IMAGE granite.png REPEAT 1 1 LOCAL\n"
+                 "BUMP JOINTS GROOVES WIDTH 0.01 AMPLITUDE 0.003\n"
+                 "BUMP RELIEF IMAGE wood.png AMPLITUDE 0.02 LOCAL\n"
+                 "ATTR M COLOR 1 1 1 MODEL MIRROR\n"
+                 "ATTR G COLOR 1 1 1 MODEL TRANSPARENT MIRROR 0.1\n"
+                 "ATTR B COLOR 1 1 1 model blinn SPECULAR 0.5 TEXTURE LABEL BUMP JOINTS\n"
+                 "ATTR L COLOR 1 1 1 MODEL LAMBERT\n" TAIL);
+    assert_int_equal(stub_calls, 2);
+    assert_int_equal(s->textures[0].local, 1);
+    assert_int_equal(s->bumps[0].pattern, BUMP_GROOVES);
+    assert_true(s->bumps[0].width == 0.01 && s->bumps[0].amplitude == 0.003);
+    assert_int_equal(s->bumps[1].pattern, BUMP_IMAGE);
+    assert_int_equal(s->bumps[1].local, 1);
+    assert_int_equal(s->bumps[1].img.width, 3);
+    assert_true(s->bumps[1].freq[0] == 1 && s->bumps[1].freq[1] == 1);
+    assert_int_equal(s->attrs[1].model, SHADE_MIRROR);
+    assert_true(s->attrs[1].mirror == 1);
+    assert_int_equal(s->attrs[2].model, SHADE_TRANSPARENT);
+    assert_true(s->attrs[2].transmit == 1 && s->attrs[2].ior == 1.5 && s->attrs[2].mirror == 0.1);
+    assert_int_equal(s->attrs[3].model, SHADE_BLINN);
+    assert_int_equal(s->attrs[4].model, SHADE_LAMBERT);
+    assert_int_equal(s->attrs[0].model, SHADE_PHONG);
+    scene_free(s);
+}
+
 /* ---- CPG ----------------------------------------------------------------- */
 
 static void test_scene_pds_cpg(void **state)
@@ -608,6 +641,14 @@ static void test_scene_pds_error_texts(void **state)
         { "BUMP B RIPPLES AMPLITUDE 1\n",
           "t.scene:1:8: error: BUMP: expected WAVES, BUMPS, DIMPLES, NOISE, GROOVES or IMAGE, found RIPPLES" },
         { "BUMP B\n", "t.scene:1:7: error: BUMP: missing WAVES, BUMPS, DIMPLES, NOISE, GROOVES or IMAGE" },
+        { "BUMP B GROOVES AMPLITUDE 1\n", "t.scene:1:27: error: BUMP: GROOVES needs WIDTH" },
+        { "BUMP B WAVES AMPLITUDE 1 WIDTH 0.1\n", "t.scene:1:35: error: BUMP: WIDTH applies to GROOVES only" },
+        { "BUMP B GROOVES AMPLITUDE 1 WIDTH 0.6\n",
+          "t.scene:1:34: error: BUMP: WIDTH must be above 0 and at most 0.5" },
+        { "BUMP B GROOVES AMPLITUDE 1 WIDTH 0.1 LOCAL LOCAL\n", "t.scene:1:44: error: BUMP: LOCAL given twice" },
+        { "BUMP B IMAGE\n", "t.scene:1:13: error: BUMP: missing file name" },
+        { "ATTR A COLOR 1 1 1 MODEL GOURAUD\n",
+          "t.scene:1:26: error: ATTR: expected PHONG, LAMBERT, BLINN, MIRROR or TRANSPARENT, found GOURAUD" },
         { "BUMP B WAVES\n", "t.scene:1:13: error: BUMP: AMPLITUDE is required" },
         { "BUMP B WAVES FREQUENCY 1 1\n", "t.scene:1:27: error: BUMP: AMPLITUDE is required" },
         { "BUMP B WAVES AMPLITUDE 0\n", "t.scene:1:24: error: BUMP: AMPLITUDE must not be zero" },
@@ -758,6 +799,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scene_pds_texture_bump_attr),
+        cmocka_unit_test(test_scene_pds_models_local_grooves),
         cmocka_unit_test(test_scene_pds_cpg),
         cmocka_unit_test(test_scene_pds_cpg_many_nodes),
         cmocka_unit_test(test_scene_pds_pixels_keyed),
