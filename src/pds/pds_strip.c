@@ -3,6 +3,8 @@
 #include <math.h>
 #include <string.h>
 #include "pds/pds_num.h"
+#include "pds/pds_strip_ops.h"
+#include "model/pds_def.h"
 #include "util/mem.h"
 
 /* Outward widening of the corners before rounding: a few units of the
@@ -162,16 +164,6 @@ static int pds_strip_edge_meets(num ax, num ay, num bx, num by, num px, num py, 
     return side < 0 ? o <= 0 : o >= 0;
 }
 
-/* 1 if (u,v) is inside or on the strip's closed quad. */
-static int pds_strip_quad_holds(const num *c, num u, num v)
-{
-    int k;
-    for (k = 0; k < 4; k++)
-        if (pds_num_orient(c[2 * k], c[2 * k + 1], c[(2 * k + 2) % 8], c[(2 * k + 3) % 8], u, v) < 0)
-            return 0;
-    return 1;
-}
-
 /* Does the half-line from (u,v) towards side meet the quad? */
 static int pds_strip_quad_meets(const num *c, num u, num v, int side)
 {
@@ -192,9 +184,11 @@ static int pds_strip_parity(const NS(pds_strip) *s, uint32_t idx, num u, num v, 
     ++*steps;
     if (v < nd->box[1] || v > nd->box[3] || u > nd->box[2])
         return 0;
-    if (u < nd->box[0] ||
-        (!pds_strip_quad_holds(nd->c, u, v) && !pds_strip_quad_meets(nd->c, u, v, -1)))
-        return (p[2 * nd->i0 + 1] > v) != (p[2 * nd->i1 + 1] > v);   /* met only right of p */
+    /* The half-line towards -u misses the strip (a point inside the strip
+     * would see it leave through an edge): the line meets the strip only
+     * right of p, where all the chain's crossings are. */
+    if (u < nd->box[0] || !pds_strip_quad_meets(nd->c, u, v, -1))
+        return (p[2 * nd->i0 + 1] > v) != (p[2 * nd->i1 + 1] > v);
     if (!nd->left) {
         for (i = nd->i0; i < nd->i1; i++) {
             e = pds_num_edge(p[2 * i], p[2 * i + 1], p[2 * i + 2], p[2 * i + 3], u, v);
@@ -213,9 +207,6 @@ static int pds_strip_parity(const NS(pds_strip) *s, uint32_t idx, num u, num v, 
 
 int NS(pds_strip_inside)(const NS(pds_strip) *s, num u, num v, unsigned long *steps)
 {
-    /* A strip met only left of the point (the line meets it, +u half-line
-     * does not) adds nothing: the box test above catches most; the rest
-     * fall through to the exact leaf edges. */
     return pds_strip_parity(s, 0, u, v, steps) != 0;
 }
 
@@ -330,3 +321,44 @@ int NS(pds_strip_in_inter)(const NS(pds_strip) *a, const NS(pds_strip) *b, num u
     unsigned long steps = 0;
     return NS(pds_strip_inside)(a, u, v, &steps) && NS(pds_strip_inside)(b, u, v, &steps);
 }
+
+/* ---- the mode-independent table (pds_strip_ops.h) ------------------------ */
+
+static int pds_strip_of(const pds_def *d, size_t i, NS(pds_strip) *s)
+{
+    double *pts;
+    size_t n;
+    int owned, rc = pds_curves_ring(&d->curves, i, &pts, &n, &owned);
+    if (rc)
+        return -1;
+    rc = NS(pds_strip_build)(s, pts, n, d->curves.strip_width);
+    if (owned)
+        mem_free(pts);
+    return rc;
+}
+
+static int pds_strip_cross(const pds_def *a, size_t ia, const pds_def *b, size_t ib, double u, double v,
+                           size_t *pairs, int *meet, int *in_union, int *in_inter)
+{
+    NS(pds_strip) sa, sb;
+    unsigned long steps = 0;
+    num nu = num_from_d(u), nv = num_from_d(v);
+    if (pds_strip_of(a, ia, &sa))
+        return -1;
+    if (pds_strip_of(b, ib, &sb)) {
+        NS(pds_strip_free)(&sa);
+        return -1;
+    }
+    *pairs = NS(pds_strip_intersect)(&sa, &sb, NULL, 0, &steps);
+    *meet = NS(pds_strip_regions_meet)(&sa, &sb);
+    *in_union = NS(pds_strip_in_union)(&sa, &sb, nu, nv);
+    *in_inter = NS(pds_strip_in_inter)(&sa, &sb, nu, nv);
+    NS(pds_strip_free)(&sa);
+    NS(pds_strip_free)(&sb);
+    return 0;
+}
+
+const pds_strip_ops NS(pds_strip_ops) = {
+    .mode = NUM_NAME,
+    .cross = pds_strip_cross,
+};

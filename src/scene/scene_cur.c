@@ -21,7 +21,7 @@ static const char *const scene_cur_words[] = {
     "MIRROR", "MODEL", "MORTAR", "MOSAIC", "NAN", "NEST", "NOISE", "NONE",
     "OBJECT", "OFFSET", "PDS", "PHONG", "PIXELS", "POLYGON", "POLYLINE",
     "QUADTREE", "RECT", "REPEAT", "ROOT", "ROTATE", "ROW", "SCALE", "SCATTER",
-    "SEED", "SHEAR", "SIZE", "SPECULAR", "SPHERE", "SPLIT", "SQUARE",
+    "SEED", "SHEAR", "SIZE", "SPECULAR", "SPHERE", "SPLIT", "SQUARE", "STRIPS",
     "TEXTURE", "TILES", "TILING", "TOLERANCE", "TRANSLATE", "TRANSMIT",
     "TRANSPARENT", "TRIANGLE", "UNION", "UP", "WAVES", "WIDTH"
 };

@@ -14,6 +14,7 @@
 #include <string.h>
 #include "num/fx.h"
 #include "pds/pds_modes.h"
+#include "pds/pds_strip_ops.h"
 #include "model/pds_curve.h"
 #include "model/pds_def.h"
 #include "model/pds_image.h"
@@ -1415,6 +1416,165 @@ static void test_pds_curve_simple_matches_all_pairs(void **state)
 
 /* ---- q16 stays in range --------------------------------------------------- */
 
+/* ---- Ballard's strip trees ----------------------------------------------- */
+
+/* A star-shaped closed polyline on the 1/1024 grid (exact in every mode,
+ * and degenerate cases such as touching edges occur). */
+static size_t strip_poly(uint64_t *s, double *pts, size_t max, double cu, double cv, double r)
+{
+    size_t n = 5 + (size_t)(test_rand(s) % (max - 5)), k, j;
+    for (k = 0; k < n; k++) {
+        double a = 2 * M_PI * (k + test_uniform(s, 0.1, 0.9)) / (double)n, rr = r * test_uniform(s, 0.4, 1);
+        pts[2 * k] = floor((cu + rr * cos(a)) * 1024) / 1024;
+        pts[2 * k + 1] = floor((cv + rr * sin(a)) * 1024) / 1024;
+    }
+    for (k = 0, j = 0; k < n; k++)      /* drop repeated points */
+        if (j == 0 || pts[2 * k] != pts[2 * j - 2] || pts[2 * k + 1] != pts[2 * j - 1]) {
+            pts[2 * j] = pts[2 * k];
+            pts[2 * j + 1] = pts[2 * k + 1];
+            j++;
+        }
+    if (j > 1 && pts[0] == pts[2 * j - 2] && pts[1] == pts[2 * j - 1])
+        j--;
+    return j;
+}
+
+static int seg_meet_exact(const double *a, const double *b, const double *c, const double *d)
+{
+    /* dyadic coordinates of 10 bits: these products are exact in double */
+    double o1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    double o2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    double o3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
+    double o4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
+    if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0) || (o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0))
+        return 0;
+    if (o1 == 0 && o2 == 0)
+        return fmax(fmin(a[0], b[0]), fmin(c[0], d[0])) <= fmin(fmax(a[0], b[0]), fmax(c[0], d[0])) &&
+               fmax(fmin(a[1], b[1]), fmin(c[1], d[1])) <= fmin(fmax(a[1], b[1]), fmax(c[1], d[1]));
+    return 1;
+}
+
+/* Closed-boundary point in polygon, exact for the grid coordinates. */
+static int poly_holds(const double *p, size_t n, double x, double y)
+{
+    size_t i, j;
+    int in = 0;
+    for (i = 0, j = n - 1; i < n; j = i++) {
+        double q[2] = { x, y };
+        if (seg_meet_exact(p + 2 * i, p + 2 * j, q, q))
+            return 1;
+        if ((p[2 * i + 1] > y) != (p[2 * j + 1] > y)) {
+            /* lower end l, upper end h: p left of the crossing iff orient(l, h, p) > 0 */
+            const double *l = p[2 * i + 1] < p[2 * j + 1] ? p + 2 * i : p + 2 * j;
+            const double *h = l == p + 2 * i ? p + 2 * j : p + 2 * i;
+            if ((h[0] - l[0]) * (y - l[1]) - (h[1] - l[1]) * (x - l[0]) > 0)
+                in = !in;
+        }
+    }
+    return in;
+}
+
+/* Strip-tree membership answers exactly what the box hierarchy answers, on
+ * random points and on grid points (vertices and edges), in every mode and
+ * at two width tolerances. */
+static void test_pds_strip_membership_matches_boxes(void **state)
+{
+    uint64_t s = test_seed("test_pds_strip_membership_matches_boxes");
+    static double pts[2 * 400];
+    int t, mi, i, tested = 0;
+    (void)state;
+    for (t = 0; t < 24; t++) {
+        pds_def a, b;
+        size_t n = strip_poly(&s, pts, t % 2 ? 400 : 40, 0.5, 0.5, 0.45);
+        pds_def_init(&a, PDS_CURVES, L0);
+        pds_def_init(&b, PDS_CURVES, L0);
+        assert_true(pds_curve_add(&a, t % 3 == 0, pts, n, 7, L0) >= 0);
+        assert_true(pds_curve_add(&b, t % 3 == 0, pts, n, 7, L0) >= 0);
+        b.curves.strips = 1;
+        b.curves.strip_width = t % 4 < 2 ? 0 : 0.01;
+        for (mi = 0; mi < NMODES; mi++) {
+            void *pa, *pb;
+            diag err;
+            diag_init(&err);
+            if (modes[mi]->compile(&a, "t", &pa, &err))
+                break;          /* the random polygon is not simple: skip it */
+            tested++;
+            pb = compile_or_fail(modes[mi], &b);
+            for (i = 0; i < 4000; i++) {
+                double u = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 1025) / 1024;
+                double v = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 1025) / 1024;
+                if (i % 8 == 2) {       /* on a vertex */
+                    size_t k = (size_t)(test_rand(&s) % n);
+                    u = pts[2 * k];
+                    v = pts[2 * k + 1];
+                }
+                if (modes[mi]->locate(pa, u, v) != modes[mi]->locate(pb, u, v))
+                    fail_msg("polygon %d, mode %s: boxes and strips differ at (%.17g, %.17g)", t,
+                             modes[mi]->mode, u, v);
+            }
+            modes[mi]->free(pa);
+            modes[mi]->free(pb);
+        }
+        pds_def_free(&a);
+        pds_def_free(&b);
+    }
+    assert_true(tested >= 20 * NMODES);
+}
+
+/* Ballard's intersection of two strip trees finds exactly the meeting edge
+ * pairs a brute-force all-pairs test finds; the regions meet iff the
+ * boundaries meet or one holds a vertex of the other; union and
+ * intersection membership follow the two regions. Every mode. */
+static void test_pds_strip_intersection_brute_force(void **state)
+{
+    static const pds_strip_ops *const sops[4] = { &q16_pds_strip_ops, &q32_pds_strip_ops, &f32_pds_strip_ops,
+                                                  &f64_pds_strip_ops };
+    uint64_t s = test_seed("test_pds_strip_intersection_brute_force");
+    static double pa[2 * 300], pb[2 * 300];
+    int t, mi, crossing = 0, apart = 0, nested = 0;
+    (void)state;
+    for (t = 0; t < 60; t++) {
+        pds_def a, b;
+        /* t % 3: 0 overlapping, 1 apart (opposite corners), 2 a small one at the other's centre */
+        double ca = t % 3 == 1 ? 0.25 : test_uniform(&s, 0.4, 0.6), cb = t % 3 == 1 ? 0.75 : t % 3 == 2 ? ca
+                                                                                    : test_uniform(&s, 0.3, 0.7);
+        size_t na = strip_poly(&s, pa, 300, ca, ca, t % 3 == 1 ? 0.2 : 0.3);
+        size_t nb = strip_poly(&s, pb, 300, cb, cb, t % 3 == 0 ? 0.25 : t % 3 == 1 ? 0.2 : 0.05);
+        size_t i, j, want = 0;
+        int want_meet;
+        double u = test_uniform(&s, 0, 1), v = test_uniform(&s, 0, 1);
+        for (i = 0; i < na; i++)
+            for (j = 0; j < nb; j++)
+                want += (size_t)seg_meet_exact(pa + 2 * i, pa + 2 * ((i + 1) % na), pb + 2 * j, pb + 2 * ((j + 1) % nb));
+        want_meet = want > 0 || poly_holds(pa, na, pb[0], pb[1]) || poly_holds(pb, nb, pa[0], pa[1]);
+        crossing += want > 0;
+        apart += !want_meet;
+        nested += want == 0 && want_meet;
+        pds_def_init(&a, PDS_CURVES, L0);
+        pds_def_init(&b, PDS_CURVES, L0);
+        pds_curve_add(&a, 0, pa, na, 1, L0);
+        pds_curve_add(&b, 0, pb, nb, 2, L0);
+        a.curves.strip_width = t % 2 ? 0.02 : 0;
+        for (mi = 0; mi < NMODES; mi++) {
+            size_t got;
+            int meet, in_u, in_i;
+            assert_int_equal(sops[mi]->cross(&a, 0, &b, 0, u, v, &got, &meet, &in_u, &in_i), 0);
+            if (got != want || meet != want_meet)
+                fail_msg("pair %d, mode %s: %zu meeting edge pairs (brute force %zu), meet %d (%d)", t,
+                         sops[mi]->mode, got, want, meet, want_meet);
+            if (mode_eps[mi] < 1e-3) {     /* (u,v) off the grid: rounding matters only in q16 */
+                int ia = poly_holds(pa, na, u, v), ib = poly_holds(pb, nb, u, v);
+                assert_int_equal(in_u, ia || ib);
+                assert_int_equal(in_i, ia && ib);
+            }
+        }
+        pds_def_free(&a);
+        pds_def_free(&b);
+    }
+    /* the random pairs cover all three cases */
+    assert_true(crossing > 5 && apart > 5 && nested > 5);
+}
+
 static void test_pds_q16_counts_no_overflow(void **state)
 {
     uint64_t s = test_seed("test_pds_q16_counts_no_overflow");
@@ -1834,6 +1994,8 @@ int main(void)
         cmocka_unit_test(test_pds_curve_flatten_within_tolerance),
         cmocka_unit_test(test_pds_curve_simple_matches_all_pairs),
         cmocka_unit_test(test_pds_curves_boundary_closed),
+        cmocka_unit_test(test_pds_strip_membership_matches_boxes),
+        cmocka_unit_test(test_pds_strip_intersection_brute_force),
         cmocka_unit_test(test_pds_q16_counts_no_overflow),
         cmocka_unit_test(test_pds_errors_exact_text),
         cmocka_unit_test(test_pds_image_to_pixels),

@@ -424,7 +424,9 @@ static void test_scene_pds_curves(void **state)
                  "POLYLINE NONE 0.1 0.1 0.9 0.1 -\n"
                  "              0.9 0.9 0.1 0.9\n"
                  "END\n"
-                 "PDS FINE CURVES\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n" TAIL);
+                 "PDS FINE CURVES\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n"
+                 "PDS STRIPY CURVES TOLERANCE 0.0005 STRIPS WIDTH 0.01\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n"
+                 "PDS BALLARD CURVES STRIPS\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n" TAIL);
     k = &map_named(s, "BLOB")->def.curves;
     assert_true(k->tolerance == 0.001);
     assert_int_equal(k->ncurves, 2);
@@ -436,6 +438,11 @@ static void test_scene_pds_curves(void **state)
     assert_int_equal(k->curves[1].attr, PDS_NONE);
     assert_true(k->pts[2 * k->curves[1].first + 5] == 0.9);
     assert_true(map_named(s, "FINE")->def.curves.tolerance == PDS_CURVE_TOLERANCE);
+    assert_int_equal(map_named(s, "FINE")->def.curves.strips, 0);
+    k = &map_named(s, "STRIPY")->def.curves;
+    assert_true(k->strips == 1 && k->strip_width == 0.01 && k->tolerance == 0.0005);
+    k = &map_named(s, "BALLARD")->def.curves;
+    assert_true(k->strips == 1 && k->strip_width == 0);
     scene_free(s);
 }
 
@@ -642,6 +649,8 @@ static void test_scene_pds_error_texts(void **state)
           "t.scene:1:8: error: BUMP: expected WAVES, BUMPS, DIMPLES, NOISE, GROOVES or IMAGE, found RIPPLES" },
         { "BUMP B\n", "t.scene:1:7: error: BUMP: missing WAVES, BUMPS, DIMPLES, NOISE, GROOVES or IMAGE" },
         { "BUMP B GROOVES AMPLITUDE 1\n", "t.scene:1:27: error: BUMP: GROOVES needs WIDTH" },
+        { "PDS C CURVES STRIPS WIDTH 2\n", "t.scene:1:27: error: PDS: strip WIDTH must be between 0 and 1" },
+        { "PDS C CURVES BOXES\n", "t.scene:1:14: error: PDS: expected TOLERANCE or STRIPS, found BOXES" },
         { "BUMP B WAVES AMPLITUDE 1 WIDTH 0.1\n", "t.scene:1:35: error: BUMP: WIDTH applies to GROOVES only" },
         { "BUMP B GROOVES AMPLITUDE 1 WIDTH 0.6\n",
           "t.scene:1:34: error: BUMP: WIDTH must be above 0 and at most 0.5" },
