@@ -166,6 +166,8 @@ void pds_cpg_translate(pds_def *d, size_t node, double du, double dv);
 void pds_cpg_rotate(pds_def *d, size_t node, double degrees);        /* counter-clockwise about (0,0) */
 void pds_cpg_scale(pds_def *d, size_t node, double su, double sv);
 void pds_cpg_shear(pds_def *d, size_t node, double shu, double shv); /* u += shu*v, then v += shv*u */
+/* m = t * m for 2x3 affines (t applied after m). */
+void pds_affine_after(double m[6], const double t[6]);
 
 int pds_pixels_set(pds_pixels *px, int width, int height, const int32_t *cells, size_t ncells);
 int pds_tiling_attrs(pds_def *d, const int32_t *attrs, size_t n);

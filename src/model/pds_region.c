@@ -4,17 +4,6 @@
 #include <string.h>
 #include "util/dmath.h"
 
-/* a = a * b for 2x3 affines (b applied first). */
-static void pds_region_compose(const double a[6], const double b[6], double out[6])
-{
-    out[0] = a[0] * b[0] + a[1] * b[3];
-    out[1] = a[0] * b[1] + a[1] * b[4];
-    out[2] = a[0] * b[2] + a[1] * b[5] + a[2];
-    out[3] = a[3] * b[0] + a[4] * b[3];
-    out[4] = a[3] * b[1] + a[4] * b[4];
-    out[5] = a[3] * b[2] + a[4] * b[5] + a[5];
-}
-
 static void pds_region_apply(const double m[6], double x, double y, double *ox, double *oy)
 {
     *ox = m[0] * x + m[1] * y + m[2];
@@ -55,7 +44,8 @@ static int pds_region_cpg(const pds_def *d, size_t i, const double pm[6], double
     const pds_cpg_node *n = &d->cpg.nodes[i];
     double m[6], det, lx, ly, px, py;
     size_t k;
-    pds_region_compose(pm, n->xf, m);
+    memcpy(m, n->xf, sizeof m);
+    pds_affine_after(m, pm);
     det = m[0] * m[4] - m[1] * m[3];
     if (det == 0)
         return 0;

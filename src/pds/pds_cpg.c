@@ -420,8 +420,7 @@ static int pds_cpg_index(cpg *c, uint32_t me)
     memset(acc, 0, sizeof *acc);
     ops = mem_calloc(n, sizeof *ops);
     ks = mem_calloc(n, sizeof *ks);
-    acc->h = mem_calloc(2 * n - 1, sizeof *acc->h);
-    if (!ops || !ks || !acc->h)
+    if (!ops || !ks)
         goto done;
     su = num_to_d(u->box[2]) - num_to_d(u->box[0]);
     sv = num_to_d(u->box[3]) - num_to_d(u->box[1]);
@@ -439,8 +438,6 @@ static int pds_cpg_index(cpg *c, uint32_t me)
         ks[i].node = j;
         ops[i++] = j;
     }
-    qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
-    pds_cpg_bvh_build(acc, c, ks, n);
     for (gn = (long)ceil(sqrt((double)n)); gn > PDS_CPG_GRID_MAX; gn /= 2)
         ;
     for (; gn >= 2; gn /= 2) {
@@ -452,6 +449,16 @@ static int pds_cpg_index(cpg *c, uint32_t me)
     }
     if (gn < 2)
         acc->gn = 0;
+    /* The hierarchy, unless every cell is short enough to scan (it would
+     * never be read, and a lookup touches less memory without it). */
+    for (i = 0, j = 0; acc->gn && i < (size_t)(acc->gn * acc->gn); i++)
+        j = acc->start[i + 1] - acc->start[i] > j ? acc->start[i + 1] - acc->start[i] : j;
+    if (!acc->gn || j > PDS_CPG_CELL_SCAN) {
+        if (!(acc->h = mem_calloc(2 * n - 1, sizeof *acc->h)))
+            goto done;
+        qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
+        pds_cpg_bvh_build(acc, c, ks, n);
+    }
     c->nodes[me].shape = (uint32_t)c->nacc++;
     rc = 0;
 done:

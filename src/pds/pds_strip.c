@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 #include "pds/pds_num.h"
+#include "pds/pds_ring.h"
 #include "pds/pds_strip_ops.h"
 #include "model/pds_def.h"
 #include "util/mem.h"
@@ -71,32 +72,15 @@ static void pds_strip_fit(const NS(pds_strip) *s, uint32_t i0, uint32_t i1, NS(p
 static uint32_t pds_strip_build_node(strip_build *b, uint32_t i0, uint32_t i1)
 {
     NS(pds_strip) *s = b->s;
-    uint32_t idx = (uint32_t)s->nnodes++, i, k, lo, hi;
+    uint32_t idx = (uint32_t)s->nnodes++, k;
     NS(pds_strip_node) *nd = &s->nodes[idx];
-    double ax, ay, dx, dy, best = -1;
     nd->i0 = i0;
     nd->i1 = i1;
     nd->left = nd->right = 0;
     pds_strip_fit(s, i0, i1, nd);
     if (i1 - i0 <= PDS_STRIP_LEAF || nd->w <= b->tol)
         return idx;
-    ax = num_to_d(s->uv[2 * i0]);
-    ay = num_to_d(s->uv[2 * i0 + 1]);
-    dx = num_to_d(s->uv[2 * i1]) - ax;
-    dy = num_to_d(s->uv[2 * i1 + 1]) - ay;
-    lo = i0 + (i1 - i0) / 4;
-    hi = i1 - (i1 - i0) / 4;
-    if (lo <= i0) lo = i0 + 1;
-    if (hi >= i1) hi = i1 - 1;
-    k = lo;
-    for (i = lo; i <= hi; i++) {
-        double px = num_to_d(s->uv[2 * i]) - ax, py = num_to_d(s->uv[2 * i + 1]) - ay;
-        double dist = (dx == 0 && dy == 0) ? px * px + py * py : fabs(dx * py - dy * px);
-        if (dist > best) {
-            best = dist;
-            k = i;
-        }
-    }
+    k = NS(pds_ring_split)(s->uv, i0, i1);
     {
         uint32_t left = pds_strip_build_node(b, i0, k), right = pds_strip_build_node(b, k, i1);
         s->nodes[idx].left = left;
@@ -108,17 +92,12 @@ static uint32_t pds_strip_build_node(strip_build *b, uint32_t i0, uint32_t i1)
 int NS(pds_strip_build)(NS(pds_strip) *s, const double *pts, size_t n, double tol)
 {
     strip_build b;
-    size_t i;
     memset(s, 0, sizeof *s);
-    s->uv = mem_calloc(n + 1, 2 * sizeof *s->uv);
+    s->uv = NS(pds_ring_vertices)(pts, n);
     s->nodes = mem_calloc(2 * n + 1, sizeof *s->nodes);
     if (!s->uv || !s->nodes) {
         NS(pds_strip_free)(s);
         return -1;
-    }
-    for (i = 0; i <= n; i++) {
-        s->uv[2 * i] = num_from_d(pts[2 * (i % n)]);
-        s->uv[2 * i + 1] = num_from_d(pts[2 * (i % n) + 1]);
     }
     s->n = n;
     b.s = s;
@@ -179,8 +158,7 @@ static int pds_strip_parity(const NS(pds_strip) *s, uint32_t idx, num u, num v, 
 {
     const NS(pds_strip_node) *nd = &s->nodes[idx];
     const num *p = s->uv;
-    int c = 0, e;
-    uint32_t i;
+    int c, e;
     ++*steps;
     if (v < nd->box[1] || v > nd->box[3] || u > nd->box[2])
         return 0;
@@ -189,15 +167,8 @@ static int pds_strip_parity(const NS(pds_strip) *s, uint32_t idx, num u, num v, 
      * right of p, where all the chain's crossings are. */
     if (u < nd->box[0] || !pds_strip_quad_meets(nd->c, u, v, -1))
         return (p[2 * nd->i0 + 1] > v) != (p[2 * nd->i1 + 1] > v);
-    if (!nd->left) {
-        for (i = nd->i0; i < nd->i1; i++) {
-            e = pds_num_edge(p[2 * i], p[2 * i + 1], p[2 * i + 2], p[2 * i + 3], u, v);
-            if (e == 2)
-                return 2;
-            c ^= e;
-        }
-        return c;
-    }
+    if (!nd->left)
+        return NS(pds_ring_edges)(p, nd->i0, nd->i1, u, v);
     c = pds_strip_parity(s, nd->left, u, v, steps);
     if (c == 2)
         return 2;
