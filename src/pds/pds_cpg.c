@@ -14,15 +14,19 @@
  * their ids). A union of PDS_CPG_ACCEL_MIN or more operands then gets
  *   - a bounding hierarchy over its operands, built in space (Morton order
  *     of the box centres), each node keeping the lowest operand position
- *     below it: a lookup keeps the best (lowest) position found so far and
+ *     (prio) below it: a lookup keeps the best (lowest) position found so far and
  *     skips every subtree that cannot beat it, so the first operand in the
  *     list that contains the point wins exactly as in a linear scan;
  *   - a cell index over the union's box (clipped to the unit square): per
  *     cell, the operands whose boxes meet it, in operand order. The cell of
  *     a coordinate is a monotone function of it, so a box and every point in
  *     it agree on the cells; the first listed operand containing the point
- *     wins. Cells with long lists use the hierarchy instead.
- * Priority rules are in docs/pds.md. */
+ *     wins. Cells with long lists use the hierarchy instead (it is built
+ *     only when some cell needs it).
+ * The operands of such a union are laid out in memory in the Morton order
+ * of their positions, each keeping its operand position (prio) for the
+ * priority rule, so that nearby lookups touch nearby memory whatever the
+ * operand order. Priority rules are in docs/pds.md. */
 #include "pds/pds_kind.h"
 #include <math.h>
 #include <stdlib.h>
@@ -45,6 +49,8 @@ typedef struct cnode {
     int32_t attr;        /* leaf id, or operator override / PDS_INHERIT */
     uint32_t end;        /* one past the last node of this subtree */
     uint32_t shape;      /* ellipses, rings, nest index; union: accel or NO_ACCEL */
+    uint32_t prio;       /* operand position in an indexed union (its memory
+                            order is spatial, see pds_cpg_emit_union) */
     uint8_t kind;
 } cnode;
 
@@ -60,9 +66,9 @@ typedef struct nested {
     NS(pds) *pds;
 } nested;
 
-/* Hierarchy node: box of the operands below, the lowest of their node
- * indices (node index order is operand order), children a, b, or
- * a == PDS_CPG_BVH_LEAF and b the operand's node index. */
+/* Hierarchy node: box of the operands below, the lowest of their operand
+ * positions (prio), children a, b, or a == PDS_CPG_BVH_LEAF and b the
+ * operand's node index. */
 typedef struct bvh {
     num box[4];
     uint32_t minp, a, b;
@@ -72,7 +78,7 @@ typedef struct accel {
     bvh *h;              /* 2 n - 1 nodes, root first */
     size_t nh;
     uint32_t *start;     /* gn * gn + 1 offsets into ops; NULL: no cell index */
-    uint32_t *ops;       /* operand node indices per cell, ascending */
+    uint32_t *ops;       /* operand node indices per cell, in operand order */
     size_t nops;
     double g0[2], gs[2]; /* cell of x = floor((x - g0) * gs), clamped */
     long gn;
@@ -322,7 +328,7 @@ static uint32_t pds_cpg_bvh_build(accel *acc, const cpg *c, const keyed *ks, siz
     bvh *h = &acc->h[me];
     if (n == 1) {
         memcpy(h->box, c->nodes[ks[0].node].box, sizeof h->box);
-        h->minp = ks[0].node;
+        h->minp = c->nodes[ks[0].node].prio;
         h->a = PDS_CPG_BVH_LEAF;
         h->b = ks[0].node;
     } else {
@@ -412,8 +418,8 @@ static int pds_cpg_index(cpg *c, uint32_t me)
     double su, sv;
     for (j = me + 1; j < u->end; j = c->nodes[j].end)
         n += !pds_cpg_box_empty(c->nodes[j].box);
-    if (n < PDS_CPG_ACCEL_MIN)
-        return 0;
+    if (n == 0)
+        return 0;      /* no operand can hold a point: the plain loop is exact */
     if (mem_grow((void **)&c->acc, &c->cap_acc, c->nacc + 1, sizeof *c->acc))
         return -1;
     acc = &c->acc[c->nacc];
@@ -437,6 +443,25 @@ static int pds_cpg_index(cpg *c, uint32_t me)
                     pds_cpg_spread((uint32_t)fmin(fmax(mv, 0), 65535)) << 1;
         ks[i].node = j;
         ops[i++] = j;
+    }
+    /* the cell lists are filled in operand order: sort ops by prio (the
+     * positions are distinct and below the operand count) */
+    {
+        size_t total = 0, w = 0;
+        uint32_t *by = NULL;
+        for (j = me + 1; j < u->end; j = c->nodes[j].end)
+            total++;
+        by = mem_calloc(total, sizeof *by);
+        if (!by)
+            goto done;
+        for (i = 0; i < total; i++)
+            by[i] = UINT32_MAX;
+        for (i = 0; i < n; i++)
+            by[c->nodes[ops[i]].prio] = ops[i];
+        for (i = 0; i < total; i++)
+            if (by[i] != UINT32_MAX)
+                ops[w++] = by[i];
+        mem_free(by);
     }
     for (gn = (long)ceil(sqrt((double)n)); gn > PDS_CPG_GRID_MAX; gn /= 2)
         ;
@@ -474,6 +499,73 @@ done:
 
 /* ---- emission ---------------------------------------------------------- */
 
+/* A point of definition node di in root coordinates, for ordering:
+ * a leaf's centre, an operator's first operand's. */
+static void pds_cpg_anchor(const builder *b, size_t di, double *x, double *y)
+{
+    const pds_cpg *d = &b->def->cpg;
+    const pds_cpg_node *n = &d->nodes[di];
+    const double *m;
+    double lx = 0.5, ly = 0.5;
+    while (n->op >= PDS_CPG_UNION) {
+        di = d->kids[n->first];
+        n = &d->nodes[di];
+    }
+    m = b->m[di];
+    if (n->op == PDS_CPG_RECT) {
+        lx = 0.5 * (n->p[0] + n->p[2]);
+        ly = 0.5 * (n->p[1] + n->p[3]);
+    } else if (n->op == PDS_CPG_ELLIPSE) {
+        lx = n->p[0];
+        ly = n->p[1];
+    } else if (n->op == PDS_CPG_POLYGON) {
+        lx = d->pts[2 * n->first];
+        ly = d->pts[2 * n->first + 1];
+    }
+    *x = m[0] * lx + m[1] * ly + m[2];
+    *y = m[3] * lx + m[4] * ly + m[5];
+}
+
+/* Emits the operands kids[0..n) of an indexed union in the Morton order
+ * of their anchors, so that operands near each other in the plane are near
+ * each other in memory whatever the operand order; each keeps its operand
+ * position in prio, which alone decides priority. */
+static int pds_cpg_emit_spatial(builder *b, const size_t *kids, size_t n)
+{
+    keyed *ks = mem_calloc(n, sizeof *ks);
+    double (*xy)[2] = mem_calloc(n, sizeof *xy), lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+    size_t k;
+    int rc = -1, a;
+    if (!ks || !xy)
+        goto done;
+    for (k = 0; k < n; k++) {
+        pds_cpg_anchor(b, kids[k], &xy[k][0], &xy[k][1]);
+        for (a = 0; a < 2; a++) {
+            lo[a] = fmin(lo[a], xy[k][a]);
+            hi[a] = fmax(hi[a], xy[k][a]);
+        }
+    }
+    for (k = 0; k < n; k++) {
+        uint32_t q[2];
+        for (a = 0; a < 2; a++)
+            q[a] = hi[a] > lo[a] ? (uint32_t)fmin(65535, (xy[k][a] - lo[a]) / (hi[a] - lo[a]) * 65535) : 0;
+        ks[k].key = pds_cpg_spread(q[0]) | pds_cpg_spread(q[1]) << 1;
+        ks[k].node = (uint32_t)k;
+    }
+    qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
+    for (k = 0; k < n; k++) {
+        uint32_t at = (uint32_t)b->c->nnodes;
+        if (pds_cpg_emit(b, kids[ks[k].node]))
+            goto done;
+        b->c->nodes[at].prio = ks[k].node;
+    }
+    rc = 0;
+done:
+    mem_free(ks);
+    mem_free(xy);
+    return rc;
+}
+
 /* A union node over definition nodes kids[0..n), in that order. */
 static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t attr)
 {
@@ -486,15 +578,19 @@ static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t 
     me = pds_cpg_push(c, K_UNION, attr);
     if (me < 0)
         return -1;
-    for (k = 0; k < n; k++)
-        if (pds_cpg_emit(b, kids[k]))
-            return -1;
+    if (n < PDS_CPG_ACCEL_MIN) {
+        for (k = 0; k < n; k++)
+            if (pds_cpg_emit(b, kids[k]))
+                return -1;
+    } else if (pds_cpg_emit_spatial(b, kids, n)) {
+        return -1;
+    }
     c->nodes[me].end = (uint32_t)c->nnodes;
     pds_cpg_box_clear(c->nodes[me].box);
     for (j = (uint32_t)me + 1; j < c->nnodes; j = c->nodes[j].end)
         if (!pds_cpg_box_empty(c->nodes[j].box))
             pds_cpg_box_grow(c->nodes[me].box, c->nodes[j].box);
-    return pds_cpg_index(c, (uint32_t)me);
+    return n < PDS_CPG_ACCEL_MIN ? 0 : pds_cpg_index(c, (uint32_t)me);
 }
 
 static int pds_cpg_emit(builder *b, size_t di)
@@ -676,7 +772,7 @@ static int pds_cpg_indexed(const cpg *c, const accel *acc, num u, num v, int32_t
         if (h->a == PDS_CPG_BVH_LEAF) {
             int32_t a;
             if (pds_cpg_visit(c, h->b, u, v, &a, steps)) {
-                best = h->b;
+                best = h->minp;
                 *attr = a;
             }
             continue;
