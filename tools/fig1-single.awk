@@ -58,6 +58,16 @@ function ellipse(name, r, uc, vc, ru, rv,    t, rs, rz, c, s) {
     emit(sprintf("CYLINDER %s 1 1 MATRIX 0 %.7f %.7f %.7f  0 %.7f %.7f %.7f  %.7f 0 0 %.7f", \
         name, -rs * s, 0.7 * c, 0.5 * c, rs * c, 0.7 * s, 0.5 * s, -rz, 1.6 * vc))
 }
+# Letter L of the logo: an elliptic ring at logo x = cx (outer radii 0.21
+# 0.40, inner 0.12 0.25, centre y 0.5) minus the opening x0..x1 x y0..y1.
+function letter(l, cx, x0, x1, y0, y1) {
+    emit(sprintf("CYLINDER %sSHELL %.4f 1.6 ATTR LETTER", l, RL))
+    ellipse(l "O", RL, lu(cx), lv(0.50), 0.22 * 0.21, 0.46 * 0.40)
+    ellipse(l "I", RL, lu(cx), lv(0.50), 0.22 * 0.12, 0.46 * 0.25)
+    sector(l "CUT", RL, lu(x0), lu(x1), lv(y0), lv(y1))
+    emit(sprintf("INTER %sDISC %sSHELL %sO ATTR LETTER", l, l, l))
+    emit(sprintf("DIFF LET%s %sDISC %sI ATTR LETTER %sCUT ATTR LETTER", l, l, l, l))
+}
 # The logo's unit square on the side: u = 0.39 + 0.22 x, v = 0.37 + 0.46 y.
 function lu(x) { return 0.39 + 0.22 * x }
 function lv(y) { return 0.37 + 0.46 * y }
@@ -119,18 +129,8 @@ BEGIN {
     emit("INTER PANEL PANELC PANELB ATTR SILVER")
     emit("* The letters: C = outer ellipse - inner ellipse - opening, G the same")
     emit("* with its own opening, plus the bar.")
-    emit(sprintf("CYLINDER CSHELL %.4f 1.6 ATTR LETTER", RL))
-    ellipse("CO", RL, lu(0.26), lv(0.50), 0.22 * 0.21, 0.46 * 0.40)
-    ellipse("CI", RL, lu(0.26), lv(0.50), 0.22 * 0.12, 0.46 * 0.25)
-    sector("CCUT", RL, lu(0.34), lu(0.50), lv(0.36), lv(0.64))
-    emit("INTER CDISC CSHELL CO ATTR LETTER")
-    emit("DIFF LETC CDISC CI ATTR LETTER CCUT ATTR LETTER")
-    emit(sprintf("CYLINDER GSHELL %.4f 1.6 ATTR LETTER", RL))
-    ellipse("GO", RL, lu(0.74), lv(0.50), 0.22 * 0.21, 0.46 * 0.40)
-    ellipse("GI", RL, lu(0.74), lv(0.50), 0.22 * 0.12, 0.46 * 0.25)
-    sector("GCUT", RL, lu(0.82), lu(1.00), lv(0.52), lv(0.72))
-    emit("INTER GDISC GSHELL GO ATTR LETTER")
-    emit("DIFF LETG GDISC GI ATTR LETTER GCUT ATTR LETTER")
+    letter("C", 0.26, 0.34, 0.50, 0.36, 0.64)
+    letter("G", 0.74, 0.82, 1.00, 0.52, 0.72)
     emit(sprintf("CYLINDER BSHELL %.4f 1.6 ATTR LETTER", RL))
     sector("GBARB", RL, lu(0.75), lu(0.95), lv(0.42), lv(0.52))
     emit("INTER GBAR BSHELL GBARB ATTR LETTER")
