@@ -505,6 +505,69 @@ static void test_pds_cpg_visits_independent_of_order(void **state)
         }
 }
 
+/* A plate minus n shuffled holes, and a 64-deep chain of two-operand
+ * unions: the subtrahends form one indexed union, the chain one flat
+ * union, so both cost about what 10 operands cost. */
+static double diff_steps(size_t n, int chain, const pds_mode_ops *m, uint64_t *s)
+{
+    pds_def d;
+    size_t side = (size_t)ceil(sqrt((double)n)), *kids = mem_calloc(n + 1, sizeof *kids), i;
+    double cell = 1.0 / (double)side;
+    unsigned long steps = 0;
+    void *p;
+    int t;
+    assert_non_null(kids);
+    pds_def_init(&d, PDS_CPG, L0);
+    kids[0] = (size_t)pds_cpg_rect(&d, 0, 0, 1, 1, 9, L0);
+    for (i = 0; i < n; i++) {
+        size_t x = i % side, y = i / side;
+        kids[i + 1] = (size_t)pds_cpg_ellipse(&d, (x + 0.5) * cell, (y + 0.5) * cell, cell / 3, cell / 3,
+                                              (int32_t)(i % 5), L0);
+    }
+    for (i = n; i-- > 1;) {
+        size_t j = 1 + (size_t)(test_rand(s) % i), tmp = kids[i + 1];
+        kids[i + 1] = kids[j];
+        kids[j] = tmp;
+    }
+    if (chain) {            /* UNION(k1, UNION(k2, ... UNION(kn, plate))) */
+        size_t root = kids[0];
+        for (i = n; i >= 1; i--) {
+            size_t two[2];
+            two[0] = kids[i];
+            two[1] = root;
+            root = (size_t)pds_cpg_op_node(&d, PDS_CPG_UNION, two, 2, PDS_INHERIT, L0);
+        }
+    } else {
+        pds_cpg_op_node(&d, PDS_CPG_DIFF, kids, n + 1, PDS_INHERIT, L0);
+    }
+    p = compile_or_fail(m, &d);
+    for (t = 0; t < 2000; t++) {
+        double u = test_uniform(s, 0, 1), v = test_uniform(s, 0, 1);
+        int32_t got = m->locate_steps(p, u, v, &steps);
+        if (!chain)
+            assert_true(got == PDS_NONE || got == 9);
+    }
+    m->free(p);
+    pds_def_free(&d);
+    mem_free(kids);
+    return (double)steps / 2000;
+}
+
+static void test_pds_cpg_diff_and_chains_flat(void **state)
+{
+    uint64_t s = test_seed("test_pds_cpg_diff_and_chains_flat");
+    int mi;
+    (void)state;
+    for (mi = 0; mi < NMODES; mi++) {
+        double d10 = diff_steps(10, 0, modes[mi], &s), d10k = diff_steps(10000, 0, modes[mi], &s);
+        double c10 = diff_steps(10, 1, modes[mi], &s), c63 = diff_steps(63, 1, modes[mi], &s);
+        printf("# %s plate minus 10 / 10000 holes: %.2f / %.2f visits; chain of 10 / 63 unions: %.2f / %.2f\n",
+               modes[mi]->mode, d10, d10k, c10, c63);
+        assert_true(d10k <= 3 * d10);
+        assert_true(c63 <= 3 * c10);
+    }
+}
+
 /* Exact reference in the mode itself: each leaf compiled alone (same
  * placement, so the same rounded shape) answers membership, and the
  * operator rules are applied here by plain recursion over the definition. */
@@ -1977,6 +2040,7 @@ int main(void)
         cmocka_unit_test(test_pds_cpg_boundaries_closed),
         cmocka_unit_test(test_pds_cpg_visits_grow_logarithmically),
         cmocka_unit_test(test_pds_cpg_visits_independent_of_order),
+        cmocka_unit_test(test_pds_cpg_diff_and_chains_flat),
         cmocka_unit_test(test_pds_cpg_index_matches_brute_force),
         cmocka_unit_test(test_pds_cpg_nested_matches_reference),
         cmocka_unit_test(test_pds_cpg_nested_errors),
