@@ -4,10 +4,10 @@
  * numeric mode, converts a fixed set of random (u,v) points once, then times
  * repeated lookups (pds_mode_ops.locate_many) until at least --seconds have
  * passed, three times, and keeps the fastest of the three (the machine may be
- * shared). Output: one line per case,
+ * shared; the times are the process's CPU time). Output: one line per case,
  *     kind  size  mode  lookups_per_second  ns_per_lookup  mean_steps  bytes
  * mean_steps is the mean number of nodes / cells / edges a lookup visited.
- * Usage: pds_bench [--modes q16,f64] [--seconds S] [--quick] [--scan] */
+ * Usage: pds_bench [--modes q16,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,7 +38,7 @@ static double uniform(void)
 static double now(void)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);   /* CPU time: robust on a shared machine */
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
@@ -91,7 +91,7 @@ static void run(const char *kind, const char *size, const pds_def *def)
         t = best;
         for (i = 0; i < NPTS; i += NPTS / 4096)   /* a sample spread over all points */
             m->locate_steps(p, uv[2 * i], uv[2 * i + 1], &steps);
-        printf("%-10s %-14s %-4s %12.0f %8.1f %8.1f %10zu\n", kind, size, m->mode,
+        printf("%-10s %-16s %-4s %12.0f %8.1f %8.1f %10zu\n", kind, size, m->mode,
                (double)NPTS * reps / t, t * 1e9 / ((double)NPTS * reps), steps / 4096.0, m->bytes(p));
         fflush(stdout);
         m->free(p);
@@ -99,8 +99,10 @@ static void run(const char *kind, const char *size, const pds_def *def)
 }
 
 /* nx * ny grid of leaves cycling rectangle, ellipse, hexagon, in one
- * n-ary union (compiled to a balanced binary union). */
-static void bench_cpg(int nx, int ny)
+ * n-ary union, listed in spatial (row by row), reverse or shuffled order:
+ * the order decides priority, and must not change the cost. */
+static const char *const cpg_orders[3] = { "spatial", "reverse", "shuffled" };
+static void bench_cpg(int nx, int ny, int order)
 {
     pds_def d;
     size_t *kids = mem_calloc((size_t)nx * (size_t)ny, sizeof *kids);
@@ -130,8 +132,22 @@ static void bench_cpg(int nx, int ny)
             }
             kids[j * nx + i] = (size_t)idx;
         }
-    pds_cpg_op_node(&d, PDS_CPG_UNION, kids, (size_t)nx * (size_t)ny, PDS_INHERIT, L0);
-    snprintf(size, sizeof size, "N=%d", nx * ny);
+    {
+        size_t n = (size_t)nx * (size_t)ny, a, b;
+        for (a = 0; order == 1 && a < n / 2; a++) {
+            size_t t = kids[a];
+            kids[a] = kids[n - 1 - a];
+            kids[n - 1 - a] = t;
+        }
+        for (a = n; order == 2 && a-- > 1;) {
+            size_t t = kids[a];
+            b = (size_t)(uniform() * (double)(a + 1));
+            kids[a] = kids[b];
+            kids[b] = t;
+        }
+        pds_cpg_op_node(&d, PDS_CPG_UNION, kids, n, PDS_INHERIT, L0);
+    }
+    snprintf(size, sizeof size, "N=%d,%s", nx * ny, cpg_orders[order]);
     run("cpg", size, &d);
     pds_def_free(&d);
     mem_free(kids);
@@ -209,7 +225,9 @@ static void bench_mosaic(int n, int clustered)
     pds_def_free(&d);
 }
 
-static void bench_curve(int n, int bspline)
+/* One closed curve; strips: Ballard's strip trees answer membership
+ * instead of the box hierarchy (docs/pds.md compares the two). */
+static void bench_curve(int n, int bspline, int strips)
 {
     pds_def d;
     double *pts = mem_calloc((size_t)n, 2 * sizeof *pts);
@@ -222,7 +240,8 @@ static void bench_curve(int n, int bspline)
     }
     pds_def_init(&d, PDS_CURVES, L0);
     pds_curve_add(&d, bspline, pts, (size_t)n, 1, L0);
-    snprintf(size, sizeof size, "%s=%d", bspline ? "bspline" : "poly", n);
+    d.curves.strips = strips;
+    snprintf(size, sizeof size, "%s=%d,%s", bspline ? "bspline" : "poly", n, strips ? "strips" : "boxes");
     run("curves", size, &d);
     pds_def_free(&d);
     mem_free(pts);
@@ -230,7 +249,7 @@ static void bench_curve(int n, int bspline)
 
 int main(int argc, char **argv)
 {
-    int i, quick = 0;
+    int i, quick = 0, only = 0;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--modes") && i + 1 < argc) {
             const char *s = argv[++i];
@@ -243,27 +262,46 @@ int main(int argc, char **argv)
             quick = 1;
         else if (!strcmp(argv[i], "--scan"))
             scan_order = 1;
+        else if (!strcmp(argv[i], "--cpg"))
+            only = 1;
+        else if (!strcmp(argv[i], "--curves"))
+            only = 2;
         else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan]\n"
+            printf("usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves]\n"
                    "Lookup rates of every PDS kind on one core.\n"
                    "  --modes LIST  numeric modes to measure (default q16,f64)\n"
                    "  --seconds S   minimum timed run per case and round (default 0.3)\n"
                    "  --quick       skip the largest size of each kind\n"
+                   "  --cpg         CPG only (N = 10..100,000 in three operand orders)\n"
+                   "  --curves      curves only (box hierarchy and strip trees)\n"
                    "  --scan        points in raster order (256 x 256 pixel centres, row by\n"
                    "                row, as a renderer asks) instead of 65536 random points\n"
                    "Each case runs three rounds and reports the fastest.\n");
             return 0;
         } else {
-            fprintf(stderr, "usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan]\n");
+            fprintf(stderr, "usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves]\n");
             return 2;
         }
     }
-    printf("%-10s %-14s %-4s %12s %8s %8s %10s\n", "kind", "size", "mode", "lookups/s", "ns", "steps", "bytes");
-    bench_cpg(5, 2);
-    bench_cpg(10, 10);
-    bench_cpg(40, 25);
-    if (!quick)
-        bench_cpg(100, 100);
+    printf("%-10s %-16s %-4s %12s %8s %8s %10s\n", "kind", "size", "mode", "lookups/s", "ns", "steps", "bytes");
+    for (i = 0; i < 2 && only != 1; i++) {
+        bench_curve(24, 1, i);
+        bench_curve(1000, 0, i);
+        if (!quick)
+            bench_curve(60000, 0, i);
+    }
+    if (only == 2)
+        return 0;
+    for (i = 0; i < 3; i++) {
+        bench_cpg(5, 2, i);
+        bench_cpg(10, 10, i);
+        bench_cpg(40, 25, i);
+        bench_cpg(100, 100, i);
+        if (!quick)
+            bench_cpg(400, 250, i);
+    }
+    if (only == 1)
+        return 0;
     bench_pixels(16);
     bench_pixels(256);
     if (!quick)
@@ -282,9 +320,5 @@ int main(int argc, char **argv)
         bench_mosaic(65536, 0);
         bench_mosaic(65536, 1);
     }
-    bench_curve(24, 1);
-    bench_curve(1000, 0);
-    if (!quick)
-        bench_curve(60000, 0);
     return 0;
 }

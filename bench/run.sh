@@ -27,3 +27,6 @@ cat out/slab.csv
 echo
 echo "one multi-attribute primitive vs. single-attribute primitives (bench/attrmap.sh):"
 sh bench/attrmap.sh "$bin" | tee out/attrmap.csv
+echo
+echo "Figure 1 itself, multi- vs. single-attribute (bench/fig1.sh):"
+sh bench/fig1.sh "$bin" | tee out/fig1.csv

@@ -1,5 +1,7 @@
 /* attr_bump — bump patterns and perturbed normals (see attr_bump.h). */
 #include "attr/attr_bump.h"
+#include "attr/attr_texture.h"
+#include "model/pds_region.h"
 #include "util/dmath.h"
 #include <math.h>
 #include <stdint.h>
@@ -52,6 +54,13 @@ double attr_bump_height(const scene_bump *b, double u, double v)
         double r2 = ATTR_BUMP_DIMPLE_R * ATTR_BUMP_DIMPLE_R - cx * cx - cy * cy;
         return r2 > 0 ? -sqrt(r2) / ATTR_BUMP_DIMPLE_R : 0;
     }
+    case BUMP_IMAGE: {
+        double rgb[3], one[2] = { 1, 1 };
+        if (!b->img.px)
+            return 0;
+        attr_texture_sample(&b->img, one, x, y, rgb);
+        return 2 * (0.299 * rgb[0] + 0.587 * rgb[1] + 0.114 * rgb[2]) - 1;
+    }
     case BUMP_NOISE:
         /* three octaves, weights 1, 1/2, 1/4 (sum 1.75) */
         h = attr_bump_noise1(x, y, b->seed) + 0.5 * attr_bump_noise1(2 * x, 2 * y, b->seed + 1)
@@ -63,10 +72,45 @@ double attr_bump_height(const scene_bump *b, double u, double v)
     }
 }
 
+/* Groove profile across distance e from a region boundary: -1 on the
+ * boundary rising as a half cosine to 0 at half the width (both sides of a
+ * boundary share the width). */
+static double attr_bump_groove(double e, double width)
+{
+    double half = width / 2;
+    if (!(e < half))
+        return 0;
+    return -0.5 * (1 + cos(DMATH_PI * e / half));
+}
+
+/* Height at face point (u,v): GROOVES and LOCAL patterns ask the face's PDS
+ * where the point lies in its region. */
+static double attr_bump_height_at(const scene_bump *b, const pds_def *map, double u, double v)
+{
+    pds_region r;
+    if (b->pattern == BUMP_GROOVES) {
+        if (!map)
+            return 0;
+        pds_region_at(map, u, v, &r);
+        return attr_bump_groove(r.edge, b->width);
+    }
+    if (b->local && map) {
+        pds_region_at(map, u, v, &r);
+        u = r.frame[0];
+        v = r.frame[1];
+    }
+    return attr_bump_height(b, u, v);
+}
+
+void attr_bump_normal(const scene_bump *b, double scale, const geom_surface *sf, double n[3])
+{
+    attr_bump_normal_at(b, NULL, scale, sf, n);
+}
+
 /* P' = P + H n with H = A s h(u,v); to first order (Blinn's approximation,
  * dropping the derivatives of n) P'_u = P_u + H_u n and P'_v = P_v + H_v n,
  * so N' = P_u x P_v + H_u (n x P_v) + H_v (P_u x n), oriented like n. */
-void attr_bump_normal(const scene_bump *b, double scale, const geom_surface *sf, double n[3])
+void attr_bump_normal_at(const scene_bump *b, const pds_def *map, double scale, const geom_surface *sf, double n[3])
 {
     double n0[3], t1[3], t2[3], len0, len, hu, hv, a, c, sgn;
     int i;
@@ -78,8 +122,8 @@ void attr_bump_normal(const scene_bump *b, double scale, const geom_surface *sf,
         return;
     sgn = dmath_dot3(n0, sf->n) < 0 ? -1 : 1;
     a = b->amplitude * scale / (2 * ATTR_BUMP_EPS);
-    hu = a * (attr_bump_height(b, sf->u + ATTR_BUMP_EPS, sf->v) - attr_bump_height(b, sf->u - ATTR_BUMP_EPS, sf->v));
-    hv = a * (attr_bump_height(b, sf->u, sf->v + ATTR_BUMP_EPS) - attr_bump_height(b, sf->u, sf->v - ATTR_BUMP_EPS));
+    hu = a * (attr_bump_height_at(b, map, sf->u + ATTR_BUMP_EPS, sf->v) - attr_bump_height_at(b, map, sf->u - ATTR_BUMP_EPS, sf->v));
+    hv = a * (attr_bump_height_at(b, map, sf->u, sf->v + ATTR_BUMP_EPS) - attr_bump_height_at(b, map, sf->u, sf->v - ATTR_BUMP_EPS));
     dmath_cross3(sf->n, sf->dpdv, t1);
     dmath_cross3(sf->dpdu, sf->n, t2);
     for (i = 0; i < 3; i++)

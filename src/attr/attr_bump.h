@@ -4,6 +4,7 @@
 #ifndef ATTR_BUMP_H
 #define ATTR_BUMP_H
 #include "geom/geom.h"
+#include "model/pds_def.h"
 #include "model/scene.h"
 
 /* Height of pattern b at (u,v), in [-1, 1] (before the amplitude). */
@@ -18,4 +19,9 @@ double attr_bump_height(const scene_bump *b, double u, double v);
  * degenerates (a cap's centre, a sphere's pole) sf->n is returned unchanged. */
 #define ATTR_BUMP_MIN_COS 0.05
 void attr_bump_normal(const scene_bump *b, double scale, const geom_surface *sf, double n[3]);
+
+/* The same on a face whose PDS is map (NULL: none): GROOVES follow the
+ * region boundaries of map (flat without one) and LOCAL patterns are laid in
+ * each region's own frame (pds_region.h). */
+void attr_bump_normal_at(const scene_bump *b, const pds_def *map, double scale, const geom_surface *sf, double n[3]);
 #endif

@@ -1,6 +1,7 @@
 /* attr_texture — texture image lookup (see attr_texture.h). */
 #include "attr/attr_texture.h"
 #include <math.h>
+#include "model/pds_region.h"
 
 /* Position x in [0, n) of a wrapped coordinate, split into the lower texel
  * index and the fraction towards the next one. Texel centres sit at
@@ -20,14 +21,13 @@ static void attr_texture_axis(double x, int n, int *i0, int *i1, double *f)
     *i1 = *i0 + 1 < n ? *i0 + 1 : 0;
 }
 
-void attr_texture_rgb(const scene_texture *t, double u, double v, double rgb[3])
+void attr_texture_sample(const image *im, const double repeat[2], double u, double v, double rgb[3])
 {
-    const image *im = &t->img;
     int x0, x1, y0, y1, k;
     double fx, fy;
-    attr_texture_axis(u * t->repeat[0], im->width, &x0, &x1, &fx);
+    attr_texture_axis(u * repeat[0], im->width, &x0, &x1, &fx);
     /* v runs up; image rows run down */
-    attr_texture_axis(1.0 - v * t->repeat[1], im->height, &y0, &y1, &fy);
+    attr_texture_axis(1.0 - v * repeat[1], im->height, &y0, &y1, &fy);
     for (k = 0; k < 3; k++) {
         const uint8_t *px = im->px;
         size_t w = (size_t)im->width;
@@ -35,4 +35,20 @@ void attr_texture_rgb(const scene_texture *t, double u, double v, double rgb[3])
         double c = px[3 * ((size_t)y1 * w + (size_t)x0) + k], d = px[3 * ((size_t)y1 * w + (size_t)x1) + k];
         rgb[k] = ((a + (b - a) * fx) * (1 - fy) + (c + (d - c) * fx) * fy) / 255.0;
     }
+}
+
+void attr_texture_rgb(const scene_texture *t, double u, double v, double rgb[3])
+{
+    attr_texture_sample(&t->img, t->repeat, u, v, rgb);
+}
+
+void attr_texture_rgb_at(const scene_texture *t, const pds_def *map, double u, double v, double rgb[3])
+{
+    pds_region r;
+    if (t->local && map) {
+        pds_region_at(map, u, v, &r);
+        u = r.frame[0];
+        v = r.frame[1];
+    }
+    attr_texture_sample(&t->img, t->repeat, u, v, rgb);
 }

@@ -122,8 +122,7 @@ long pds_cpg_op_node(pds_def *d, pds_cpg_op op, const size_t *operands, size_t n
     return i;
 }
 
-/* m = t * m for 2x3 affines (t applied after m). */
-static void pds_def_compose_after(double m[6], const double t[6])
+void pds_affine_after(double m[6], const double t[6])
 {
     double r[6];
     r[0] = t[0] * m[0] + t[1] * m[3];
@@ -139,7 +138,7 @@ void pds_cpg_translate(pds_def *d, size_t node, double du, double dv)
 {
     double t[6] = { 1, 0, 0, 0, 1, 0 };
     t[2] = du; t[5] = dv;
-    pds_def_compose_after(d->cpg.nodes[node].xf, t);
+    pds_affine_after(d->cpg.nodes[node].xf, t);
 }
 
 void pds_cpg_rotate(pds_def *d, size_t node, double degrees)
@@ -154,14 +153,14 @@ void pds_cpg_rotate(pds_def *d, size_t node, double degrees)
     else if (r == 270) { c = 0; s = -1; }
     else { c = cos(dmath_rad(r)); s = sin(dmath_rad(r)); }
     t[0] = c; t[1] = -s; t[2] = 0; t[3] = s; t[4] = c; t[5] = 0;
-    pds_def_compose_after(d->cpg.nodes[node].xf, t);
+    pds_affine_after(d->cpg.nodes[node].xf, t);
 }
 
 void pds_cpg_scale(pds_def *d, size_t node, double su, double sv)
 {
     double t[6] = { 0, 0, 0, 0, 0, 0 };
     t[0] = su; t[4] = sv;
-    pds_def_compose_after(d->cpg.nodes[node].xf, t);
+    pds_affine_after(d->cpg.nodes[node].xf, t);
 }
 
 void pds_cpg_shear(pds_def *d, size_t node, double shu, double shv)
@@ -169,8 +168,8 @@ void pds_cpg_shear(pds_def *d, size_t node, double shu, double shv)
     double a[6] = { 1, 0, 0, 0, 1, 0 }, b[6] = { 1, 0, 0, 0, 1, 0 };
     a[1] = shu;
     b[3] = shv;
-    pds_def_compose_after(d->cpg.nodes[node].xf, a);
-    pds_def_compose_after(d->cpg.nodes[node].xf, b);
+    pds_affine_after(d->cpg.nodes[node].xf, a);
+    pds_affine_after(d->cpg.nodes[node].xf, b);
 }
 
 int pds_pixels_set(pds_pixels *px, int width, int height, const int32_t *cells, size_t ncells)
@@ -313,7 +312,7 @@ void pds_cpg_placements(const pds_def *d, double (*m)[6], int *depth)
         for (k = 0; k < n->count; k++) {
             size_t kid = c->kids[n->first + k];
             memcpy(m[kid], c->nodes[kid].xf, sizeof m[0]);
-            pds_def_compose_after(m[kid], m[i]);
+            pds_affine_after(m[kid], m[i]);
             depth[kid] = depth[i] + 1;
         }
     }

@@ -24,7 +24,7 @@
 /* Limits (docs/pds.md explains each). */
 #define PDS_MAX_ATTR        65535    /* largest region attribute id */
 #define PDS_COORD_MAX       64.0     /* |coordinate| after transforms */
-#define PDS_MAX_NODES       65536    /* CPG nodes */
+#define PDS_MAX_NODES       262144   /* CPG nodes */
 #define PDS_MAX_DEPTH       64       /* CPG operator nesting */
 #define PDS_MAX_VERTICES    65536    /* one polygon or one flattened curve */
 #define PDS_MAX_SIDE        32768    /* pixel array side */
@@ -128,6 +128,9 @@ typedef struct pds_curves {
     pds_curve *curves; size_t ncurves, cap_curves;
     double *pts;       size_t npts, cap_pts;
     double tolerance;  /* B-spline flattening tolerance, (u,v) units */
+    int strips;        /* 1: Ballard's strip trees (pds_strip.h) answer membership;
+                          0: the box hierarchy of pds_ring.h */
+    double strip_width;/* strips: width tolerance of the tree (0: to the leaves) */
 } pds_curves;
 
 typedef struct pds_def {
@@ -163,6 +166,8 @@ void pds_cpg_translate(pds_def *d, size_t node, double du, double dv);
 void pds_cpg_rotate(pds_def *d, size_t node, double degrees);        /* counter-clockwise about (0,0) */
 void pds_cpg_scale(pds_def *d, size_t node, double su, double sv);
 void pds_cpg_shear(pds_def *d, size_t node, double shu, double shv); /* u += shu*v, then v += shv*u */
+/* m = t * m for 2x3 affines (t applied after m). */
+void pds_affine_after(double m[6], const double t[6]);
 
 int pds_pixels_set(pds_pixels *px, int width, int height, const int32_t *cells, size_t ncells);
 int pds_tiling_attrs(pds_def *d, const int32_t *attrs, size_t n);

@@ -16,6 +16,8 @@ void scene_free(scene *s)
     }
     for (i = 0; i < s->ntextures; i++)
         image_free(&s->textures[i].img);
+    for (i = 0; i < s->nbumps; i++)
+        image_free(&s->bumps[i].img);
     mem_free(s->source);
     mem_free(s->attrs);
     mem_free(s->prims);

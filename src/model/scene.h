@@ -36,8 +36,14 @@ typedef struct scene_loc {
 } scene_loc;
 
 /* A plain attribute: one colour and one optical model for a whole surface. */
+/* Shading models of an optical attribute (MODEL in ATTR; src/trace/shade.h). */
+typedef enum shade_model {
+    SHADE_PHONG, SHADE_LAMBERT, SHADE_BLINN, SHADE_MIRROR, SHADE_TRANSPARENT, SHADE_MODEL_COUNT
+} shade_model;
+
 typedef struct scene_attr {
     char name[SCENE_NAME_MAX + 1];
+    shade_model model;        /* default SHADE_PHONG */
     double color[3];          /* linear 0..1 */
     double ambient;           /* ka, fraction of the scene ambient reflected */
     double diffuse;           /* kd */
@@ -59,6 +65,7 @@ typedef struct scene_texture {
     char name[SCENE_NAME_MAX + 1];
     image img;                /* RGB, 8 bits per channel */
     double repeat[2];
+    int local;                /* 1: in the region's own frame (pds_region.h) */
     scene_loc loc;
 } scene_texture;
 
@@ -69,6 +76,9 @@ typedef enum bump_pattern {
     BUMP_BUMPS,               /* sin 2pi fu u * sin 2pi fv v: egg crate */
     BUMP_DIMPLES,             /* a spherical dimple in each of fu x fv cells */
     BUMP_NOISE,               /* gradient noise with fu x fv lattice cells */
+    BUMP_GROOVES,             /* grooves of `width` along the region boundaries of
+                                 the face's PDS (pds_region.h), depth = amplitude */
+    BUMP_IMAGE,               /* grey level of an image: 2 grey - 1, tiled fu x fv */
     BUMP_PATTERN_COUNT
 } bump_pattern;
 
@@ -80,6 +90,9 @@ typedef struct scene_bump {
     double amplitude;         /* deck units, non-zero */
     double freq[2];           /* cycles or cells across u and v */
     unsigned seed;            /* BUMP_NOISE: lattice hash seed */
+    double width;             /* BUMP_GROOVES: groove width, face (u,v) units */
+    image img;                /* BUMP_IMAGE: the height image (RGB, grey used) */
+    int local;                /* 1: pattern in the region's own frame */
     scene_loc loc;
 } scene_bump;
 

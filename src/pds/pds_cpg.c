@@ -6,13 +6,30 @@
  * rectangle becomes its box, any other rectangle or polygon a pds_ring, an
  * ellipse the affine map that takes it to the unit disk, a nested PDS its
  * own compiled structure and the map into its unit square. Each node keeps its
- * bounding box; a point outside a node's box is outside the whole subtree,
- * so a spatially balanced tree is searched in O(log N) node visits. n-ary
- * unions are rebuilt as balanced binary unions with the operand order kept
- * (first-wins is associative), which gives that balance for long operand
- * lists. Priority rules are in docs/pds.md. */
+ * bounding box; a point outside a node's box is outside the whole subtree.
+ *
+ * Cost does not depend on the operand order. Chains of one operator are
+ * flattened first (UNION(a, UNION(b, c)) is UNION(a, b, c) when the inner
+ * node inherits ids; a difference's subtrahends form one union whatever
+ * their ids). A union of PDS_CPG_ACCEL_MIN or more operands then gets
+ *   - a bounding hierarchy over its operands, built in space (Morton order
+ *     of the box centres), each node keeping the lowest operand position
+ *     (prio) below it: a lookup keeps the best (lowest) position found so far and
+ *     skips every subtree that cannot beat it, so the first operand in the
+ *     list that contains the point wins exactly as in a linear scan;
+ *   - a cell index over the union's box (clipped to the unit square): per
+ *     cell, the operands whose boxes meet it, in operand order. The cell of
+ *     a coordinate is a monotone function of it, so a box and every point in
+ *     it agree on the cells; the first listed operand containing the point
+ *     wins. Cells with long lists use the hierarchy instead (it is built
+ *     only when some cell needs it).
+ * The operands of such a union are laid out in memory in the Morton order
+ * of their positions, each keeping its operand position (prio) for the
+ * priority rule, so that nearby lookups touch nearby memory whatever the
+ * operand order. Priority rules are in docs/pds.md. */
 #include "pds/pds_kind.h"
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "pds/pds.h"
 #include "pds/pds_num.h"
@@ -21,11 +38,19 @@
 
 enum { K_BOX, K_ELLIPSE, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
 
+#define PDS_CPG_ACCEL_MIN 8      /* operands from which a union is indexed */
+#define PDS_CPG_CELL_SCAN 24     /* longer cell lists use the hierarchy */
+#define PDS_CPG_GRID_MAX 512     /* cells a side */
+#define PDS_CPG_NO_ACCEL UINT32_MAX
+#define PDS_CPG_BVH_LEAF UINT32_MAX
+
 typedef struct cnode {
     num box[4];          /* closed bounding box; box[0] > box[2] when empty */
     int32_t attr;        /* leaf id, or operator override / PDS_INHERIT */
     uint32_t end;        /* one past the last node of this subtree */
-    uint32_t shape;      /* index into ellipses or rings */
+    uint32_t shape;      /* ellipses, rings, nest index; union: accel or NO_ACCEL */
+    uint32_t prio;       /* operand position in an indexed union (its memory
+                            order is spatial, see pds_cpg_emit_union) */
     uint8_t kind;
 } cnode;
 
@@ -41,12 +66,37 @@ typedef struct nested {
     NS(pds) *pds;
 } nested;
 
+/* Hierarchy node: box of the operands below, the lowest of their operand
+ * positions (prio), children a, b, or a == PDS_CPG_BVH_LEAF and b the
+ * operand's node index. */
+typedef struct bvh {
+    num box[4];
+    uint32_t minp, a, b;
+} bvh;
+
+typedef struct accel {
+    bvh *h;              /* 2 n - 1 nodes, root first */
+    size_t nh;
+    uint32_t *start;     /* gn * gn + 1 offsets into ops; NULL: no cell index */
+    uint32_t *ops;       /* operand node indices per cell, in operand order */
+    size_t nops;
+    double g0[2], gs[2]; /* cell of x = floor((x - g0) * gs), clamped */
+    long gn;
+} accel;
+
 typedef struct cpg {
     cnode *nodes; size_t nnodes, cap;
     ellipse *ell; size_t nell, cap_ell;
     NS(pds_ring) *rings; size_t nrings, cap_rings;
     nested *nest; size_t nnest, cap_nest;
+    accel *acc; size_t nacc, cap_acc;
 } cpg;
+
+/* Operand lists of definition nodes, collected while flattening. */
+typedef struct list {
+    size_t *v;
+    size_t n, cap;
+} list;
 
 typedef struct builder {
     const pds_def *def;
@@ -54,7 +104,7 @@ typedef struct builder {
     cpg *c;
 } builder;
 
-static void release(void *impl)
+static void pds_cpg_release(void *impl)
 {
     cpg *c = impl;
     size_t i;
@@ -66,12 +116,18 @@ static void release(void *impl)
     for (i = 0; i < c->nnest; i++)
         NS(pds_free)(c->nest[i].pds);
     mem_free(c->nest);
+    for (i = 0; i < c->nacc; i++) {
+        mem_free(c->acc[i].h);
+        mem_free(c->acc[i].start);
+        mem_free(c->acc[i].ops);
+    }
+    mem_free(c->acc);
     mem_free(c->ell);
     mem_free(c->nodes);
     mem_free(c);
 }
 
-static long push(cpg *c, uint8_t kind, int32_t attr)
+static long pds_cpg_push(cpg *c, uint8_t kind, int32_t attr)
 {
     cnode *n;
     if (mem_grow((void **)&c->nodes, &c->cap, c->nnodes + 1, sizeof *c->nodes))
@@ -80,57 +136,68 @@ static long push(cpg *c, uint8_t kind, int32_t attr)
     memset(n, 0, sizeof *n);
     n->kind = kind;
     n->attr = attr;
+    n->shape = PDS_CPG_NO_ACCEL;
     return (long)c->nnodes++;
 }
 
-static void box_set(num box[4], double u0, double v0, double u1, double v1)
+static void pds_cpg_box_set(num box[4], double u0, double v0, double u1, double v1)
 {
     box[0] = num_from_d(u0); box[1] = num_from_d(v0);
     box[2] = num_from_d(u1); box[3] = num_from_d(v1);
 }
 
-static int compile_node(builder *b, size_t di);
+static int pds_cpg_box_empty(const num box[4]) { return box[0] > box[2] || box[1] > box[3]; }
 
-/* Emits a union of operands kids[lo..hi) of definition node di, balanced. */
-static int emit_union(builder *b, const size_t *kids, size_t lo, size_t hi, int32_t attr)
+static void pds_cpg_box_grow(num box[4], const num k[4])
 {
-    cpg *c = b->c;
-    long me;
-    size_t k;
-    if (hi - lo == 1 && attr == PDS_INHERIT)
-        return compile_node(b, kids[lo]);
-    me = push(c, K_UNION, attr);
-    if (me < 0)
+    box[0] = num_min(box[0], k[0]);
+    box[1] = num_min(box[1], k[1]);
+    box[2] = num_max(box[2], k[2]);
+    box[3] = num_max(box[3], k[3]);
+}
+
+static void pds_cpg_box_clear(num box[4])
+{
+    box[0] = box[1] = NUM_MAX;
+    box[2] = box[3] = num_neg(NUM_MAX);
+}
+
+static int pds_cpg_list_add(list *l, size_t x)
+{
+    if (mem_grow((void **)&l->v, &l->cap, l->n + 1, sizeof *l->v))
         return -1;
-    if (hi - lo <= 2) {
-        for (k = lo; k < hi; k++)
-            if (compile_node(b, kids[k]))
+    l->v[l->n++] = x;
+    return 0;
+}
+
+/* Appends the operands of definition node di (an operator `op`), replacing
+ * each operand that is itself `op` by its own operands where that cannot
+ * change an id: it inherits, or ids do not matter at that place (`ids`
+ * is 0 for a difference's subtrahends; for an intersection only the first
+ * operand's id counts). Depth is bounded by PDS_MAX_DEPTH. */
+static int pds_cpg_flatten(const pds_cpg *d, size_t di, pds_cpg_op op, int ids, list *out)
+{
+    const pds_cpg_node *n = &d->nodes[di];
+    size_t k;
+    for (k = 0; k < n->count; k++) {
+        size_t kid = d->kids[n->first + k];
+        const pds_cpg_node *kn = &d->nodes[kid];
+        int kid_ids = ids && (op != PDS_CPG_INTER || (k == 0 && out->n == 0));
+        if (kn->op == op && (kn->attr == PDS_INHERIT || !kid_ids)) {
+            if (pds_cpg_flatten(d, kid, op, kid_ids, out))
                 return -1;
-    } else {
-        size_t mid = lo + (hi - lo + 1) / 2;
-        if (emit_union(b, kids, lo, mid, PDS_INHERIT) || emit_union(b, kids, mid, hi, PDS_INHERIT))
+        } else if (pds_cpg_list_add(out, kid)) {
             return -1;
-    }
-    {
-        cnode *n = &c->nodes[me];
-        size_t j;
-        n->end = (uint32_t)c->nnodes;
-        n->box[0] = n->box[1] = NUM_MAX;
-        n->box[2] = n->box[3] = num_neg(NUM_MAX);
-        for (j = (size_t)me + 1; j < c->nnodes; j = c->nodes[j].end) {
-            const cnode *k2 = &c->nodes[j];
-            if (k2->box[0] > k2->box[2])
-                continue;
-            n->box[0] = num_min(n->box[0], k2->box[0]);
-            n->box[1] = num_min(n->box[1], k2->box[1]);
-            n->box[2] = num_max(n->box[2], k2->box[2]);
-            n->box[3] = num_max(n->box[3], k2->box[3]);
         }
     }
     return 0;
 }
 
-static int compile_leaf(builder *b, size_t di)
+static int pds_cpg_emit(builder *b, size_t di);
+static int pds_cpg_leaf(builder *b, size_t di);
+static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t attr);
+
+static int pds_cpg_leaf(builder *b, size_t di)
 {
     const pds_cpg_node *dn = &b->def->cpg.nodes[di];
     const double *m = b->m[di];
@@ -139,10 +206,10 @@ static int compile_leaf(builder *b, size_t di)
     if (dn->op == PDS_CPG_RECT && m[1] == 0 && m[3] == 0) {
         double ua = m[0] * dn->p[0] + m[2], ub = m[0] * dn->p[2] + m[2];
         double va = m[4] * dn->p[1] + m[5], vb = m[4] * dn->p[3] + m[5];
-        me = push(c, K_BOX, dn->attr);
+        me = pds_cpg_push(c, K_BOX, dn->attr);
         if (me < 0)
             return -1;
-        box_set(c->nodes[me].box, fmin(ua, ub), fmin(va, vb), fmax(ua, ub), fmax(va, vb));
+        pds_cpg_box_set(c->nodes[me].box, fmin(ua, ub), fmin(va, vb), fmax(ua, ub), fmax(va, vb));
     } else if (dn->op == PDS_CPG_NESTED) {
         /* The node's unit square, placed by m; store the inverse map. */
         double det = m[0] * m[4] - m[1] * m[3], box[4], pad = 1.0 / 16384;
@@ -161,7 +228,7 @@ static int compile_leaf(builder *b, size_t di)
         ne->m[3] = num_from_d(m[0] / det);
         ne->origin[0] = num_from_d(m[2]);
         ne->origin[1] = num_from_d(m[5]);
-        me = push(c, K_NESTED, PDS_INHERIT);
+        me = pds_cpg_push(c, K_NESTED, PDS_INHERIT);
         if (me < 0)
             return -1;
         c->nodes[me].shape = (uint32_t)(c->nnest - 1);
@@ -169,7 +236,7 @@ static int compile_leaf(builder *b, size_t di)
         box[2] = fmax(fmax(m[2], m[0] + m[2]), fmax(m[1] + m[2], m[0] + m[1] + m[2]));
         box[1] = fmin(fmin(m[5], m[3] + m[5]), fmin(m[4] + m[5], m[3] + m[4] + m[5]));
         box[3] = fmax(fmax(m[5], m[3] + m[5]), fmax(m[4] + m[5], m[3] + m[4] + m[5]));
-        box_set(c->nodes[me].box, box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad);
+        pds_cpg_box_set(c->nodes[me].box, box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad);
     } else if (dn->op == PDS_CPG_ELLIPSE) {
         /* root_from_disk = m * [ru 0 cu; 0 rv cv]; store its inverse. */
         double a = m[0] * dn->p[2], bb = m[1] * dn->p[3], cc = m[3] * dn->p[2], d = m[4] * dn->p[3];
@@ -179,7 +246,7 @@ static int compile_leaf(builder *b, size_t di)
         ellipse *e;
         if (mem_grow((void **)&c->ell, &c->cap_ell, c->nell + 1, sizeof *c->ell))
             return -1;
-        me = push(c, K_ELLIPSE, dn->attr);
+        me = pds_cpg_push(c, K_ELLIPSE, dn->attr);
         if (me < 0)
             return -1;
         c->nodes[me].shape = (uint32_t)c->nell;
@@ -190,7 +257,7 @@ static int compile_leaf(builder *b, size_t di)
         e->m[3] = num_from_d(a / det);
         e->c[0] = num_from_d(cu);
         e->c[1] = num_from_d(cv);
-        box_set(c->nodes[me].box, cu - eu - pad, cv - ev - pad, cu + eu + pad, cv + ev + pad);
+        pds_cpg_box_set(c->nodes[me].box, cu - eu - pad, cv - ev - pad, cu + eu + pad, cv + ev + pad);
     } else {
         double corners[8], *pts;
         const double *src;
@@ -221,7 +288,7 @@ static int compile_leaf(builder *b, size_t di)
         }
         mem_free(pts);
         c->nrings++;
-        me = push(c, K_RING, dn->attr);
+        me = pds_cpg_push(c, K_RING, dn->attr);
         if (me < 0)
             return -1;
         c->nodes[me].shape = (uint32_t)(c->nrings - 1);
@@ -231,30 +298,354 @@ static int compile_leaf(builder *b, size_t di)
     return 0;
 }
 
-static int compile_node(builder *b, size_t di)
+/* ---- the union index --------------------------------------------------- */
+
+/* Spreads the low 16 bits of x to the even bits (Morton interleave). */
+static uint32_t pds_cpg_spread(uint32_t x)
+{
+    x &= 0xffff;
+    x = (x | (x << 8)) & 0x00ff00ffu;
+    x = (x | (x << 4)) & 0x0f0f0f0fu;
+    x = (x | (x << 2)) & 0x33333333u;
+    x = (x | (x << 1)) & 0x55555555u;
+    return x;
+}
+
+typedef struct keyed { uint32_t key, node; } keyed;
+
+static int pds_cpg_keyed_cmp(const void *pa, const void *pb)
+{
+    const keyed *a = pa, *b = pb;
+    if (a->key != b->key)
+        return a->key < b->key ? -1 : 1;
+    return a->node < b->node ? -1 : a->node > b->node;
+}
+
+/* Builds the hierarchy over ks[0..n) (Morton order) at acc->h[acc->nh]. */
+static uint32_t pds_cpg_bvh_build(accel *acc, const cpg *c, const keyed *ks, size_t n)
+{
+    uint32_t me = (uint32_t)acc->nh++;
+    bvh *h = &acc->h[me];
+    if (n == 1) {
+        memcpy(h->box, c->nodes[ks[0].node].box, sizeof h->box);
+        h->minp = c->nodes[ks[0].node].prio;
+        h->a = PDS_CPG_BVH_LEAF;
+        h->b = ks[0].node;
+    } else {
+        uint32_t l = pds_cpg_bvh_build(acc, c, ks, n / 2);
+        uint32_t r = pds_cpg_bvh_build(acc, c, ks + n / 2, n - n / 2);
+        h = &acc->h[me];
+        memcpy(h->box, acc->h[l].box, sizeof h->box);
+        pds_cpg_box_grow(h->box, acc->h[r].box);
+        h->minp = acc->h[l].minp < acc->h[r].minp ? acc->h[l].minp : acc->h[r].minp;
+        h->a = l;
+        h->b = r;
+    }
+    return me;
+}
+
+/* Cell of coordinate x on one axis: a monotone function of x. */
+static long pds_cpg_cell(const accel *acc, int axis, num x)
+{
+    double t = (num_to_d(x) - acc->g0[axis]) * acc->gs[axis];
+    if (!(t > 0))
+        return 0;
+    return t >= (double)acc->gn ? acc->gn - 1 : (long)t;
+}
+
+/* Cell index with gn cells a side; 1 when the entries would exceed the
+ * budget (the caller tries a coarser grid), -1 out of memory. */
+static int pds_cpg_grid(accel *acc, const cpg *c, const uint32_t *ops, size_t n, const num box[4], long gn)
+{
+    size_t total = 0, i, budget = 8 * n + (size_t)(gn * gn);
+    long cx, cy, x0, x1, y0, y1, a;
+    uint32_t *fill;
+    for (a = 0; a < 2; a++) {
+        double lo = fmax(0, num_to_d(box[a])), hi = fmin(1, num_to_d(box[a + 2]));
+        acc->g0[a] = lo;
+        acc->gs[a] = hi > lo ? (double)gn / (hi - lo) : 0;
+    }
+    acc->gn = gn;
+    for (i = 0; i < n; i++) {
+        const num *b = c->nodes[ops[i]].box;
+        total += (size_t)(pds_cpg_cell(acc, 0, b[2]) - pds_cpg_cell(acc, 0, b[0]) + 1) *
+                 (size_t)(pds_cpg_cell(acc, 1, b[3]) - pds_cpg_cell(acc, 1, b[1]) + 1);
+        if (total > budget)
+            return 1;
+    }
+    acc->start = mem_calloc((size_t)(gn * gn + 1), sizeof *acc->start);
+    acc->ops = mem_calloc(total ? total : 1, sizeof *acc->ops);
+    fill = mem_calloc((size_t)(gn * gn), sizeof *fill);
+    if (!acc->start || !acc->ops || !fill) {
+        mem_free(fill);
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        const num *b = c->nodes[ops[i]].box;
+        x0 = pds_cpg_cell(acc, 0, b[0]); x1 = pds_cpg_cell(acc, 0, b[2]);
+        y0 = pds_cpg_cell(acc, 1, b[1]); y1 = pds_cpg_cell(acc, 1, b[3]);
+        for (cy = y0; cy <= y1; cy++)
+            for (cx = x0; cx <= x1; cx++)
+                acc->start[cy * gn + cx + 1]++;
+    }
+    for (i = 0; i < (size_t)(gn * gn); i++)
+        acc->start[i + 1] += acc->start[i];
+    for (i = 0; i < n; i++) {       /* in operand order: lists come out ascending */
+        const num *b = c->nodes[ops[i]].box;
+        x0 = pds_cpg_cell(acc, 0, b[0]); x1 = pds_cpg_cell(acc, 0, b[2]);
+        y0 = pds_cpg_cell(acc, 1, b[1]); y1 = pds_cpg_cell(acc, 1, b[3]);
+        for (cy = y0; cy <= y1; cy++)
+            for (cx = x0; cx <= x1; cx++) {
+                long cell = cy * gn + cx;
+                acc->ops[acc->start[cell] + fill[cell]++] = ops[i];
+            }
+    }
+    acc->nops = total;
+    mem_free(fill);
+    return 0;
+}
+
+/* Indexes the operands of union node me (already emitted). */
+static int pds_cpg_index(cpg *c, uint32_t me)
+{
+    const cnode *u = &c->nodes[me];
+    uint32_t *ops = NULL, j;
+    keyed *ks = NULL;
+    accel *acc;
+    size_t n = 0, i;
+    long gn;
+    int rc = -1;
+    double su, sv;
+    for (j = me + 1; j < u->end; j = c->nodes[j].end)
+        n += !pds_cpg_box_empty(c->nodes[j].box);
+    if (n == 0)
+        return 0;      /* no operand can hold a point: the plain loop is exact */
+    if (mem_grow((void **)&c->acc, &c->cap_acc, c->nacc + 1, sizeof *c->acc))
+        return -1;
+    acc = &c->acc[c->nacc];
+    memset(acc, 0, sizeof *acc);
+    ops = mem_calloc(n, sizeof *ops);
+    ks = mem_calloc(n, sizeof *ks);
+    if (!ops || !ks)
+        goto done;
+    su = num_to_d(u->box[2]) - num_to_d(u->box[0]);
+    sv = num_to_d(u->box[3]) - num_to_d(u->box[1]);
+    su = su > 0 ? 65535 / su : 0;
+    sv = sv > 0 ? 65535 / sv : 0;
+    for (i = 0, j = me + 1; j < u->end; j = c->nodes[j].end) {
+        const num *b = c->nodes[j].box;
+        double mu, mv;
+        if (pds_cpg_box_empty(b))
+            continue;
+        mu = (0.5 * (num_to_d(b[0]) + num_to_d(b[2])) - num_to_d(u->box[0])) * su;
+        mv = (0.5 * (num_to_d(b[1]) + num_to_d(b[3])) - num_to_d(u->box[1])) * sv;
+        ks[i].key = pds_cpg_spread((uint32_t)fmin(fmax(mu, 0), 65535)) |
+                    pds_cpg_spread((uint32_t)fmin(fmax(mv, 0), 65535)) << 1;
+        ks[i].node = j;
+        ops[i++] = j;
+    }
+    /* the cell lists are filled in operand order: sort ops by prio (the
+     * positions are distinct and below the operand count) */
+    {
+        size_t total = 0, w = 0;
+        uint32_t *by = NULL;
+        for (j = me + 1; j < u->end; j = c->nodes[j].end)
+            total++;
+        by = mem_calloc(total, sizeof *by);
+        if (!by)
+            goto done;
+        for (i = 0; i < total; i++)
+            by[i] = UINT32_MAX;
+        for (i = 0; i < n; i++)
+            by[c->nodes[ops[i]].prio] = ops[i];
+        for (i = 0; i < total; i++)
+            if (by[i] != UINT32_MAX)
+                ops[w++] = by[i];
+        mem_free(by);
+    }
+    for (gn = (long)ceil(sqrt((double)n)); gn > PDS_CPG_GRID_MAX; gn /= 2)
+        ;
+    for (; gn >= 2; gn /= 2) {
+        int g = pds_cpg_grid(acc, c, ops, n, u->box, gn);
+        if (g < 0)
+            goto done;
+        if (g == 0)
+            break;
+    }
+    if (gn < 2)
+        acc->gn = 0;
+    /* The hierarchy, unless every cell is short enough to scan (it would
+     * never be read, and a lookup touches less memory without it). */
+    for (i = 0, j = 0; acc->gn && i < (size_t)(acc->gn * acc->gn); i++)
+        j = acc->start[i + 1] - acc->start[i] > j ? acc->start[i + 1] - acc->start[i] : j;
+    if (!acc->gn || j > PDS_CPG_CELL_SCAN) {
+        if (!(acc->h = mem_calloc(2 * n - 1, sizeof *acc->h)))
+            goto done;
+        qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
+        pds_cpg_bvh_build(acc, c, ks, n);
+    }
+    c->nodes[me].shape = (uint32_t)c->nacc++;
+    rc = 0;
+done:
+    if (rc) {
+        mem_free(acc->h);
+        mem_free(acc->start);
+        mem_free(acc->ops);
+    }
+    mem_free(ops);
+    mem_free(ks);
+    return rc;
+}
+
+/* ---- emission ---------------------------------------------------------- */
+
+/* A point of definition node di in root coordinates, for ordering:
+ * a leaf's centre, an operator's first operand's. */
+static void pds_cpg_anchor(const builder *b, size_t di, double *x, double *y)
+{
+    const pds_cpg *d = &b->def->cpg;
+    const pds_cpg_node *n = &d->nodes[di];
+    const double *m;
+    double lx = 0.5, ly = 0.5;
+    while (n->op >= PDS_CPG_UNION) {
+        di = d->kids[n->first];
+        n = &d->nodes[di];
+    }
+    m = b->m[di];
+    if (n->op == PDS_CPG_RECT) {
+        lx = 0.5 * (n->p[0] + n->p[2]);
+        ly = 0.5 * (n->p[1] + n->p[3]);
+    } else if (n->op == PDS_CPG_ELLIPSE) {
+        lx = n->p[0];
+        ly = n->p[1];
+    } else if (n->op == PDS_CPG_POLYGON) {
+        lx = d->pts[2 * n->first];
+        ly = d->pts[2 * n->first + 1];
+    }
+    *x = m[0] * lx + m[1] * ly + m[2];
+    *y = m[3] * lx + m[4] * ly + m[5];
+}
+
+/* Emits the operands kids[0..n) of an indexed union in the Morton order
+ * of their anchors, so that operands near each other in the plane are near
+ * each other in memory whatever the operand order; each keeps its operand
+ * position in prio, which alone decides priority. */
+static int pds_cpg_emit_spatial(builder *b, const size_t *kids, size_t n)
+{
+    keyed *ks = mem_calloc(n, sizeof *ks);
+    double (*xy)[2] = mem_calloc(n, sizeof *xy), lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+    size_t k;
+    int rc = -1, a;
+    if (!ks || !xy)
+        goto done;
+    for (k = 0; k < n; k++) {
+        pds_cpg_anchor(b, kids[k], &xy[k][0], &xy[k][1]);
+        for (a = 0; a < 2; a++) {
+            lo[a] = fmin(lo[a], xy[k][a]);
+            hi[a] = fmax(hi[a], xy[k][a]);
+        }
+    }
+    for (k = 0; k < n; k++) {
+        uint32_t q[2];
+        for (a = 0; a < 2; a++)
+            q[a] = hi[a] > lo[a] ? (uint32_t)fmin(65535, (xy[k][a] - lo[a]) / (hi[a] - lo[a]) * 65535) : 0;
+        ks[k].key = pds_cpg_spread(q[0]) | pds_cpg_spread(q[1]) << 1;
+        ks[k].node = (uint32_t)k;
+    }
+    qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
+    for (k = 0; k < n; k++) {
+        uint32_t at = (uint32_t)b->c->nnodes;
+        if (pds_cpg_emit(b, kids[ks[k].node]))
+            goto done;
+        b->c->nodes[at].prio = ks[k].node;
+    }
+    rc = 0;
+done:
+    mem_free(ks);
+    mem_free(xy);
+    return rc;
+}
+
+/* A union node over definition nodes kids[0..n), in that order. */
+static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t attr)
+{
+    cpg *c = b->c;
+    long me;
+    size_t k;
+    uint32_t j;
+    if (n == 1 && attr == PDS_INHERIT)
+        return pds_cpg_emit(b, kids[0]);
+    me = pds_cpg_push(c, K_UNION, attr);
+    if (me < 0)
+        return -1;
+    if (n < PDS_CPG_ACCEL_MIN) {
+        for (k = 0; k < n; k++)
+            if (pds_cpg_emit(b, kids[k]))
+                return -1;
+    } else if (pds_cpg_emit_spatial(b, kids, n)) {
+        return -1;
+    }
+    c->nodes[me].end = (uint32_t)c->nnodes;
+    pds_cpg_box_clear(c->nodes[me].box);
+    for (j = (uint32_t)me + 1; j < c->nnodes; j = c->nodes[j].end)
+        if (!pds_cpg_box_empty(c->nodes[j].box))
+            pds_cpg_box_grow(c->nodes[me].box, c->nodes[j].box);
+    return n < PDS_CPG_ACCEL_MIN ? 0 : pds_cpg_index(c, (uint32_t)me);
+}
+
+static int pds_cpg_emit(builder *b, size_t di)
 {
     const pds_cpg *d = &b->def->cpg;
     const pds_cpg_node *dn = &d->nodes[di];
     cpg *c = b->c;
+    list ops = { NULL, 0, 0 }, subs = { NULL, 0, 0 };
     long me;
-    size_t k, j;
+    size_t k, first;
+    uint32_t j;
+    int rc = -1;
     if (dn->op < PDS_CPG_UNION)
-        return compile_leaf(b, di);
-    if (dn->op == PDS_CPG_UNION)
-        return emit_union(b, d->kids + dn->first, 0, dn->count, dn->attr);
-    me = push(c, dn->op == PDS_CPG_INTER ? K_INTER : K_DIFF, dn->attr);
+        return pds_cpg_leaf(b, di);
+    if (dn->op == PDS_CPG_UNION) {
+        if (pds_cpg_flatten(d, di, PDS_CPG_UNION, 1, &ops) == 0)
+            rc = pds_cpg_emit_union(b, ops.v, ops.n, dn->attr);
+        mem_free(ops.v);
+        return rc;
+    }
+    if (dn->op == PDS_CPG_INTER) {
+        if (pds_cpg_flatten(d, di, PDS_CPG_INTER, 1, &ops))
+            goto done;
+    } else {
+        /* DIFF(DIFF(a, b..), c..) = DIFF(a, b.., c..) when the inner one
+         * inherits; the subtrahends only need membership: one union. */
+        first = di;
+        while (d->nodes[first].op == PDS_CPG_DIFF && (first == di || d->nodes[first].attr == PDS_INHERIT)) {
+            const pds_cpg_node *fn = &d->nodes[first];
+            for (k = 1; k < fn->count; k++) {
+                size_t kid = d->kids[fn->first + k];
+                if (d->nodes[kid].op == PDS_CPG_UNION ? pds_cpg_flatten(d, kid, PDS_CPG_UNION, 0, &subs)
+                                                       : pds_cpg_list_add(&subs, kid))
+                    goto done;
+            }
+            first = d->kids[fn->first];
+        }
+        if (pds_cpg_list_add(&ops, first))
+            goto done;
+    }
+    me = pds_cpg_push(c, dn->op == PDS_CPG_INTER ? K_INTER : K_DIFF, dn->attr);
     if (me < 0)
-        return -1;
-    for (k = 0; k < dn->count; k++)
-        if (compile_node(b, d->kids[dn->first + k]))
-            return -1;
+        goto done;
+    for (k = 0; k < ops.n; k++)
+        if (pds_cpg_emit(b, ops.v[k]))
+            goto done;
+    if (subs.n && pds_cpg_emit_union(b, subs.v, subs.n, PDS_INHERIT))
+        goto done;
     {
         cnode *n = &c->nodes[me];
-        const cnode *first = &c->nodes[me + 1];
+        const cnode *fst = &c->nodes[me + 1];
         n->end = (uint32_t)c->nnodes;
-        memcpy(n->box, first->box, sizeof n->box);
+        memcpy(n->box, fst->box, sizeof n->box);
         if (dn->op == PDS_CPG_INTER)
-            for (j = first->end; j < c->nnodes; j = c->nodes[j].end) {
+            for (j = fst->end; j < c->nnodes; j = c->nodes[j].end) {
                 const cnode *k2 = &c->nodes[j];
                 n->box[0] = num_max(n->box[0], k2->box[0]);
                 n->box[1] = num_max(n->box[1], k2->box[1]);
@@ -262,10 +653,14 @@ static int compile_node(builder *b, size_t di)
                 n->box[3] = num_min(n->box[3], k2->box[3]);
             }
     }
-    return 0;
+    rc = 0;
+done:
+    mem_free(ops.v);
+    mem_free(subs.v);
+    return rc;
 }
 
-static int compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_cpg_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     builder b;
     int *depth;
@@ -278,7 +673,7 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
     if (!c || !b.m || !depth)
         goto oom;
     pds_cpg_placements(def, b.m, depth);
-    if (compile_node(&b, def->cpg.root))
+    if (pds_cpg_emit(&b, def->cpg.root))
         goto oom;
     mem_free(b.m);
     mem_free(depth);
@@ -287,11 +682,11 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
 oom:
     mem_free(b.m);
     mem_free(depth);
-    release(c);
+    pds_cpg_release(c);
     return NS(pds_oom)(def, file, err);
 }
 
-static int ellipse_in(const ellipse *e, num u, num v)
+static int pds_cpg_ellipse_in(const ellipse *e, num u, num v)
 {
     num du = num_sub(u, e->c[0]), dv = num_sub(v, e->c[1]);
     num x = num_add(num_mul(e->m[0], du), num_mul(e->m[1], dv));
@@ -304,7 +699,7 @@ static int ellipse_in(const ellipse *e, num u, num v)
 
 /* A nested PDS's region: its closed unit square, minus where it says
  * PDS_NONE (transparent). */
-static int nested_in(const nested *ne, num u, num v, int32_t *attr, unsigned long *steps)
+static int pds_cpg_nested_in(const nested *ne, num u, num v, int32_t *attr, unsigned long *steps)
 {
     num du = num_sub(u, ne->origin[0]), dv = num_sub(v, ne->origin[1]);
     num x = num_add(num_mul(ne->m[0], du), num_mul(ne->m[1], dv));
@@ -322,11 +717,11 @@ static int nested_in(const nested *ne, num u, num v, int32_t *attr, unsigned lon
 /* Membership of (u,v) in the subtree at i, whose box has already accepted
  * the point (and been counted in *steps); on success *attr is the winning
  * leaf's id or an operator's override. Rules: docs/pds.md. */
-static int body(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned long *steps);
+static int pds_cpg_body(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned long *steps);
 
 /* Visits node k: counts it, tests its box, then its shape or operands.
  * Leaf shapes are tested inline: most visits end at a leaf. */
-static inline int visit(const cpg *c, uint32_t k, num u, num v, int32_t *attr, unsigned long *steps)
+static inline int pds_cpg_visit(const cpg *c, uint32_t k, num u, num v, int32_t *attr, unsigned long *steps)
 {
     const cnode *n = &c->nodes[k];
     ++*steps;
@@ -336,7 +731,7 @@ static inline int visit(const cpg *c, uint32_t k, num u, num v, int32_t *attr, u
     case K_BOX:
         break;
     case K_ELLIPSE:
-        if (!ellipse_in(&c->ell[n->shape], u, v))
+        if (!pds_cpg_ellipse_in(&c->ell[n->shape], u, v))
             return 0;
         break;
     case K_RING:
@@ -344,31 +739,81 @@ static inline int visit(const cpg *c, uint32_t k, num u, num v, int32_t *attr, u
             return 0;
         break;
     case K_NESTED:
-        return nested_in(&c->nest[n->shape], u, v, attr, steps);
+        return pds_cpg_nested_in(&c->nest[n->shape], u, v, attr, steps);
     default:
-        return body(c, k, u, v, attr, steps);
+        return pds_cpg_body(c, k, u, v, attr, steps);
     }
     *attr = n->attr;
     return 1;
 }
 
-static int body(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned long *steps)
+/* The first operand (in operand order) of an indexed union that contains
+ * (u,v): the cell's list, or the hierarchy with priority pruning. */
+static int pds_cpg_indexed(const cpg *c, const accel *acc, num u, num v, int32_t *attr, unsigned long *steps)
+{
+    uint32_t stack[64], best = UINT32_MAX;
+    int top = 0;
+    if (acc->gn) {
+        long cell = pds_cpg_cell(acc, 1, v) * acc->gn + pds_cpg_cell(acc, 0, u);
+        uint32_t s = acc->start[cell], e = acc->start[cell + 1];
+        ++*steps;
+        if (e - s <= PDS_CPG_CELL_SCAN) {
+            for (; s < e; s++)
+                if (pds_cpg_visit(c, acc->ops[s], u, v, attr, steps))
+                    return 1;
+            return 0;
+        }
+    }
+    stack[top++] = 0;
+    while (top > 0) {
+        const bvh *h = &acc->h[stack[--top]];
+        if (h->minp >= best)
+            continue;
+        if (h->a == PDS_CPG_BVH_LEAF) {
+            int32_t a;
+            if (pds_cpg_visit(c, h->b, u, v, &a, steps)) {
+                best = h->minp;
+                *attr = a;
+            }
+            continue;
+        }
+        ++*steps;
+        if (!pds_num_in_box(h->box, u, v))
+            continue;
+        /* Lower positions first: they can end the search early. */
+        if (acc->h[h->a].minp < acc->h[h->b].minp) {
+            stack[top++] = h->b;
+            stack[top++] = h->a;
+        } else {
+            stack[top++] = h->a;
+            stack[top++] = h->b;
+        }
+    }
+    return best != UINT32_MAX;
+}
+
+static int pds_cpg_body(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned long *steps)
 {
     const cnode *n = &c->nodes[i];
     uint32_t k;
     int32_t dummy;
     if (n->kind == K_UNION) {
-        for (k = i + 1; k < n->end; k = c->nodes[k].end)
-            if (visit(c, k, u, v, attr, steps))
-                break;
-        if (k >= n->end)
-            return 0;
+        if (n->shape != PDS_CPG_NO_ACCEL) {
+            if (!pds_cpg_indexed(c, &c->acc[n->shape], u, v, attr, steps))
+                return 0;
+        } else {
+            for (k = i + 1; k < n->end; k = c->nodes[k].end)
+                if (pds_cpg_visit(c, k, u, v, attr, steps))
+                    break;
+            if (k >= n->end)
+                return 0;
+        }
     } else {
         k = i + 1;
-        if (!visit(c, k, u, v, attr, steps))
+        if (!pds_cpg_visit(c, k, u, v, attr, steps))
             return 0;
         for (k = c->nodes[k].end; k < n->end; k = c->nodes[k].end)
-            if (visit(c, k, u, v, &dummy, steps) != (n->kind == K_INTER))
+            if (pds_cpg_visit(c, k, u, v, &dummy, steps) != (n->kind == K_INTER))
                 return 0;
     }
     if (n->attr != PDS_INHERIT)
@@ -376,13 +821,13 @@ static int body(const cpg *c, uint32_t i, num u, num v, int32_t *attr, unsigned 
     return 1;
 }
 
-static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+static int32_t pds_cpg_locate(const void *impl, num u, num v, unsigned long *steps)
 {
     int32_t attr = PDS_NONE;
-    return visit(impl, 0, u, v, &attr, steps) ? attr : PDS_NONE;
+    return pds_cpg_visit(impl, 0, u, v, &attr, steps) ? attr : PDS_NONE;
 }
 
-static size_t bytes(const void *impl)
+static size_t pds_cpg_bytes(const void *impl)
 {
     const cpg *c = impl;
     size_t s = sizeof *c + c->cap * sizeof *c->nodes + c->cap_ell * sizeof *c->ell + c->cap_rings * sizeof *c->rings, i;
@@ -392,7 +837,17 @@ static size_t bytes(const void *impl)
     s += c->cap_nest * sizeof *c->nest;
     for (i = 0; i < c->nnest; i++)
         s += NS(pds_bytes)(c->nest[i].pds);
+    s += c->cap_acc * sizeof *c->acc;
+    for (i = 0; i < c->nacc; i++)
+        s += c->acc[i].nh * sizeof *c->acc[i].h +
+             (c->acc[i].gn ? (size_t)(c->acc[i].gn * c->acc[i].gn + 1) * sizeof(uint32_t) + c->acc[i].nops * sizeof(uint32_t) : 0);
     return s;
 }
 
-const NS(pds_kind_ops) NS(pds_cpg_ops) = { "cpg", compile, locate, bytes, release };
+const NS(pds_kind_ops) NS(pds_cpg_ops) = {
+    .name = "cpg",
+    .compile = pds_cpg_compile,
+    .locate = pds_cpg_locate,
+    .bytes = pds_cpg_bytes,
+    .release = pds_cpg_release,
+};

@@ -7,15 +7,17 @@
 #include "pds/pds_kind.h"
 #include "pds/pds_num.h"
 #include "pds/pds_ring.h"
+#include "pds/pds_strip.h"
 #include "util/mem.h"
 
 typedef struct curves {
-    NS(pds_ring) *rings;
+    NS(pds_ring) *rings;        /* the box hierarchy, or */
+    NS(pds_strip) *strips;      /* Ballard's strip trees (def strips = 1) */
     int32_t *attr;
     size_t n;
 } curves;
 
-static void release(void *impl)
+static void pds_curves_release(void *impl)
 {
     curves *c = impl;
     size_t i;
@@ -23,18 +25,23 @@ static void release(void *impl)
         return;
     for (i = 0; i < c->n && c->rings; i++)
         NS(pds_ring_free)(&c->rings[i]);
+    for (i = 0; i < c->n && c->strips; i++)
+        NS(pds_strip_free)(&c->strips[i]);
     mem_free(c->rings);
+    mem_free(c->strips);
     mem_free(c->attr);
     mem_free(c);
 }
 
-static int compile(const pds_def *def, const char *file, void **out, diag *err)
+static int pds_curves_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     const pds_curves *d = &def->curves;
     curves *c = mem_calloc(1, sizeof *c);
     size_t i;
-    if (!c || !(c->rings = mem_calloc(d->ncurves, sizeof *c->rings)) ||
-        !(c->attr = mem_calloc(d->ncurves, sizeof *c->attr)))
+    if (!c || !(c->attr = mem_calloc(d->ncurves, sizeof *c->attr)))
+        goto oom;
+    if (d->strips ? !(c->strips = mem_calloc(d->ncurves, sizeof *c->strips))
+                  : !(c->rings = mem_calloc(d->ncurves, sizeof *c->rings)))
         goto oom;
     c->n = d->ncurves;
     for (i = 0; i < d->ncurves; i++) {
@@ -43,7 +50,8 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
         int owned, rc = pds_curves_ring(d, i, &pts, &n, &owned);
         if (rc)
             goto oom;       /* -1 cannot happen: the check flattened it already */
-        rc = NS(pds_ring_build)(&c->rings[i], pts, n);
+        rc = d->strips ? NS(pds_strip_build)(&c->strips[i], pts, n, d->strip_width)
+                       : NS(pds_ring_build)(&c->rings[i], pts, n);
         if (owned)
             mem_free(pts);
         if (rc)
@@ -53,27 +61,36 @@ static int compile(const pds_def *def, const char *file, void **out, diag *err)
     *out = c;
     return 0;
 oom:
-    release(c);
+    pds_curves_release(c);
     return NS(pds_oom)(def, file, err);
 }
 
-static int32_t locate(const void *impl, num u, num v, unsigned long *steps)
+static int32_t pds_curves_locate(const void *impl, num u, num v, unsigned long *steps)
 {
     const curves *c = impl;
     size_t i;
     for (i = 0; i < c->n; i++)
-        if (NS(pds_ring_inside)(&c->rings[i], u, v, steps))
+        if (c->strips ? NS(pds_strip_inside)(&c->strips[i], u, v, steps)
+                      : NS(pds_ring_inside)(&c->rings[i], u, v, steps))
             return c->attr[i];
     return PDS_NONE;
 }
 
-static size_t bytes(const void *impl)
+static size_t pds_curves_bytes(const void *impl)
 {
     const curves *c = impl;
-    size_t s = sizeof *c + c->n * (sizeof *c->rings + sizeof *c->attr), i;
+    size_t s = sizeof *c + c->n * sizeof *c->attr, i;
     for (i = 0; i < c->n; i++)
-        s += (c->rings[i].n + 1) * 2 * sizeof(num) + c->rings[i].nnodes * sizeof *c->rings[i].nodes;
+        s += c->strips ? sizeof *c->strips + NS(pds_strip_bytes)(&c->strips[i])
+                       : sizeof *c->rings + (c->rings[i].n + 1) * 2 * sizeof(num) +
+                             c->rings[i].nnodes * sizeof *c->rings[i].nodes;
     return s;
 }
 
-const NS(pds_kind_ops) NS(pds_curves_ops) = { "curves", compile, locate, bytes, release };
+const NS(pds_kind_ops) NS(pds_curves_ops) = {
+    .name = "curves",
+    .compile = pds_curves_compile,
+    .locate = pds_curves_locate,
+    .bytes = pds_curves_bytes,
+    .release = pds_curves_release,
+};

@@ -39,4 +39,16 @@ void NS(pds_ring_free)(NS(pds_ring) *r);
 
 /* 1 if (u,v) lies inside or on the ring, else 0; adds visited nodes to *steps. */
 int NS(pds_ring_inside)(const NS(pds_ring) *r, num u, num v, unsigned long *steps);
+
+/* Chain helpers shared with the strip trees (pds_strip.h), over closed
+ * vertex arrays uv of n + 1 points (the first repeated last):
+ *   pds_ring_vertices  rounds pts[2*n] into a new such array (NULL: out
+ *                      of memory)
+ *   pds_ring_split     Ballard's split of the chain i0..i1: the vertex
+ *                      farthest from its chord, within the middle half
+ *   pds_ring_edges     crossing parity of edges i0..i1 at (u,v): 0 or 1,
+ *                      2 when the point lies on one */
+num *NS(pds_ring_vertices)(const double *pts, size_t n);
+uint32_t NS(pds_ring_split)(const num *uv, uint32_t i0, uint32_t i1);
+int NS(pds_ring_edges)(const num *uv, uint32_t i0, uint32_t i1, num u, num v);
 #endif

@@ -1,7 +1,8 @@
 /* scene_attrmap — the attributes an ATTR can map over a face besides its
  * PDS regions (ATTR name ... TEXTURE t BUMP b):
- *   TEXTURE name IMAGE file [REPEAT nu nv]
- *   BUMP name WAVES|BUMPS|DIMPLES|NOISE AMPLITUDE a [FREQUENCY fu fv] [SEED n]
+ *   TEXTURE name IMAGE file [REPEAT nu nv] [LOCAL]
+ *   BUMP name WAVES|BUMPS|DIMPLES|NOISE|GROOVES|IMAGE file AMPLITUDE a
+ *        [FREQUENCY fu fv] [SEED n] [WIDTH w] [LOCAL]
  * Each has a name space of its own. The image is read through the parse's
  * loader once the statement is known to be well formed. */
 #include <string.h>
@@ -50,6 +51,7 @@ static int attrmap_texture(scene_parser *p, scene_cur *c)
     if (scene_cur_accept(c, "REPEAT") &&
         (scene_cur_int(c, "REPEAT", 1, 1024, &rep[0]) || scene_cur_int(c, "REPEAT", 1, 1024, &rep[1])))
         return DIAG_INPUT;
+    t.local = scene_cur_accept(c, "LOCAL");
     if (scene_cur_finish(c))
         return DIAG_INPUT;
     if (mem_grow((void **)&s->textures, &p->cap_textures, s->ntextures + 1, sizeof t))
@@ -82,10 +84,11 @@ static int attrmap_freq(scene_cur *c, double *f, const scene_lex_tok **at)
  * any order, each at most once. */
 static int attrmap_bump(scene_parser *p, scene_cur *c)
 {
-    static const char *const patterns[] = { "WAVES", "BUMPS", "DIMPLES", "NOISE", NULL };
+    static const char *const patterns[] = { "WAVES", "BUMPS", "DIMPLES", "NOISE", "GROOVES", "IMAGE", NULL };
     scene *s = p->s;
     const scene_lex_tok *kw = &c->st->tok[0], *at;
-    int seen_amp = 0, seen_freq = 0, seen_seed = 0, pat, r;
+    const scene_lex_tok *ft = NULL;
+    int seen_amp = 0, seen_freq = 0, seen_seed = 0, seen_width = 0, seen_local = 0, pat, r;
     scene_bump b;
     memset(&b, 0, sizeof b);
     if (attrmap_new_name(p, c, SCENE_NAMES_BUMP, s->nbumps, SCENE_PARSE_MAX_BUMPS, "bumps",
@@ -93,8 +96,15 @@ static int attrmap_bump(scene_parser *p, scene_cur *c)
         scene_cur_choice(c, patterns, &pat))
         return DIAG_INPUT;
     b.pattern = (bump_pattern)pat;
-    b.freq[0] = b.freq[1] = 8;
+    b.freq[0] = b.freq[1] = b.pattern == BUMP_IMAGE ? 1 : 8;
     b.seed = 1;
+    if (b.pattern == BUMP_IMAGE) {
+        if (!(ft = scene_cur_peek(c)))
+            return scene_cur_error(c, NULL, "missing file name");
+        if (scene_parse_can_read(p, "BUMP", scene_parse_loc(ft)))
+            return DIAG_INPUT;
+        c->pos++;
+    }
     while (!scene_cur_at_end(c)) {
         const scene_lex_tok *t = scene_cur_peek(c);
         if ((r = scene_parse_option(c, "AMPLITUDE", &seen_amp)) != 0) {
@@ -112,16 +122,34 @@ static int attrmap_bump(scene_parser *p, scene_cur *c)
             if (r < 0 || scene_cur_int(c, "SEED", 0, SCENE_PARSE_MAX_SEED, &v))
                 return DIAG_INPUT;
             b.seed = (unsigned)v;
+        } else if ((r = scene_parse_option(c, "WIDTH", &seen_width)) != 0) {
+            if (r < 0 || scene_cur_number(c, &b.width, &at))
+                return DIAG_INPUT;
+            if (!(b.width > 0 && b.width <= 0.5))
+                return scene_cur_error(c, at, "WIDTH must be above 0 and at most 0.5");
+        } else if ((r = scene_parse_option(c, "LOCAL", &seen_local)) != 0) {
+            if (r < 0)
+                return DIAG_INPUT;
+            b.local = 1;
         } else {
-            return scene_cur_error(c, t, "expected AMPLITUDE, FREQUENCY or SEED, found %s",
+            return scene_cur_error(c, t, "expected AMPLITUDE, FREQUENCY, SEED, WIDTH or LOCAL, found %s",
                                    t->text);
         }
     }
     if (!seen_amp)
         return scene_cur_error(c, NULL, "AMPLITUDE is required");
-    if (mem_grow((void **)&s->bumps, &p->cap_bumps, s->nbumps + 1, sizeof b) ||
-        scene_names_add(&p->names, SCENE_NAMES_BUMP, b.name, (int)s->nbumps))
+    if (b.pattern == BUMP_GROOVES && !seen_width)
+        return scene_cur_error(c, NULL, "GROOVES needs WIDTH");
+    if (b.pattern != BUMP_GROOVES && seen_width)
+        return scene_cur_error(c, NULL, "WIDTH applies to GROOVES only");
+    if (mem_grow((void **)&s->bumps, &p->cap_bumps, s->nbumps + 1, sizeof b))
         return scene_parse_oom(p, kw);
+    if (ft && scene_parse_image(p, "BUMP", scene_parse_loc(ft), ft->text, 3, &b.img))
+        return DIAG_INPUT;
+    if (scene_names_add(&p->names, SCENE_NAMES_BUMP, b.name, (int)s->nbumps)) {
+        image_free(&b.img);
+        return scene_parse_oom(p, kw);
+    }
     b.loc = scene_parse_loc(kw);
     s->bumps[s->nbumps++] = b;
     return 0;

@@ -11,18 +11,19 @@
 /* Words of the language that cannot be names, so that an operand list such
  * as "A TRANSLATE 1 0 0 B" has exactly one reading. Sorted for bsearch. */
 static const char *const scene_cur_words[] = {
-    "AMBIENT", "AMPLITUDE", "ATTR", "AXIS", "BACKGROUND", "BLOCK", "BRICK",
-    "BSPLINE", "BUMP", "BUMPS", "CIRCLE", "CODE", "COLOR", "CONE", "CPG",
-    "CURVES", "CYCLE", "CYLINDER", "DEPTH", "DIFF", "DIFFERENCE", "DIFFUSE",
-    "DIMPLES", "ELLIPSE", "END", "EXPONENT", "EYE", "FACE", "FOV",
-    "FREQUENCY", "HALFSPACE", "HASH", "HEX", "IMAGE", "INDEX", "INF",
-    "INFINITY", "INTENSITY", "INTER", "INTERSECT", "INTERSECTION", "IOR",
-    "KEY", "LIGHT", "LOOK", "LOOKAT", "MATRIX", "MIRROR", "MORTAR", "MOSAIC",
-    "NAN", "NEST", "NOISE", "NONE", "OBJECT", "OFFSET", "PDS", "PIXELS",
-    "POLYGON", "POLYLINE", "QUADTREE", "RECT", "REPEAT", "ROOT", "ROTATE",
-    "ROW", "SCALE", "SCATTER", "SEED", "SHEAR", "SIZE", "SPECULAR", "SPHERE",
-    "SPLIT", "SQUARE", "TEXTURE", "TILES", "TILING", "TOLERANCE", "TRANSLATE",
-    "TRANSMIT", "TRIANGLE", "UNION", "UP", "WAVES"
+    "AMBIENT", "AMPLITUDE", "ATTR", "AXIS", "BACKGROUND", "BLINN", "BLOCK",
+    "BRICK", "BSPLINE", "BUMP", "BUMPS", "CIRCLE", "CODE", "COLOR", "CONE",
+    "CPG", "CURVES", "CYCLE", "CYLINDER", "DEPTH", "DIFF", "DIFFERENCE",
+    "DIFFUSE", "DIMPLES", "ELLIPSE", "END", "EXPONENT", "EYE", "FACE", "FOV",
+    "FREQUENCY", "GROOVES", "HALFSPACE", "HASH", "HEX", "IMAGE", "INDEX",
+    "INF", "INFINITY", "INTENSITY", "INTER", "INTERSECT", "INTERSECTION",
+    "IOR", "KEY", "LAMBERT", "LIGHT", "LOCAL", "LOOK", "LOOKAT", "MATRIX",
+    "MIRROR", "MODEL", "MORTAR", "MOSAIC", "NAN", "NEST", "NOISE", "NONE",
+    "OBJECT", "OFFSET", "PDS", "PHONG", "PIXELS", "POLYGON", "POLYLINE",
+    "QUADTREE", "RECT", "REPEAT", "ROOT", "ROTATE", "ROW", "SCALE", "SCATTER",
+    "SEED", "SHEAR", "SIZE", "SPECULAR", "SPHERE", "SPLIT", "SQUARE", "STRIPS",
+    "TEXTURE", "TILES", "TILING", "TOLERANCE", "TRANSLATE", "TRANSMIT",
+    "TRANSPARENT", "TRIANGLE", "UNION", "UP", "WAVES", "WIDTH"
 };
 
 static int scene_cur_cmp(const void *key, const void *elem)

@@ -344,7 +344,9 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
         { "IOR", 1, 10, offsetof(scene_attr, ior) },
     };
     enum { NOPT = sizeof opt / sizeof opt[0] };
-    int seen[NOPT + 1] = { 0 }, seen_tex = 0, seen_bump = 0, i, r;
+    /* MODEL names, in shade_model order */
+    static const char *const models[] = { "PHONG", "LAMBERT", "BLINN", "MIRROR", "TRANSPARENT", NULL };
+    int seen[NOPT + 1] = { 0 }, seen_tex = 0, seen_bump = 0, seen_model = 0, i, r;
     const scene_lex_tok *kw = &c->st->tok[0], *at;
     scene_attr a;
     scene_parse_attr_defaults(&a);
@@ -377,12 +379,19 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
                 return DIAG_INPUT;
             continue;
         }
+        if ((r = scene_parse_option(c, "MODEL", &seen_model)) != 0) {
+            int m;
+            if (r < 0 || scene_cur_choice(c, models, &m))
+                return DIAG_INPUT;
+            a.model = (shade_model)m;
+            continue;
+        }
         for (i = 0; i < NOPT; i++)
             if ((r = scene_parse_option(c, opt[i].kw, &seen[i])) != 0)
                 break;
         if (i == NOPT)
             return scene_cur_error(c, t, "expected COLOR, AMBIENT, DIFFUSE, SPECULAR, "
-                                   "EXPONENT, MIRROR, TRANSMIT, IOR, TEXTURE or BUMP, "
+                                   "EXPONENT, MIRROR, TRANSMIT, IOR, TEXTURE, BUMP or MODEL, "
                                    "found %s", t->text);
         if (r < 0 || scene_cur_range(c, opt[i].kw, opt[i].lo, opt[i].hi,
                                      (double *)(void *)((char *)&a + opt[i].off)))
@@ -390,6 +399,13 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
     }
     if (!seen[NOPT])
         return scene_cur_error(c, NULL, "COLOR is required");
+    /* A mirror reflects, a transparent attribute transmits, unless told how much. */
+    if (a.model == SHADE_MIRROR && !seen[4])
+        a.mirror = 1;
+    if (a.model == SHADE_TRANSPARENT && !seen[5])
+        a.transmit = 1;
+    if (a.model == SHADE_TRANSPARENT && !seen[6])
+        a.ior = 1.5;
     return scene_parse_add_attr(p, &a, kw);
 }
 

@@ -1,18 +1,29 @@
 /* scene_pds_curves — CURVES blocks (curve-bounded regions, docs/pds.md):
- *   PDS name CURVES [TOLERANCE t]
+ *   PDS name CURVES [TOLERANCE t] [STRIPS [WIDTH w]]
  *   BSPLINE attr u v u v ...    closed uniform cubic B-spline control points
  *   POLYLINE attr u v u v ...   closed polyline vertices
  * in priority order (the first curve containing a point wins). Shapes and
- * the tolerance are validated by pds_def_check at END. */
+ * the tolerance are validated by pds_def_check at END. STRIPS answers
+ * membership with Ballard's strip trees (pds_strip.h) built to width w. */
 #include "scene/scene_pds.h"
 
 static int curves_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 {
-    const scene_lex_tok *t = scene_cur_peek(c);
-    if (t && !scene_cur_accept(c, "TOLERANCE"))
-        return scene_cur_error(c, t, "expected TOLERANCE, found %s", t->text);
-    if (t && scene_cur_number(c, &b->map->def.curves.tolerance, NULL))
+    pds_curves *cv = &b->map->def.curves;
+    const scene_lex_tok *t = scene_cur_peek(c), *at;
+    if (scene_cur_accept(c, "TOLERANCE") && scene_cur_number(c, &cv->tolerance, NULL))
         return DIAG_INPUT;
+    if (scene_cur_accept(c, "STRIPS")) {
+        cv->strips = 1;
+        if (scene_cur_accept(c, "WIDTH")) {
+            if (scene_cur_number(c, &cv->strip_width, &at))
+                return DIAG_INPUT;
+            if (!(cv->strip_width >= 0 && cv->strip_width <= 1))
+                return scene_cur_error(c, at, "strip WIDTH must be between 0 and 1");
+        }
+    }
+    if ((t = scene_cur_peek(c)) != NULL)
+        return scene_cur_error(c, t, "expected TOLERANCE or STRIPS, found %s", t->text);
     p->block.body = scene_pds_curves_body;
     p->block.kind = "CURVES";
     return 0;

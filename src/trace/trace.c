@@ -7,6 +7,8 @@
 #include "attr/attr_bump.h"
 #include "attr/attr_texture.h"
 #include "trace/optics.h"
+#include "trace/shade.h"
+#include "model/scene_map.h"
 #include <math.h>
 #include <string.h>
 
@@ -37,6 +39,13 @@ static const scene_attr *trace_attribute(const cscene *cs, trace_ctx *tc, int pi
             return &sc->attrs[id];
     }
     return &sc->attrs[sc->prims[pi].attr];
+}
+
+/* The PDS definition bound to face `face` of primitive pi, or NULL. */
+static const pds_def *trace_map_def(const cscene *cs, int pi, int face)
+{
+    int m = face >= 0 && face < SCENE_MAX_FACES ? cs->sc->prims[pi].face_map[face] : -1;
+    return m >= 0 ? &cs->sc->maps[m]->def : NULL;
 }
 
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,
@@ -94,7 +103,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     geom_surface sf;
     csg_hit h;
     vec3 p, nsn;
-    double d[3], ns[3], dn, refl, c[3], color[3], pass[SCENE_MAX_LIGHTS];
+    double d[3], ns[3], dn, refl, trans, tint[3], c[3], color[3], pass[SCENE_MAX_LIGHTS];
     double ldir[SCENE_MAX_LIGHTS][3];        /* unit direction to each light */
     size_t li;
     int i, inside, far;
@@ -145,7 +154,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     /* Step 5 (1): the bump attribute perturbs the normal; the shading normal
      * ns faces the viewer. */
     if (at->bump >= 0)
-        attr_bump_normal(&sc->bumps[at->bump], cs->nm.scale, &sf, ns);
+        attr_bump_normal_at(&sc->bumps[at->bump], trace_map_def(cs, h.prim, h.face), cs->nm.scale, &sf, ns);
     else
         memcpy(ns, sf.n, sizeof ns);
     if (dn > 0)
@@ -154,52 +163,30 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     nsn = vec3_from_d(ns);
     /* Step 5 (2): the texture attribute gives the colour. */
     if (at->texture >= 0)
-        attr_texture_rgb(&sc->textures[at->texture], sf.u, sf.v, color);
+        attr_texture_rgb_at(&sc->textures[at->texture], trace_map_def(cs, h.prim, h.face), sf.u, sf.v, color);
     else
         memcpy(color, at->color, sizeof color);
 
-    /* Step 5 (3): the optical attribute's shading model: ambient, then
-     * diffuse and Phong highlight per light that reaches p. */
-    for (i = 0; i < 3; i++)
-        c[i] = at->ambient * color[i] * sc->ambient[i];
-    for (li = 0; li < cs->nlights; li++) {
-        const double *ld = ldir[li];
-        double ndl, spec = 0;
-        if (pass[li] <= 0)
-            continue;
-        ndl = dmath_dot3(ns, ld);
-        if (ndl <= 0)
-            continue;
-        if (at->specular > 0) {
-            /* Phong: the light reflected about ns against the view direction */
-            double rl[3], rv;
-            for (i = 0; i < 3; i++)
-                rl[i] = 2 * ndl * ns[i] - ld[i];
-            rv = -dmath_dot3(rl, d);
-            if (rv > 0)
-                spec = at->specular * pow(rv, at->exponent);
-        }
-        for (i = 0; i < 3; i++)
-            c[i] += pass[li] * cs->lights[li].rgb[i] * (at->diffuse * ndl * color[i] + spec);
-    }
+    /* Step 5 (3): the optical attribute's shading model (shade.c). */
+    NS(shade_local)(cs, at, color, ns, d, (const double (*)[3])ldir, pass, c);
+    NS(shade_weights)(at, color, -dmath_dot3(d, ns), inside ? at->ior : 1.0 / at->ior, &refl, &trans, tint);
 
     /* ... and recursion from step 1 for transmission and mirror reflection. */
-    refl = at->mirror;
     if (far)
         depth = cs->max_depth;
-    if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT) {
+    if (trans > 0 && depth < cs->max_depth && weight * trans > TRACE_MIN_WEIGHT) {
         vec3 td;
         int tir = at->ior > 0 ? NS(optics_refract)(r->d, nsn, inside ? at->ior : 1.0 / at->ior, &td) : 1;
         if (tir > 0) {
-            refl += at->transmit;            /* total internal reflection */
+            refl += trans;                   /* total internal reflection */
         } else if (tir == 0) {
             prim_ray tr;
             double tc3[3];
             trace_spawn(&tr, p, td, h.prim, sf.n);
             tc->rs.rays_refracted++;
-            NS(trace_ray)(cs, tc, &tr, depth + 1, weight * at->transmit, tc3, NULL);
+            NS(trace_ray)(cs, tc, &tr, depth + 1, weight * trans, tc3, NULL);
             for (i = 0; i < 3; i++)
-                c[i] += at->transmit * tc3[i];
+                c[i] += trans * tc3[i];
         }
     }
     if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT) {
@@ -211,7 +198,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
             tc->rs.rays_reflected++;
             NS(trace_ray)(cs, tc, &rr, depth + 1, weight * refl, rc, NULL);
             for (i = 0; i < 3; i++)
-                c[i] += refl * rc[i];
+                c[i] += refl * tint[i] * rc[i];
         }
     }
     for (i = 0; i < 3; i++)

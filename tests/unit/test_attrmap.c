@@ -10,7 +10,9 @@
 #include "tracer_test.h"
 #include "attr/attr_bump.h"
 #include "attr/attr_texture.h"
+#include "model/pds_region.h"
 #include "model/scene_map.h"
+#include "util/dmath.h"
 #include "util/mem.h"
 
 static double at_dot(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -130,6 +132,134 @@ static void test_texture_sampling(void **state)
     assert_true(c[2] == 1 && c2[2] == 1);
     attr_texture_rgb(&t, NAN, 0.25, c);      /* NaN counts as 0: no crash */
     assert_true(c[0] >= 0 && c[0] <= 1);
+}
+
+/* Region frames (pds_region): a rotated, scaled rectangle's own square and
+ * the distance to its outline, computed here from the rectangle's corners;
+ * a brick tiling's cells; a union takes the first operand's frame. */
+static void test_region_frames_and_edges(void **state)
+{
+    uint64_t rng = test_seed("region_frames");
+    pds_def d;
+    pds_region r;
+    size_t k[2];
+    int i;
+    double c = cos(0.5), s = sin(0.5);
+    (void)state;
+    pds_def_init(&d, PDS_CPG, (scene_loc){ 0, 0 });
+    k[0] = (size_t)pds_cpg_rect(&d, 0, 0, 1, 1, 3, (scene_loc){ 0, 0 });
+    pds_cpg_scale(&d, k[0], 0.3, 0.2);
+    pds_cpg_rotate(&d, k[0], dmath_deg(0.5));
+    pds_cpg_translate(&d, k[0], 0.4, 0.3);
+    k[1] = (size_t)pds_cpg_rect(&d, 0, 0, 1, 1, 4, (scene_loc){ 0, 0 });
+    pds_cpg_op_node(&d, PDS_CPG_UNION, k, 2, PDS_INHERIT, (scene_loc){ 0, 0 });
+    for (i = 0; i < 500; i++) {
+        /* a point at local (a, b) of the rectangle: face = R (0.3 a, 0.2 b) + t */
+        double a = test_uniform(&rng, 0.01, 0.99), b = test_uniform(&rng, 0.01, 0.99);
+        double x = 0.3 * a, y = 0.2 * b, u = c * x - s * y + 0.4, v = s * x + c * y + 0.3;
+        double e = fmin(fmin(0.3 * a, 0.3 * (1 - a)), fmin(0.2 * b, 0.2 * (1 - b)));
+        assert_int_equal(pds_region_at(&d, u, v, &r), 1);
+        assert_true(fabs(r.frame[0] - a) < 1e-12 && fabs(r.frame[1] - b) < 1e-12);
+        assert_true(fabs(r.edge - e) < 1e-12);
+    }
+    assert_int_equal(pds_region_at(&d, 0.05, 0.95, &r), 1);   /* the second operand */
+    assert_true(fabs(r.frame[0] - 0.05) < 1e-12 && fabs(r.edge - 0.05) < 1e-12);
+    pds_def_free(&d);
+    pds_def_init(&d, PDS_TILING, (scene_loc){ 0, 0 });
+    d.tiling.shape = PDS_TILE_BRICK;
+    d.tiling.size[0] = 0.25;
+    d.tiling.size[1] = 0.125;
+    pds_region_at(&d, 0.3, 0.15, &r);          /* row 1, shifted by 0.125 */
+    assert_true(fabs(r.frame[0] - 0.7) < 1e-12 && fabs(r.frame[1] - 0.2) < 1e-12);
+    assert_true(fabs(r.edge - 0.025) < 1e-12);
+    pds_def_free(&d);
+}
+
+/* Grooves along tile edges: flat in the middle of a tile, the surface
+ * falling towards each edge (the normal leans towards the edge), and a
+ * LOCAL texture filling its region: its bottom-left quarter shows the
+ * image's bottom-left texel. */
+static void test_grooves_and_local_texture(void **state)
+{
+    static const uint8_t px[12] = {255, 0, 0,  0, 255, 0,
+                                   0, 0, 255,  255, 255, 255};
+    scene_bump b;
+    scene_texture t;
+    geom_surface sf;
+    pds_def d;
+    double n[3], col[3];
+    (void)state;
+    pds_def_init(&d, PDS_TILING, (scene_loc){ 0, 0 });
+    memset(&b, 0, sizeof b);
+    memset(&sf, 0, sizeof sf);
+    b.pattern = BUMP_GROOVES;
+    b.amplitude = 0.01;
+    b.width = 0.02;
+    sf.n[2] = 1;
+    sf.dpdu[0] = 1;
+    sf.dpdv[1] = 1;
+    sf.u = 0.125;                 /* the middle of tile (0, 0): flat */
+    sf.v = 0.125;
+    attr_bump_normal_at(&b, &d, 1.0, &sf, n);
+    assert_true(n[0] == 0 && n[1] == 0 && n[2] == 1);
+    sf.u = 0.255;                 /* just right of the edge u = 0.25 */
+    attr_bump_normal_at(&b, &d, 1.0, &sf, n);
+    assert_true(n[0] < -0.1 && fabs(n[1]) < 1e-9);
+    sf.u = 0.245;                 /* just left of it */
+    attr_bump_normal_at(&b, &d, 1.0, &sf, n);
+    assert_true(n[0] > 0.1);
+    attr_bump_normal_at(&b, NULL, 1.0, &sf, n);   /* no PDS: flat */
+    assert_true(n[0] == 0 && n[2] == 1);
+    pds_def_free(&d);
+
+    memset(&t, 0, sizeof t);
+    t.img.width = t.img.height = 2;
+    t.img.channels = 3;
+    t.img.px = (uint8_t *)px;
+    t.repeat[0] = t.repeat[1] = 1;
+    t.local = 1;
+    pds_def_init(&d, PDS_CPG, (scene_loc){ 0, 0 });
+    pds_cpg_rect(&d, 0.2, 0.6, 0.4, 0.9, 1, (scene_loc){ 0, 0 });
+    attr_texture_rgb_at(&t, &d, 0.25, 0.675, col);     /* region's (0.25, 0.25) */
+    assert_true(col[0] < 1e-9 && col[1] < 1e-9 && col[2] > 1 - 1e-9);
+    attr_texture_rgb_at(&t, &d, 0.35, 0.825, col);     /* region's (0.75, 0.75) */
+    assert_true(col[0] < 1e-9 && col[1] > 1 - 1e-9 && col[2] < 1e-9);
+    t.local = 0;                                       /* the face's (u,v) instead */
+    attr_texture_rgb_at(&t, &d, 0.25, 0.675, col);
+    assert_true(col[0] > 0.4 && col[2] < 0.6);
+    pds_def_free(&d);
+}
+
+/* A height image: a left-to-right ramp tilts the normal against +u by
+ * the ramp's slope (amplitude times 2 per image width). */
+static void test_bump_height_image(void **state)
+{
+    uint8_t px[3 * 64];
+    scene_bump b;
+    geom_surface sf;
+    double n[3];
+    int i;
+    (void)state;
+    for (i = 0; i < 64; i++)
+        px[3 * i] = px[3 * i + 1] = px[3 * i + 2] = (uint8_t)(i * 4);
+    memset(&b, 0, sizeof b);
+    memset(&sf, 0, sizeof sf);
+    b.pattern = BUMP_IMAGE;
+    b.amplitude = 0.01;
+    b.freq[0] = b.freq[1] = 1;
+    b.img.width = 64;
+    b.img.height = 1;
+    b.img.channels = 3;
+    b.img.px = px;
+    sf.n[2] = 1;
+    sf.dpdu[0] = 1;
+    sf.dpdv[1] = 1;
+    sf.u = 0.5;
+    sf.v = 0.5;
+    attr_bump_normal(&b, 1.0, &sf, n);
+    /* grey rises 4/255 per texel of 1/64: dh/du = 2 * 4 * 64 / 255 */
+    assert_true(fabs(-n[0] / n[2] - 0.01 * 2 * 4 * 64 / 255.0) < 1e-6);
+    b.img.px = NULL;
 }
 
 /* Refraction in every mode: sin(theta_t) = eta sin(theta_i), t in the plane
@@ -336,6 +466,9 @@ int main(void)
         cmocka_unit_test(test_bump_normals_unit_and_outside),
         cmocka_unit_test(test_bump_tilt_direction),
         cmocka_unit_test(test_texture_sampling),
+        cmocka_unit_test(test_region_frames_and_edges),
+        cmocka_unit_test(test_grooves_and_local_texture),
+        cmocka_unit_test(test_bump_height_image),
         cmocka_unit_test(test_refraction_snell_and_tir),
         cmocka_unit_test(test_face_uv_range_and_continuity),
         cmocka_unit_test(test_render_face_pds_lookup),

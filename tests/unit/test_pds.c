@@ -14,6 +14,7 @@
 #include <string.h>
 #include "num/fx.h"
 #include "pds/pds_modes.h"
+#include "pds/pds_strip_ops.h"
 #include "model/pds_curve.h"
 #include "model/pds_def.h"
 #include "model/pds_image.h"
@@ -444,6 +445,332 @@ static void test_pds_cpg_visits_grow_logarithmically(void **state)
             printf("# %s N=%.0f mean node visits %.1f\n", modes[mi]->mode, n, steps);
             assert_true(steps <= 3 * log2(n) + 4);
         }
+}
+
+/* The same squares listed in spatial, reverse and shuffled order: the
+ * operand order must decide priority only, not the cost. */
+static double order_steps(size_t n, int order, const pds_mode_ops *m, uint64_t *s)
+{
+    pds_def d;
+    size_t side = (size_t)ceil(sqrt((double)n)), *kids = mem_calloc(n, sizeof *kids), i;
+    double cell = 1.0 / (double)side;
+    unsigned long steps = 0;
+    void *p;
+    int t;
+    assert_non_null(kids);
+    pds_def_init(&d, PDS_CPG, L0);
+    for (i = 0; i < n; i++) {
+        size_t x = i % side, y = i / side;
+        kids[i] = (size_t)pds_cpg_rect(&d, x * cell + cell / 8, y * cell + cell / 8, (x + 1) * cell - cell / 8,
+                                       (y + 1) * cell - cell / 8, (int32_t)(i % 5), L0);
+    }
+    if (order == 1)
+        for (i = 0; i < n / 2; i++) {
+            size_t tmp = kids[i];
+            kids[i] = kids[n - 1 - i];
+            kids[n - 1 - i] = tmp;
+        }
+    else if (order == 2)
+        for (i = n; i-- > 1;) {
+            size_t j = (size_t)(test_rand(s) % (i + 1)), tmp = kids[i];
+            kids[i] = kids[j];
+            kids[j] = tmp;
+        }
+    pds_cpg_op_node(&d, PDS_CPG_UNION, kids, n, PDS_INHERIT, L0);
+    p = compile_or_fail(m, &d);
+    for (t = 0; t < 2000; t++)
+        m->locate_steps(p, test_uniform(s, 0, 1), test_uniform(s, 0, 1), &steps);
+    m->free(p);
+    pds_def_free(&d);
+    mem_free(kids);
+    return (double)steps / 2000;
+}
+
+static void test_pds_cpg_visits_independent_of_order(void **state)
+{
+    uint64_t s = test_seed("test_pds_cpg_visits_independent_of_order");
+    static const size_t ns[3] = { 10, 1000, 10000 };
+    static const char *const names[3] = { "spatial", "reverse", "shuffled" };
+    int o, i, mi;
+    (void)state;
+    for (mi = 0; mi < NMODES; mi++)
+        for (o = 0; o < 3; o++) {
+            double v10 = 0;
+            for (i = 0; i < 3; i++) {
+                double v = order_steps(ns[i], o, modes[mi], &s);
+                printf("# %s %s N=%zu mean node visits %.2f\n", modes[mi]->mode, names[o], ns[i], v);
+                if (i == 0)
+                    v10 = v;
+                else
+                    assert_true(v <= 3 * v10);
+            }
+        }
+}
+
+/* A plate minus n shuffled holes, and a 64-deep chain of two-operand
+ * unions: the subtrahends form one indexed union, the chain one flat
+ * union, so both cost about what 10 operands cost. */
+static double diff_steps(size_t n, int chain, const pds_mode_ops *m, uint64_t *s)
+{
+    pds_def d;
+    size_t side = (size_t)ceil(sqrt((double)n)), *kids = mem_calloc(n + 1, sizeof *kids), i;
+    double cell = 1.0 / (double)side;
+    unsigned long steps = 0;
+    void *p;
+    int t;
+    assert_non_null(kids);
+    pds_def_init(&d, PDS_CPG, L0);
+    kids[0] = (size_t)pds_cpg_rect(&d, 0, 0, 1, 1, 9, L0);
+    for (i = 0; i < n; i++) {
+        size_t x = i % side, y = i / side;
+        kids[i + 1] = (size_t)pds_cpg_ellipse(&d, (x + 0.5) * cell, (y + 0.5) * cell, cell / 3, cell / 3,
+                                              (int32_t)(i % 5), L0);
+    }
+    for (i = n; i-- > 1;) {
+        size_t j = 1 + (size_t)(test_rand(s) % i), tmp = kids[i + 1];
+        kids[i + 1] = kids[j];
+        kids[j] = tmp;
+    }
+    if (chain) {            /* UNION(k1, UNION(k2, ... UNION(kn, plate))) */
+        size_t root = kids[0];
+        for (i = n; i >= 1; i--) {
+            size_t two[2];
+            two[0] = kids[i];
+            two[1] = root;
+            root = (size_t)pds_cpg_op_node(&d, PDS_CPG_UNION, two, 2, PDS_INHERIT, L0);
+        }
+    } else {
+        pds_cpg_op_node(&d, PDS_CPG_DIFF, kids, n + 1, PDS_INHERIT, L0);
+    }
+    p = compile_or_fail(m, &d);
+    for (t = 0; t < 2000; t++) {
+        double u = test_uniform(s, 0, 1), v = test_uniform(s, 0, 1);
+        int32_t got = m->locate_steps(p, u, v, &steps);
+        if (!chain)
+            assert_true(got == PDS_NONE || got == 9);
+    }
+    m->free(p);
+    pds_def_free(&d);
+    mem_free(kids);
+    return (double)steps / 2000;
+}
+
+static void test_pds_cpg_diff_and_chains_flat(void **state)
+{
+    uint64_t s = test_seed("test_pds_cpg_diff_and_chains_flat");
+    int mi;
+    (void)state;
+    for (mi = 0; mi < NMODES; mi++) {
+        double d10 = diff_steps(10, 0, modes[mi], &s), d10k = diff_steps(10000, 0, modes[mi], &s);
+        double c10 = diff_steps(10, 1, modes[mi], &s), c63 = diff_steps(63, 1, modes[mi], &s);
+        printf("# %s plate minus 10 / 10000 holes: %.2f / %.2f visits; chain of 10 / 63 unions: %.2f / %.2f\n",
+               modes[mi]->mode, d10, d10k, c10, c63);
+        assert_true(d10k <= 3 * d10);
+        assert_true(c63 <= 3 * c10);
+    }
+}
+
+/* Exact reference in the mode itself: each leaf compiled alone (same
+ * placement, so the same rounded shape) answers membership, and the
+ * operator rules are applied here by plain recursion over the definition. */
+typedef struct brute {
+    const pds_def *d;
+    const pds_mode_ops *m;
+    void **leaf;          /* per definition node; NULL for operators */
+} brute;
+
+static int brute_node(const brute *b, size_t i, double u, double v, int32_t *attr)
+{
+    const pds_cpg_node *n = &b->d->cpg.nodes[i];
+    size_t k;
+    int in = 0;
+    int32_t dummy;
+    if (n->op < PDS_CPG_UNION) {
+        int32_t id = b->m->locate(b->leaf[i], u, v);
+        if (id == PDS_NONE)
+            return 0;
+        *attr = n->op == PDS_CPG_NESTED ? id : n->attr;
+        return 1;
+    }
+    if (n->op == PDS_CPG_UNION) {
+        for (k = 0; k < n->count && !in; k++)
+            in = brute_node(b, b->d->cpg.kids[n->first + k], u, v, attr);
+    } else {
+        in = brute_node(b, b->d->cpg.kids[n->first], u, v, attr);
+        for (k = 1; k < n->count && in; k++)
+            if (brute_node(b, b->d->cpg.kids[n->first + k], u, v, &dummy) != (n->op == PDS_CPG_INTER))
+                in = 0;
+    }
+    if (in && n->attr != PDS_INHERIT)
+        *attr = n->attr;
+    return in;
+}
+
+static void brute_init(brute *b, const pds_def *d, const pds_mode_ops *m)
+{
+    double (*pl)[6] = mem_calloc(d->cpg.nnodes, sizeof *pl);
+    int *depth = mem_calloc(d->cpg.nnodes, sizeof *depth);
+    size_t i;
+    assert_true(pl && depth);
+    b->d = d;
+    b->m = m;
+    b->leaf = mem_calloc(d->cpg.nnodes, sizeof *b->leaf);
+    assert_non_null(b->leaf);
+    pds_cpg_placements(d, pl, depth);
+    for (i = 0; i < d->cpg.nnodes; i++) {
+        const pds_cpg_node *n = &d->cpg.nodes[i];
+        pds_def one;
+        long k;
+        if (depth[i] < 0 || n->op >= PDS_CPG_UNION)
+            continue;
+        pds_def_init(&one, PDS_CPG, L0);
+        if (n->op == PDS_CPG_RECT)
+            k = pds_cpg_rect(&one, n->p[0], n->p[1], n->p[2], n->p[3], 0, L0);
+        else if (n->op == PDS_CPG_ELLIPSE)
+            k = pds_cpg_ellipse(&one, n->p[0], n->p[1], n->p[2], n->p[3], 0, L0);
+        else if (n->op == PDS_CPG_POLYGON)
+            k = pds_cpg_polygon(&one, d->cpg.pts + 2 * n->first, n->count, 0, L0);
+        else
+            k = pds_cpg_nested(&one, n->sub, L0);
+        assert_true(k == 0);
+        memcpy(one.cpg.nodes[0].xf, pl[i], sizeof pl[i]);
+        b->leaf[i] = compile_or_fail(m, &one);
+        pds_def_free(&one);
+    }
+    mem_free(pl);
+    mem_free(depth);
+}
+
+static void brute_free(brute *b)
+{
+    size_t i;
+    for (i = 0; i < b->d->cpg.nnodes; i++)
+        if (b->leaf[i])
+            b->m->free(b->leaf[i]);
+    mem_free(b->leaf);
+}
+
+/* A small leaf near (cu, cv), on the 1/256 grid half the time so that
+ * lookups on its edges are exact in every mode. */
+static size_t brute_leaf(pds_def *d, uint64_t *s, double cu, double cv, double r)
+{
+    long idx;
+    int32_t id = test_rand(s) % 9 == 0 ? PDS_NONE : next_attr++;
+    switch (test_rand(s) % 4) {
+    case 0:
+        idx = pds_cpg_rect(d, floor((cu - r) * 256) / 256, floor((cv - r) * 256) / 256,
+                           ceil((cu + r) * 256) / 256, ceil((cv + r * 0.6) * 256) / 256, id, L0);
+        break;
+    case 1:
+        idx = pds_cpg_rect(d, cu - r, cv - r * 0.5, cu + r * 0.7, cv + r, id, L0);
+        break;
+    case 2:
+        idx = pds_cpg_ellipse(d, cu, cv, r, r * test_uniform(s, 0.4, 1.4), id, L0);
+        break;
+    default: {
+        double pts[10];
+        int k;
+        for (k = 0; k < 5; k++) {
+            double ang = 2 * M_PI * (k + test_uniform(s, 0.1, 0.9)) / 5;
+            pts[2 * k] = cu + r * cos(ang);
+            pts[2 * k + 1] = cv + r * sin(ang);
+        }
+        idx = pds_cpg_polygon(d, pts, 5, id, L0);
+    }
+    }
+    assert_true(idx >= 0);
+    return (size_t)idx;
+}
+
+/* A big union of n leaves in random order; sometimes written as a chain
+ * of two-operand unions, some leaves grouped in sub-unions. */
+static size_t brute_union(pds_def *d, uint64_t *s, size_t n, double rmax, int32_t attr)
+{
+    size_t *kids = mem_calloc(n, sizeof *kids), i, root;
+    assert_non_null(kids);
+    for (i = 0; i < n; i++)
+        kids[i] = brute_leaf(d, s, test_uniform(s, 0, 1), test_uniform(s, 0, 1), test_uniform(s, 0.01, rmax));
+    if (test_rand(s) % 3 == 0 && n <= 60) {
+        root = kids[n - 1];      /* UNION(k0, UNION(k1, ... UNION(kn-2, kn-1))) */
+        for (i = n - 1; i-- > 0;) {
+            size_t two[2];
+            two[0] = kids[i];
+            two[1] = root;
+            root = (size_t)pds_cpg_op_node(d, PDS_CPG_UNION, two, 2, i == 0 ? attr : PDS_INHERIT, L0);
+        }
+    } else {
+        for (i = 0; i + 4 < n; i += 7)
+            if (test_rand(s) % 3 == 0) {
+                size_t sub = (size_t)pds_cpg_op_node(d, PDS_CPG_UNION, kids + i, 3,
+                                                     test_rand(s) % 3 ? PDS_INHERIT : next_attr++, L0);
+                kids[i] = sub;
+                memmove(kids + i + 1, kids + i + 3, (n - i - 3) * sizeof *kids);
+                n -= 2;
+            }
+        root = (size_t)pds_cpg_op_node(d, PDS_CPG_UNION, kids, n, attr, L0);
+    }
+    mem_free(kids);
+    return root;
+}
+
+static void test_pds_cpg_index_matches_brute_force(void **state)
+{
+    uint64_t s = test_seed("test_pds_cpg_index_matches_brute_force");
+    int t, mi, i, busy[NMODES] = {0};
+    (void)state;
+    for (t = 0; t < 12; t++) {
+        pds_def d;
+        diag err;
+        size_t top[4];
+        pds_def_init(&d, PDS_CPG, L0);
+        next_attr = 0;
+        /* odd trees: large overlapping leaves, long cell lists (the hierarchy) */
+        top[0] = brute_union(&d, &s, 20 + test_rand(&s) % 300, t % 2 ? 0.45 : 0.12, PDS_INHERIT);
+        top[1] = brute_union(&d, &s, 10 + test_rand(&s) % 40, 0.12, test_rand(&s) % 2 ? PDS_INHERIT : next_attr++);
+        switch (t % 3) {
+        case 0:        /* a union of both */
+            d.cpg.root = (size_t)pds_cpg_op_node(&d, PDS_CPG_UNION, top, 2, PDS_INHERIT, L0);
+            break;
+        case 1:        /* the first minus the second and a third union */
+            top[2] = brute_union(&d, &s, 30, 0.12, PDS_INHERIT);
+            d.cpg.root = (size_t)pds_cpg_op_node(&d, PDS_CPG_DIFF, top, 3, PDS_INHERIT, L0);
+            break;
+        default:       /* intersection with a chain of intersections */
+            top[2] = brute_leaf(&d, &s, 0.5, 0.5, 0.4);
+            top[3] = (size_t)pds_cpg_op_node(&d, PDS_CPG_INTER, top + 1, 2, PDS_INHERIT, L0);
+            top[1] = top[3];
+            d.cpg.root = (size_t)pds_cpg_op_node(&d, PDS_CPG_INTER, top, 2, PDS_INHERIT, L0);
+        }
+        diag_init(&err);
+        assert_int_equal(pds_def_check(&d, "t.deck", &err), 0);
+        for (mi = 0; mi < NMODES; mi++) {
+            brute b;
+            void *p = compile_or_fail(modes[mi], &d);
+            int hits = 0;
+            brute_init(&b, &d, modes[mi]);
+            for (i = 0; i < 3000; i++) {
+                /* half the points on the 1/256 grid: on rectangle edges */
+                double u = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 257) / 256;
+                double v = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 257) / 256;
+                int32_t want = PDS_NONE, got = modes[mi]->locate(p, u, v);
+                if (!brute_node(&b, d.cpg.root, u, v, &want))
+                    want = PDS_NONE;
+                if (got != want)
+                    fail_msg("tree %d, mode %s: at (%.17g, %.17g) got %ld, brute force %ld", t,
+                             modes[mi]->mode, u, v, (long)got, (long)want);
+                hits += want != PDS_NONE;
+            }
+            busy[mi] += hits >= 100;   /* intersections may hold few points */
+            brute_free(&b);
+            modes[mi]->free(p);
+        }
+        pds_def_free(&d);
+    }
+    /* not vacuous: most trees put 100 or more of their points in a region */
+    for (mi = 0; mi < NMODES; mi++)
+        if (busy[mi] < 8)
+            fail_msg("mode %s: only %d of 12 trees hold 100 of their 3000 points", modes[mi]->mode,
+                     busy[mi]);
 }
 
 /* ---- pixel array and quadtree ------------------------------------------ */
@@ -1158,6 +1485,166 @@ static void test_pds_curve_simple_matches_all_pairs(void **state)
 
 /* ---- q16 stays in range --------------------------------------------------- */
 
+/* ---- Ballard's strip trees ----------------------------------------------- */
+
+/* A star-shaped closed polyline on the 1/1024 grid (exact in every mode,
+ * and degenerate cases such as touching edges occur). */
+static size_t strip_poly(uint64_t *s, double *pts, size_t max, double cu, double cv, double r)
+{
+    size_t n = 5 + (size_t)(test_rand(s) % (max - 5)), k, j;
+    for (k = 0; k < n; k++) {
+        double a = 2 * M_PI * (k + test_uniform(s, 0.1, 0.9)) / (double)n, rr = r * test_uniform(s, 0.4, 1);
+        pts[2 * k] = floor((cu + rr * cos(a)) * 1024) / 1024;
+        pts[2 * k + 1] = floor((cv + rr * sin(a)) * 1024) / 1024;
+    }
+    for (k = 0, j = 0; k < n; k++)      /* drop repeated points */
+        if (j == 0 || pts[2 * k] != pts[2 * j - 2] || pts[2 * k + 1] != pts[2 * j - 1]) {
+            pts[2 * j] = pts[2 * k];
+            pts[2 * j + 1] = pts[2 * k + 1];
+            j++;
+        }
+    if (j > 1 && pts[0] == pts[2 * j - 2] && pts[1] == pts[2 * j - 1])
+        j--;
+    return j;
+}
+
+static int seg_meet_exact(const double *a, const double *b, const double *c, const double *d)
+{
+    /* dyadic coordinates of 10 bits: these products are exact in double */
+    double o1 = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    double o2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    double o3 = (d[0] - c[0]) * (a[1] - c[1]) - (d[1] - c[1]) * (a[0] - c[0]);
+    double o4 = (d[0] - c[0]) * (b[1] - c[1]) - (d[1] - c[1]) * (b[0] - c[0]);
+    if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0) || (o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0))
+        return 0;
+    if (o1 == 0 && o2 == 0)
+        return fmax(fmin(a[0], b[0]), fmin(c[0], d[0])) <= fmin(fmax(a[0], b[0]), fmax(c[0], d[0])) &&
+               fmax(fmin(a[1], b[1]), fmin(c[1], d[1])) <= fmin(fmax(a[1], b[1]), fmax(c[1], d[1]));
+    return 1;
+}
+
+/* Closed-boundary point in polygon, exact for the grid coordinates. */
+static int poly_holds(const double *p, size_t n, double x, double y)
+{
+    size_t i, j;
+    int in = 0;
+    for (i = 0, j = n - 1; i < n; j = i++) {
+        double q[2] = { x, y };
+        if (seg_meet_exact(p + 2 * i, p + 2 * j, q, q))
+            return 1;
+        if ((p[2 * i + 1] > y) != (p[2 * j + 1] > y)) {
+            /* lower end l, upper end h: p left of the crossing iff orient(l, h, p) > 0 */
+            const double *l = p[2 * i + 1] < p[2 * j + 1] ? p + 2 * i : p + 2 * j;
+            const double *h = l == p + 2 * i ? p + 2 * j : p + 2 * i;
+            if ((h[0] - l[0]) * (y - l[1]) - (h[1] - l[1]) * (x - l[0]) > 0)
+                in = !in;
+        }
+    }
+    return in;
+}
+
+/* Strip-tree membership answers exactly what the box hierarchy answers, on
+ * random points and on grid points (vertices and edges), in every mode and
+ * at two width tolerances. */
+static void test_pds_strip_membership_matches_boxes(void **state)
+{
+    uint64_t s = test_seed("test_pds_strip_membership_matches_boxes");
+    static double pts[2 * 400];
+    int t, mi, i, tested = 0;
+    (void)state;
+    for (t = 0; t < 24; t++) {
+        pds_def a, b;
+        size_t n = strip_poly(&s, pts, t % 2 ? 400 : 40, 0.5, 0.5, 0.45);
+        pds_def_init(&a, PDS_CURVES, L0);
+        pds_def_init(&b, PDS_CURVES, L0);
+        assert_true(pds_curve_add(&a, t % 3 == 0, pts, n, 7, L0) >= 0);
+        assert_true(pds_curve_add(&b, t % 3 == 0, pts, n, 7, L0) >= 0);
+        b.curves.strips = 1;
+        b.curves.strip_width = t % 4 < 2 ? 0 : 0.01;
+        for (mi = 0; mi < NMODES; mi++) {
+            void *pa, *pb;
+            diag err;
+            diag_init(&err);
+            if (modes[mi]->compile(&a, "t", &pa, &err))
+                break;          /* the random polygon is not simple: skip it */
+            tested++;
+            pb = compile_or_fail(modes[mi], &b);
+            for (i = 0; i < 4000; i++) {
+                double u = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 1025) / 1024;
+                double v = i % 2 ? test_uniform(&s, 0, 1) : (double)(test_rand(&s) % 1025) / 1024;
+                if (i % 8 == 2) {       /* on a vertex */
+                    size_t k = (size_t)(test_rand(&s) % n);
+                    u = pts[2 * k];
+                    v = pts[2 * k + 1];
+                }
+                if (modes[mi]->locate(pa, u, v) != modes[mi]->locate(pb, u, v))
+                    fail_msg("polygon %d, mode %s: boxes and strips differ at (%.17g, %.17g)", t,
+                             modes[mi]->mode, u, v);
+            }
+            modes[mi]->free(pa);
+            modes[mi]->free(pb);
+        }
+        pds_def_free(&a);
+        pds_def_free(&b);
+    }
+    assert_true(tested >= 20 * NMODES);
+}
+
+/* Ballard's intersection of two strip trees finds exactly the meeting edge
+ * pairs a brute-force all-pairs test finds; the regions meet iff the
+ * boundaries meet or one holds a vertex of the other; union and
+ * intersection membership follow the two regions. Every mode. */
+static void test_pds_strip_intersection_brute_force(void **state)
+{
+    static const pds_strip_ops *const sops[NMODES] = {
+        &q16_pds_strip_ops, &q32_pds_strip_ops, &f32_pds_strip_ops, &f64_pds_strip_ops,
+        &hfp32_pds_strip_ops, &hfp64_pds_strip_ops };
+    uint64_t s = test_seed("test_pds_strip_intersection_brute_force");
+    static double pa[2 * 300], pb[2 * 300];
+    int t, mi, crossing = 0, apart = 0, nested = 0;
+    (void)state;
+    for (t = 0; t < 60; t++) {
+        pds_def a, b;
+        /* t % 3: 0 overlapping, 1 apart (opposite corners), 2 a small one at the other's centre */
+        double ca = t % 3 == 1 ? 0.25 : test_uniform(&s, 0.4, 0.6), cb = t % 3 == 1 ? 0.75 : t % 3 == 2 ? ca
+                                                                                    : test_uniform(&s, 0.3, 0.7);
+        size_t na = strip_poly(&s, pa, 300, ca, ca, t % 3 == 1 ? 0.2 : 0.3);
+        size_t nb = strip_poly(&s, pb, 300, cb, cb, t % 3 == 0 ? 0.25 : t % 3 == 1 ? 0.2 : 0.05);
+        size_t i, j, want = 0;
+        int want_meet;
+        double u = test_uniform(&s, 0, 1), v = test_uniform(&s, 0, 1);
+        for (i = 0; i < na; i++)
+            for (j = 0; j < nb; j++)
+                want += (size_t)seg_meet_exact(pa + 2 * i, pa + 2 * ((i + 1) % na), pb + 2 * j, pb + 2 * ((j + 1) % nb));
+        want_meet = want > 0 || poly_holds(pa, na, pb[0], pb[1]) || poly_holds(pb, nb, pa[0], pa[1]);
+        crossing += want > 0;
+        apart += !want_meet;
+        nested += want == 0 && want_meet;
+        pds_def_init(&a, PDS_CURVES, L0);
+        pds_def_init(&b, PDS_CURVES, L0);
+        pds_curve_add(&a, 0, pa, na, 1, L0);
+        pds_curve_add(&b, 0, pb, nb, 2, L0);
+        a.curves.strip_width = t % 2 ? 0.02 : 0;
+        for (mi = 0; mi < NMODES; mi++) {
+            size_t got;
+            int meet, in_u, in_i;
+            assert_int_equal(sops[mi]->cross(&a, 0, &b, 0, u, v, &got, &meet, &in_u, &in_i), 0);
+            if (got != want || meet != want_meet)
+                fail_msg("pair %d, mode %s: %zu meeting edge pairs (brute force %zu), meet %d (%d)", t,
+                         sops[mi]->mode, got, want, meet, want_meet);
+            if (mode_eps[mi] < 1e-3) {     /* (u,v) off the grid: rounding matters only in q16 */
+                int ia = poly_holds(pa, na, u, v), ib = poly_holds(pb, nb, u, v);
+                assert_int_equal(in_u, ia || ib);
+                assert_int_equal(in_i, ia && ib);
+            }
+        }
+        pds_def_free(&a);
+        pds_def_free(&b);
+    }
+    /* the random pairs cover all three cases */
+    assert_true(crossing > 5 && apart > 5 && nested > 5);
+}
+
 static void test_pds_q16_counts_no_overflow(void **state)
 {
     uint64_t s = test_seed("test_pds_q16_counts_no_overflow");
@@ -1559,6 +2046,9 @@ int main(void)
         cmocka_unit_test(test_pds_cpg_priority_rules),
         cmocka_unit_test(test_pds_cpg_boundaries_closed),
         cmocka_unit_test(test_pds_cpg_visits_grow_logarithmically),
+        cmocka_unit_test(test_pds_cpg_visits_independent_of_order),
+        cmocka_unit_test(test_pds_cpg_diff_and_chains_flat),
+        cmocka_unit_test(test_pds_cpg_index_matches_brute_force),
         cmocka_unit_test(test_pds_cpg_nested_matches_reference),
         cmocka_unit_test(test_pds_cpg_nested_errors),
         cmocka_unit_test(test_pds_pixels_match_reference),
@@ -1575,6 +2065,8 @@ int main(void)
         cmocka_unit_test(test_pds_curve_flatten_within_tolerance),
         cmocka_unit_test(test_pds_curve_simple_matches_all_pairs),
         cmocka_unit_test(test_pds_curves_boundary_closed),
+        cmocka_unit_test(test_pds_strip_membership_matches_boxes),
+        cmocka_unit_test(test_pds_strip_intersection_brute_force),
         cmocka_unit_test(test_pds_q16_counts_no_overflow),
         cmocka_unit_test(test_pds_errors_exact_text),
         cmocka_unit_test(test_pds_image_to_pixels),

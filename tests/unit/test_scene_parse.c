@@ -451,7 +451,7 @@ static void test_scene_parse_error_texts(void **state)
         { "ATTR R COLOR 1 1 1\nATTR r COLOR 1 1 1\n",
           "t.scene:2:6: error: ATTR: r is already defined on record 1" },
         { "ATTR R COLOR 1 1 1 GLOSS 3\n", "t.scene:1:20: error: ATTR: expected COLOR, AMBIENT, "
-          "DIFFUSE, SPECULAR, EXPONENT, MIRROR, TRANSMIT, IOR, TEXTURE or BUMP, found GLOSS" },
+          "DIFFUSE, SPECULAR, EXPONENT, MIRROR, TRANSMIT, IOR, TEXTURE, BUMP or MODEL, found GLOSS" },
         { "EYE 1 2 3 \x07\n", "t.scene:1:11: error: invalid character X'07'" },
         { "EYE 1 2 3 \xc3\xa9\n", "t.scene:1:11: error: invalid character X'C3'" },
         { "EYE 1 2 -\n* comment\n\n", "t.scene:1:9: error: continued statement has no continuation card" },

@@ -128,6 +128,39 @@ static void test_scene_pds_texture_bump_attr(void **state)
     scene_free(s);
 }
 
+/* The paper's attribute kinds: the optical model named by MODEL (with the
+ * defaults a mirror and a transparent attribute get), LOCAL placement,
+ * a height image and grooves along region boundaries. */
+static void test_scene_pds_models_local_grooves(void **state)
+{
+    scene *s;
+    (void)state;
+    stub_calls = 0;
+    s = parse_ok("TEXTURE LABEL IMAGE granite.png REPEAT 1 1 LOCAL\n"
+                 "BUMP JOINTS GROOVES WIDTH 0.01 AMPLITUDE 0.003\n"
+                 "BUMP RELIEF IMAGE wood.png AMPLITUDE 0.02 LOCAL\n"
+                 "ATTR M COLOR 1 1 1 MODEL MIRROR\n"
+                 "ATTR G COLOR 1 1 1 MODEL TRANSPARENT MIRROR 0.1\n"
+                 "ATTR B COLOR 1 1 1 model blinn SPECULAR 0.5 TEXTURE LABEL BUMP JOINTS\n"
+                 "ATTR L COLOR 1 1 1 MODEL LAMBERT\n" TAIL);
+    assert_int_equal(stub_calls, 2);
+    assert_int_equal(s->textures[0].local, 1);
+    assert_int_equal(s->bumps[0].pattern, BUMP_GROOVES);
+    assert_true(s->bumps[0].width == 0.01 && s->bumps[0].amplitude == 0.003);
+    assert_int_equal(s->bumps[1].pattern, BUMP_IMAGE);
+    assert_int_equal(s->bumps[1].local, 1);
+    assert_int_equal(s->bumps[1].img.width, 3);
+    assert_true(s->bumps[1].freq[0] == 1 && s->bumps[1].freq[1] == 1);
+    assert_int_equal(s->attrs[1].model, SHADE_MIRROR);
+    assert_true(s->attrs[1].mirror == 1);
+    assert_int_equal(s->attrs[2].model, SHADE_TRANSPARENT);
+    assert_true(s->attrs[2].transmit == 1 && s->attrs[2].ior == 1.5 && s->attrs[2].mirror == 0.1);
+    assert_int_equal(s->attrs[3].model, SHADE_BLINN);
+    assert_int_equal(s->attrs[4].model, SHADE_LAMBERT);
+    assert_int_equal(s->attrs[0].model, SHADE_PHONG);
+    scene_free(s);
+}
+
 /* ---- CPG ----------------------------------------------------------------- */
 
 static void test_scene_pds_cpg(void **state)
@@ -391,7 +424,9 @@ static void test_scene_pds_curves(void **state)
                  "POLYLINE NONE 0.1 0.1 0.9 0.1 -\n"
                  "              0.9 0.9 0.1 0.9\n"
                  "END\n"
-                 "PDS FINE CURVES\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n" TAIL);
+                 "PDS FINE CURVES\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n"
+                 "PDS STRIPY CURVES TOLERANCE 0.0005 STRIPS WIDTH 0.01\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n"
+                 "PDS BALLARD CURVES STRIPS\nPOLYLINE BLUE 0 0 1 0 1 1\nEND\n" TAIL);
     k = &map_named(s, "BLOB")->def.curves;
     assert_true(k->tolerance == 0.001);
     assert_int_equal(k->ncurves, 2);
@@ -403,6 +438,11 @@ static void test_scene_pds_curves(void **state)
     assert_int_equal(k->curves[1].attr, PDS_NONE);
     assert_true(k->pts[2 * k->curves[1].first + 5] == 0.9);
     assert_true(map_named(s, "FINE")->def.curves.tolerance == PDS_CURVE_TOLERANCE);
+    assert_int_equal(map_named(s, "FINE")->def.curves.strips, 0);
+    k = &map_named(s, "STRIPY")->def.curves;
+    assert_true(k->strips == 1 && k->strip_width == 0.01 && k->tolerance == 0.0005);
+    k = &map_named(s, "BALLARD")->def.curves;
+    assert_true(k->strips == 1 && k->strip_width == 0);
     scene_free(s);
 }
 
@@ -606,8 +646,18 @@ static void test_scene_pds_error_texts(void **state)
         { "TEXTURE T\n", "t.scene:1:10: error: TEXTURE: missing IMAGE" },
         { "TEXTURE T IMAGE\n", "t.scene:1:16: error: TEXTURE: missing file name" },
         { "BUMP B RIPPLES AMPLITUDE 1\n",
-          "t.scene:1:8: error: BUMP: expected WAVES, BUMPS, DIMPLES or NOISE, found RIPPLES" },
-        { "BUMP B\n", "t.scene:1:7: error: BUMP: missing WAVES, BUMPS, DIMPLES or NOISE" },
+          "t.scene:1:8: error: BUMP: expected WAVES, BUMPS, DIMPLES, NOISE, GROOVES or IMAGE, found RIPPLES" },
+        { "BUMP B\n", "t.scene:1:7: error: BUMP: missing WAVES, BUMPS, DIMPLES, NOISE, GROOVES or IMAGE" },
+        { "BUMP B GROOVES AMPLITUDE 1\n", "t.scene:1:27: error: BUMP: GROOVES needs WIDTH" },
+        { "PDS C CURVES STRIPS WIDTH 2\n", "t.scene:1:27: error: PDS: strip WIDTH must be between 0 and 1" },
+        { "PDS C CURVES BOXES\n", "t.scene:1:14: error: PDS: expected TOLERANCE or STRIPS, found BOXES" },
+        { "BUMP B WAVES AMPLITUDE 1 WIDTH 0.1\n", "t.scene:1:35: error: BUMP: WIDTH applies to GROOVES only" },
+        { "BUMP B GROOVES AMPLITUDE 1 WIDTH 0.6\n",
+          "t.scene:1:34: error: BUMP: WIDTH must be above 0 and at most 0.5" },
+        { "BUMP B GROOVES AMPLITUDE 1 WIDTH 0.1 LOCAL LOCAL\n", "t.scene:1:44: error: BUMP: LOCAL given twice" },
+        { "BUMP B IMAGE\n", "t.scene:1:13: error: BUMP: missing file name" },
+        { "ATTR A COLOR 1 1 1 MODEL GOURAUD\n",
+          "t.scene:1:26: error: ATTR: expected PHONG, LAMBERT, BLINN, MIRROR or TRANSPARENT, found GOURAUD" },
         { "BUMP B WAVES\n", "t.scene:1:13: error: BUMP: AMPLITUDE is required" },
         { "BUMP B WAVES FREQUENCY 1 1\n", "t.scene:1:27: error: BUMP: AMPLITUDE is required" },
         { "BUMP B WAVES AMPLITUDE 0\n", "t.scene:1:24: error: BUMP: AMPLITUDE must not be zero" },
@@ -629,7 +679,7 @@ static void test_scene_pds_error_texts(void **state)
         { "BUMP B WAVES AMPLITUDE 1 SEED 1.5\n",
           "t.scene:1:31: error: BUMP: SEED must be a whole number from 0 to 2147483647" },
         { "BUMP B WAVES AMPLITUDE 1 SHINY\n",
-          "t.scene:1:26: error: BUMP: expected AMPLITUDE, FREQUENCY or SEED, found SHINY" },
+          "t.scene:1:26: error: BUMP: expected AMPLITUDE, FREQUENCY, SEED, WIDTH or LOCAL, found SHINY" },
         { "BUMP B WAVES AMPLITUDE 1\nBUMP b NOISE AMPLITUDE 1\n",
           "t.scene:2:6: error: BUMP: b is already defined on record 1" },
         { "ATTR A COLOR 1 1 1 TEXTURE T\n", "t.scene:1:28: error: ATTR: T is used before it is defined" },
@@ -758,6 +808,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scene_pds_texture_bump_attr),
+        cmocka_unit_test(test_scene_pds_models_local_grooves),
         cmocka_unit_test(test_scene_pds_cpg),
         cmocka_unit_test(test_scene_pds_cpg_many_nodes),
         cmocka_unit_test(test_scene_pds_pixels_keyed),
