@@ -175,6 +175,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, &cs->prims[i], cscene_file(sc), err)))
             goto fail;
     }
+    if ((status = NS(prim_share)(cs->prims, cs->nprims, err)))
+        goto fail;
     for (i = 0; i < sc->nattrs; i++) {
         const scene_attr *a = &sc->attrs[i];
         if (a->texture >= (int)sc->ntextures || a->bump >= (int)sc->nbumps ||
