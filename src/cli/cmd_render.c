@@ -36,8 +36,9 @@ static void render_help(FILE *f)
         "  --stats               print key=value lines to stdout: numeric rays.primary\n"
         "                        rays.shadow rays.reflected rays.refracted pds.lookups\n"
         "                        fx.overflows tests.prim tests.bound csg.pruned\n"
-        "                        time.compile_s time.render_s (and dl.colours dl.bytes\n"
-        "                        dl.psnr with --dl)\n"
+        "                        time.compile_s time.render_s range.cut (and\n"
+        "                        dl.colours dl.bytes dl.psnr with --dl); any overflow\n"
+        "                        or range.cut is also reported on stderr\n"
         "%s"
         "  -h, --help            show this help\n"
         "\n"
@@ -212,6 +213,13 @@ int cmd_render(int argc, char **argv)
     if (render_scene(sc, ops, &o, &fb, &st, &err))
         goto done;
     rendered = 1;
+    /* a precision event is never silent, --stats or not */
+    if (st.fx_overflows || st.range_cut)
+        fprintf(stderr, "maprt: %s: warning: %s: %llu fixed-point overflows, %llu primary rays "
+                        "beyond the mode's range shown as background (docs/numerics.md); %s\n",
+                scene_name, ops->name, st.fx_overflows, st.range_cut,
+                strcmp(ops->name, "q16") ? "the picture may be wrong there"
+                                         : "try --numeric q32 or f64");
     if (png_path && image_write_png(png_path, &fb.img, &err))
         goto done;
     if (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))

@@ -35,6 +35,7 @@ static void render_stats_add(render_stats *a, const render_stats *b)
     a->bound_tests += b->bound_tests;
     a->csg_pruned += b->csg_pruned;
     a->arena_full += b->arena_full;
+    a->range_cut += b->range_cut;
 }
 
 void render_stats_print(FILE *f, const render_stats *st)
@@ -47,6 +48,7 @@ void render_stats_print(FILE *f, const render_stats *st)
             st->csg_pruned, st->time_compile_s, st->time_render_s);
     if (st->arena_full)
         fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
+    fprintf(f, "range.cut=%llu\n", st->range_cut);
 }
 
 int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,

@@ -18,6 +18,9 @@ typedef struct render_stats {
     unsigned long long rays_primary, rays_shadow, rays_reflected, rays_refracted;
     unsigned long long pds_lookups, fx_overflows;
     unsigned long long prim_tests, bound_tests, csg_pruned, arena_full;
+    /* primary rays whose first possible surface lies beyond the mode's
+     * range (docs/numerics.md): they show the background */
+    unsigned long long range_cut;
     double time_compile_s, time_render_s;
 } render_stats;
 
