@@ -13,7 +13,7 @@
 static void render_help(FILE *f)
 {
     fprintf(f,
-        "usage: maprt render SCENE [-o OUT.png] [--dl OUT.dl5080] [options]\n"
+        "usage: maprt render SCENE [-o OUT.png] [--dl OUT.dl5080] [--ids OUT.ids] [options]\n"
         "\n"
         "Ray-traces the scene deck SCENE (see docs/scene-format.md) and writes a\n"
         "true-colour PNG and/or a DL5080 display list, as the IBM 5081 would show it.\n"
@@ -24,6 +24,9 @@ static void render_help(FILE *f)
         "  -o, --output OUT.png  write a true-colour PNG\n"
         "  --dl OUT.dl5080       write a DL5080 display list: the frame quantised to at\n"
         "                        most 256 colours in the DAC's colour space\n"
+        "  --ids OUT.ids         write the identity map of the primary rays: per pixel\n"
+        "                        the primitive, face, region (attribute) and distance\n"
+        "                        of the hit (format in docs/idmap.md)\n"
         "  --dac 4|8             bits per gun of the 5081 colour table (default 4)\n"
         "  --dither              Floyd-Steinberg dithering when quantising (--dl)\n"
         "  --wireframe           add the outlines of the primitives as seen (--dl)\n"
@@ -108,8 +111,8 @@ static int render_write_dl(const char *path, const render_fb *fb, dl_image_opts 
 
 int cmd_render(int argc, char **argv)
 {
-    const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *mode = "q16", *v;
-    char *png_path = NULL, *dl_path = NULL;
+    const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *out_ids = NULL, *mode = "q16", *v;
+    char *png_path = NULL, *dl_path = NULL, *ids_path = NULL;
     const render_ops *ops = NULL;
     render_opts o;
     render_stats st;
@@ -147,6 +150,8 @@ int cmd_render(int argc, char **argv)
             if (!(out_png = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--dl")) {
             if (!(out_dl = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--ids")) {
+            if (!(out_ids = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--dac")) {
             if (!(v = cli_value("render", argc, argv, &i)) || cli_long("render", a, v, 4, 8, &n)
                 || (n != 4 && n != 8))
@@ -187,8 +192,8 @@ int cmd_render(int argc, char **argv)
     }
     if (!status && !scene_name)
         status = cli_usage_error("render", "no SCENE given");
-    if (!status && !out_png && !out_dl)
-        status = cli_usage_error("render", "no output: give -o OUT.png and/or --dl OUT.dl5080");
+    if (!status && !out_png && !out_dl && !out_ids)
+        status = cli_usage_error("render", "no output: give -o OUT.png, --dl OUT.dl5080 and/or --ids OUT.ids");
     if (!status && !(ops = render_ops_find(mode)))
         status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32 or f64", mode);
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
@@ -201,6 +206,7 @@ int cmd_render(int argc, char **argv)
     /* Resolve every name before the long work, so a bad fileid fails fast. */
     if ((out_png && cli_output_path(&files, out_png, &png_path, &err))
         || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
+        || (out_ids && cli_output_path(&files, out_ids, &ids_path, &err))
         || cli_scene_load(&files, scene_name, &sc, &err))
         goto done;
     if (out_dl && ((o.width ? o.width : sc->view.width) > 4096
@@ -210,6 +216,7 @@ int cmd_render(int argc, char **argv)
     }
     if (cli_is_tty())
         o.progress = render_progress;
+    o.ids = out_ids != NULL;
     if (render_scene(sc, ops, &o, &fb, &st, &err))
         goto done;
     rendered = 1;
@@ -224,6 +231,8 @@ int cmd_render(int argc, char **argv)
         goto done;
     if (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
         goto done;
+    if (ids_path && idmap_write(ids_path, &fb.ids, &err))
+        goto done;
     if (stats) {
         printf("numeric=%s\n", ops->name);
         render_stats_print(stdout, &st);
@@ -237,6 +246,7 @@ done:
     scene_free(sc);
     mem_free(png_path);
     mem_free(dl_path);
+    mem_free(ids_path);
     cli_files_free(&files);
     if (err.status) {
         diag_print(stderr, &err);

@@ -21,6 +21,7 @@ void render_fb_free(render_fb *fb)
     image_free(&fb->img);
     mem_free(fb->pid);
     fb->pid = NULL;
+    idmap_free(&fb->ids);
 }
 
 static void render_stats_add(render_stats *a, const render_stats *b)
@@ -89,6 +90,8 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
         status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for the framebuffer");
         goto done;
     }
+    if (opt.ids && (status = idmap_alloc(&out.ids, opt.width, opt.height, err)))
+        goto done;
     for (i = 0; i < nthreads; i++)
         if (ops->thread_new(cs, &tcs[i])) {
             status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for thread contexts");

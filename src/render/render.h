@@ -9,6 +9,7 @@
 #include "model/scene.h"
 #include "image/image.h"
 #include "util/diag.h"
+#include "render/idmap.h"
 
 #define RENDER_TILE 32        /* tile side in pixels */
 #define RENDER_MAX_AA 16      /* samples per pixel side */
@@ -28,6 +29,7 @@ typedef struct render_opts {
     int width, height;        /* image size; 0 = the scene view's size */
     int threads;              /* worker threads, >= 1 */
     int aa;                   /* NxN samples per pixel, 1..RENDER_MAX_AA */
+    int ids;                  /* also fill render_fb.ids */
     /* Called (serialised) after each finished tile; may be NULL. */
     void (*progress)(void *ctx, long done, long total);
     void *progress_ctx;
@@ -36,6 +38,8 @@ typedef struct render_opts {
 typedef struct render_fb {
     image img;                /* RGB8, top row first */
     int32_t *pid;             /* width*height primitive ids, -1 = background */
+    idmap ids;                /* with render_opts.ids: primitive, face, region
+                                 and distance of the centre sample's hit */
 } render_fb;
 
 /* One numeric mode's implementation (q16_render_ops, ...). Opaque compiled
@@ -49,6 +53,9 @@ typedef struct render_ops {
     void (*thread_free)(void *tc);
     void (*render_tile)(const void *cs, void *tc, const render_opts *o,
                         int x0, int y0, int x1, int y1, render_fb *fb, render_stats *st);
+    /* The region (attribute index) face `face` of primitive prim shows at
+     * (u,v), by the mode's PDS lookup. */
+    int (*region)(const void *cs, void *tc, int prim, int face, double u, double v);
 } render_ops;
 
 extern const render_ops q16_render_ops, q32_render_ops, f32_render_ops, f64_render_ops;

@@ -4,6 +4,7 @@
 #include "util/dmath.h"
 #include "util/mem.h"
 #include <math.h>
+#include <string.h>
 
 static int render_ops_compile(const scene *sc, void **cs, diag *err)
 {
@@ -42,6 +43,33 @@ static unsigned char render_ops_byte(double c)
     if (c >= 1)
         return 255;
     return (unsigned char)(c * 255 + 0.5);
+}
+
+/* The identity of primary ray r's hit (started t0 from the eye): its
+ * primitive, face, region and distance in deck units. */
+static void render_ops_ids(const cscene *cs, trace_ctx *tc, const prim_ray *r, double t0, idmap_px *out)
+{
+    csg_hit h;
+    geom_surface sf;
+    if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h))
+        return;
+    NS(prim_surface)(&cs->prims[h.prim], h.face, vec3_madd(r->o, h.t, r->d), &sf);
+    out->prim = h.prim;
+    out->face = h.face;
+    out->region = (int32_t)(NS(trace_attribute)(cs, tc, h.prim, h.face, &sf) - cs->sc->attrs);
+    out->t = (t0 + num_to_d(h.t)) / cs->nm.scale;
+}
+
+static int render_ops_region(const void *vcs, void *vtc, int prim, int face, double u, double v)
+{
+    const cscene *cs = vcs;
+    geom_surface sf;
+    memset(&sf, 0, sizeof sf);
+    sf.u = u;
+    sf.v = v;
+    if (prim < 0 || (size_t)prim >= cs->nprims)
+        return -1;
+    return (int)(NS(trace_attribute)(cs, vtc, prim, face, &sf) - cs->sc->attrs);
 }
 
 /* Pixel centres at (x + (i+1/2)/aa, y + (j+1/2)/aa); the PID is the one seen
@@ -87,6 +115,8 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                         NS(trace_ray)(cs, tc, &r, 0, 1.0, rgb, &p);
                         after = t0 + GEOM_TMAX - 2;
                     }
+                    if (i == mid && j == mid && fb->ids.px && p >= 0)
+                        render_ops_ids(cs, tc, &r, t0, &fb->ids.px[(size_t)y * (size_t)o->width + (size_t)x]);
                     for (k = 0; k < 3; k++)
                         sum[k] += rgb[k];
                     if (i == mid && j == mid)
@@ -109,5 +139,10 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
 }
 
 const render_ops NS(render_ops) = {
-    NUM_NAME, render_ops_compile, render_ops_free, render_ops_thread_new,
-    render_ops_thread_free, render_ops_tile};
+    .name = NUM_NAME,
+    .compile = render_ops_compile,
+    .free = render_ops_free,
+    .thread_new = render_ops_thread_new,
+    .thread_free = render_ops_thread_free,
+    .render_tile = render_ops_tile,
+    .region = render_ops_region};
