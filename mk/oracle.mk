@@ -18,3 +18,4 @@ $(ORACLE): tests/oracle/geom_oracle.f90
 $(IDS_ORACLE): tests/oracle/ids_oracle.f90
 	@mkdir -p $(@D)
 	$(FC) $(FFLAGS) -J $(@D) -o $@ $<
+bench: $(IDS_ORACLE)
