@@ -53,8 +53,9 @@ void NS(csg_free)(csg *c);
 /* Bytes of arena a thread needs for csg_intersect. */
 size_t NS(csg_arena_bytes)(const csg *c);
 
-/* Nearest surface crossing with 0 < t <= tmax over all objects. Objects are
- * visited nearest bound first and the far end shrinks to every hit found.
+/* Nearest surface crossing with 0 < t <= tmax over all objects. The far end
+ * shrinks to every hit found, so objects behind it are skipped by their
+ * bounds.
  * At equal parameters a surface the ray enters wins over one it leaves (a
  * touching object shows its contact face), then the lower primitive.
  * Returns 1 and *hit, or 0. Temporaries come from ar (released before

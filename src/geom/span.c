@@ -5,19 +5,20 @@
  * eps(t) = E0 (1 + |t|/16): the bound docs/numerics.md states for a ray
  * parameter, in normalised rather than deck units. */
 #if defined(NUM_MODE_q16)
-#define SPAN_E0 (1.0 / 2048)
+#define SPAN_E0 ((num)32)                  /* 2^-11 */
+#define SPAN_E1 ((num)2)
 #elif defined(NUM_MODE_q32)
-#define SPAN_E0 (1.0 / 67108864)
+#define SPAN_E0 ((num)64)                  /* 2^-26 */
+#define SPAN_E1 ((num)4)
 #elif defined(NUM_MODE_f32)
-#define SPAN_E0 (1.0 / 65536)
+#define SPAN_E0 (1.0f / 65536)             /* 2^-16 */
+#define SPAN_E1 (1.0f / 1048576)
 #else
-#define SPAN_E0 (1.0 / 68719476736.0)
+#define SPAN_E0 (1.0 / 68719476736.0)      /* 2^-36 */
+#define SPAN_E1 (1.0 / 1099511627776.0)
 #endif
 
-static num span_eps(num t)
-{
-    return num_add(num_from_d(SPAN_E0), num_mul(num_abs(t), num_from_d(SPAN_E0 / 16)));
-}
+static num span_eps(num t) { return num_add(SPAN_E0, num_mul(num_abs(t), SPAN_E1)); }
 
 /* Result membership for the operator given operand memberships. */
 static int span_op(int op, int ina, int inb)

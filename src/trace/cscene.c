@@ -174,6 +174,12 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
     }
     /* the cube [-GEOM_W, GEOM_W]^3 holds every bounded primitive's box */
     cs->bound_r = bounded ? GEOM_W * sqrt(3.0) * (1 + 1e-9) : 0;
+    for (i = 0; i < cs->nplanes; i++)
+        cs->plane_gap[i] = cs->planes[i][3] - dmath_dot3(cs->planes[i], cs->eye);
+    cs->eye2 = dmath_norm2_3(cs->eye);
+    cs->eye_ok = sqrt(cs->eye2) <= cs->orig_max;
+    if (cs->eye_ok)
+        cs->eye_n = vec3_from_d(cs->eye);
     return 0;
 }
 
@@ -187,16 +193,18 @@ int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray
         t = after > 0 ? HUGE_VAL : margin;
     } else {
         if (cs->bound_r > 0 && after <= 0) {
-            double tc = -dmath_dot3(cs->eye, u), q2 = dmath_norm2_3(cs->eye) - tc * tc;
-            double r2 = cs->bound_r * cs->bound_r;
-            if (q2 <= r2 && tc + sqrt(r2 - q2) > 0)
-                t = tc - sqrt(r2 - q2);
+            double tc = -dmath_dot3(cs->eye, u), r2 = cs->bound_r * cs->bound_r;
+            double h2 = r2 - (cs->eye2 - tc * tc);
+            if (cs->eye2 <= r2)
+                t = 0;                       /* the eye is inside the sphere */
+            else if (h2 >= 0 && tc > 0)
+                t = tc - sqrt(h2);
         }
         for (k = 0; k < cs->nplanes; k++) {
             double den = dmath_dot3(cs->planes[k], u), th;
             if (den == 0)
                 continue;
-            th = (cs->planes[k][3] - dmath_dot3(cs->planes[k], cs->eye)) / den;
+            th = cs->plane_gap[k] / den;
             if (th > after && th < t)
                 t = th;
         }
@@ -204,15 +212,22 @@ int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray
     if (t == HUGE_VAL)
         return 0;
     t = t - margin > after ? t - margin : after;
-    for (i = 0; i < 3; i++)
-        o[i] = cs->eye[i] + t * u[i];
     *t0 = t;
-    if (dmath_len3(o) > cs->orig_max)
-        return -1;
-    r->o = vec3_from_d(o);
+    if (t == 0 && cs->eye_ok) {
+        r->o = cs->eye_n;
+    } else {
+        for (i = 0; i < 3; i++)
+            o[i] = cs->eye[i] + t * u[i];
+        if (dmath_len3(o) > cs->orig_max)
+            return -1;
+        r->o = vec3_from_d(o);
+    }
     r->excl_prim = -1;
     r->excl_enter = 0;
-    return vec3_normalize(vec3_from_d(u), &r->d, NULL) ? 0 : 1;
+    /* u is a unit vector in double: rounding each component keeps it unit
+     * to the mode's resolution, as a normalisation in num would */
+    r->d = vec3_from_d(u);
+    return 1;
 }
 
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)

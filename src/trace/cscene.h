@@ -31,7 +31,11 @@ typedef struct cscene {
      * of the half-spaces (n, d). orig_max bounds |origin| in this mode. */
     double bound_r, orig_max;
     double planes[CSCENE_MAX_PLANES][4];
+    double plane_gap[CSCENE_MAX_PLANES];   /* d - n.eye per plane */
     size_t nplanes;
+    double eye2;              /* |eye|^2 */
+    vec3 eye_n;               /* the eye in num, when it is in range */
+    int eye_ok;
     int advance;              /* 0: more half-spaces than CSCENE_MAX_PLANES */
     int max_depth;
     /* Attribute mapping: maps[i] is scene map i compiled for this mode, or

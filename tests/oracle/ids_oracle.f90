@@ -20,8 +20,9 @@
 ! window of tangency before its hit, or that meets its face within 3
 ! degrees of grazing, is flagged.
 program ids_oracle
+  use oracle_math
   implicit none
-  integer, parameter :: qp = selected_real_kind(30), dp = kind(1.0d0)
+  integer, parameter :: dp = kind(1.0d0)
   integer, parameter :: maxs = 256
   real(qp), parameter :: big = 1.0e30_qp
   integer :: w, h, np, nn, nr, i, j, x, y
@@ -83,23 +84,6 @@ contains
     c(2) = a(3)*b(1) - a(1)*b(3)
     c(3) = a(1)*b(2) - a(2)*b(1)
   end function
-
-  subroutine inverse3(a, v)
-    real(qp), intent(in) :: a(3,3)
-    real(qp), intent(out) :: v(3,3)
-    real(qp) :: det
-    v(1,1) = a(2,2)*a(3,3) - a(2,3)*a(3,2)
-    v(1,2) = a(1,3)*a(3,2) - a(1,2)*a(3,3)
-    v(1,3) = a(1,2)*a(2,3) - a(1,3)*a(2,2)
-    v(2,1) = a(2,3)*a(3,1) - a(2,1)*a(3,3)
-    v(2,2) = a(1,1)*a(3,3) - a(1,3)*a(3,1)
-    v(2,3) = a(1,3)*a(2,1) - a(1,1)*a(2,3)
-    v(3,1) = a(2,1)*a(3,2) - a(2,2)*a(3,1)
-    v(3,2) = a(1,2)*a(3,1) - a(1,1)*a(3,2)
-    v(3,3) = a(1,1)*a(2,2) - a(1,2)*a(2,1)
-    det = a(1,1)*v(1,1) + a(1,2)*v(2,1) + a(1,3)*v(3,1)
-    v = v / det
-  end subroutine
 
   ! One pixel: nearest surface over all objects, written as a record.
   subroutine pixel(d)
@@ -200,30 +184,8 @@ contains
       ep = huge(1)
       ef = -1
       et = t
-      do while (i <= ln)
-        tl = merge(lb(i), la(i), inl == 1)
-        if (tl > t + tmerge) exit
-        if (inl == 1) then
-          call keep(lpb(i), lfb(i), lb(i), ep, ef, et)
-          inl = 0
-          i = i + 1
-        else
-          call keep(lpa(i), lfa(i), la(i), ep, ef, et)
-          inl = 1
-        end if
-      end do
-      do while (j <= rn)
-        tr = merge(rb(j), ra(j), inr == 1)
-        if (tr > t + tmerge) exit
-        if (inr == 1) then
-          call keep(rpb(j), rfb(j), rb(j), ep, ef, et)
-          inr = 0
-          j = j + 1
-        else
-          call keep(rpa(j), rfa(j), ra(j), ep, ef, et)
-          inr = 1
-        end if
-      end do
+      call take(t + tmerge, la, lpa, lfa, lb, lpb, lfb, ln, i, inl, ep, ef, et)
+      call take(t + tmerge, ra, rpa, rfa, rb, rpb, rfb, rn, j, inr, ep, ef, et)
       select case (op)
       case (1)
         now = merge(1, 0, inl == 1 .or. inr == 1)
@@ -242,6 +204,26 @@ contains
         b(n) = et; pb(n) = ep; fb(n) = ef
       end if
       inres = now
+    end do
+  end subroutine
+
+  ! Consumes the boundaries of one list up to lim (cursor i, state inside),
+  ! keeping the end that merge_spans reports.
+  subroutine take(lim, a, pa, fa, b, pb, fb, n, i, inside, ep, ef, et)
+    real(qp), intent(in) :: lim, a(maxs), b(maxs)
+    integer, intent(in) :: pa(maxs), fa(maxs), pb(maxs), fb(maxs), n
+    integer, intent(inout) :: i, inside, ep, ef
+    real(qp), intent(inout) :: et
+    do while (i <= n)
+      if (merge(b(i), a(i), inside == 1) > lim) exit
+      if (inside == 1) then
+        call keep(pb(i), fb(i), b(i), ep, ef, et)
+        inside = 0
+        i = i + 1
+      else
+        call keep(pa(i), fa(i), a(i), ep, ef, et)
+        inside = 1
+      end if
     end do
   end subroutine
 

@@ -402,15 +402,6 @@ static void co_ray(uint64_t *s, const co_case *c, int j, double *o, double *d)
     }
 }
 
-static int co_find(const scene *sc, const char *name)
-{
-    size_t i;
-    for (i = 0; i < sc->nprims; i++)
-        if (!strcmp(sc->prims[i].name, name))
-            return (int)i;
-    return -1;
-}
-
 /* World ray from an object-frame one through the motion m (rigid). */
 static void co_to_world(const double *m, const double *o, const double *d, double *ow, double *dw)
 {
@@ -441,7 +432,7 @@ static void test_coincident_random_placements(void **state)
             sc = tt_parse(c.deck);
             assert_non_null(sc);
             for (i = 0; i < c.np; i++)
-                assert_true((map[i] = co_find(sc, c.p[i].name)) >= 0);
+                assert_true((map[i] = tt_find_prim(sc, c.p[i].name)) >= 0);
             /* the motion: the world_from_object of a primitive placed at the
              * object origin without a transform of its own */
             ref = map[0];

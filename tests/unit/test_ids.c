@@ -10,25 +10,11 @@
 #include <stdlib.h>
 #include <unistd.h>
 #include "tracer_test.h"
-#include "cli/cli_scene.h"
 #include "render/idcheck.h"
 #include "util/outfile.h"
 
 static char ids_oracle_path[1024];
 
-static scene *ids_load(const char *path)
-{
-    cli_files f;
-    scene *sc = NULL;
-    diag err;
-    diag_init(&err);
-    assert_int_equal(cli_files_init(&f, &err), 0);
-    if (cli_scene_load(&f, path, &sc, &err))
-        diag_print(stderr, &err);
-    cli_files_free(&f);
-    assert_non_null(sc);
-    return sc;
-}
 
 static const render_ops *ids_mode(int m)
 {
@@ -52,9 +38,10 @@ static void test_ids_against_oracle(void **state)
         fail();
     }
     for (d = 0; d < sizeof decks / sizeof decks[0]; d++) {
-        scene *sc = ids_load(decks[d]);
+        scene *sc = tt_load(decks[d]);
         idmap orc;
         diag err;
+        assert_non_null(sc);
         diag_init(&err);
         if (idcheck_oracle(ids_oracle_path, sc, W, W, &orc, &err))
             diag_print(stderr, &err);

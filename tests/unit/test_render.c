@@ -39,22 +39,6 @@ static render_opts render_default(int w, int h, int threads)
     return o;
 }
 
-/* Pixels where some channel differs by more than tol. */
-static long render_diff(const image *a, const image *b, int tol)
-{
-    long n = 0;
-    size_t i, k;
-    assert_int_equal(a->width, b->width);
-    assert_int_equal(a->height, b->height);
-    for (i = 0; i < (size_t)a->width * (size_t)a->height; i++) {
-        int big = 0;
-        for (k = 0; k < 3; k++)
-            if (abs((int)a->px[3 * i + k] - (int)b->px[3 * i + k]) > tol)
-                big = 1;
-        n += big;
-    }
-    return n;
-}
 
 static void test_render_goldens(void **state)
 {
@@ -78,7 +62,7 @@ static void test_render_goldens(void **state)
             snprintf(path, sizeof path, "tests/golden/%s-%s.png", scenes[s], modes[m]);
             assert_int_equal(image_read_png(path, 3, &gold, &err), 0);
             assert_int_equal(render_scene(sc, render_ops_find(modes[m]), &o, &fb, &st, &err), 0);
-            bad = render_diff(&fb.img, &gold, 2);
+            bad = tt_image_over(&fb.img, &gold, 2);
             printf("# %s: %ld of %d pixels differ by more than 2/255\n", path, bad, 128 * 128);
             assert_true(bad <= 128 * 128 / 200);
             image_free(&gold);
@@ -105,7 +89,7 @@ static void test_render_counts_and_threads(void **state)
     assert_true(sa.rays_shadow > 0 && sa.rays_reflected > 0);
     assert_true(sa.rays_shadow == sb.rays_shadow && sa.rays_reflected == sb.rays_reflected);
     assert_true(sa.fx_overflows == 0);
-    assert_int_equal(render_diff(&a.img, &b.img, 0), 0);
+    assert_int_equal(tt_image_over(&a.img, &b.img, 0), 0);
     for (i = 0; i < 70 * 50; i++) {
         assert_int_equal(a.pid[i], b.pid[i]);
         assert_true(a.pid[i] >= -1 && a.pid[i] < (int)sc->nprims);
@@ -155,7 +139,7 @@ static void test_render_scale_independent(void **state)
             sc = render_load("scenes/csg.scene");
             render_scale_scene(sc, scales[i]);
             assert_int_equal(render_scene(sc, modes[m], &o, &fb, &st, &err), 0);
-            bad = render_diff(&fb.img, &ref.img, 8);
+            bad = tt_image_over(&fb.img, &ref.img, 8);
             printf("# %s scale %g: %ld pixels differ by more than 8/255\n", modes[m]->name, scales[i], bad);
             assert_true(bad <= 96 * 96 / 1000);
             render_fb_free(&fb);
@@ -178,7 +162,7 @@ static void test_render_glass_modes_agree(void **state)
     diag_init(&err);
     assert_int_equal(render_scene(sc, &q16_render_ops, &o, &a, &sa, &err), 0);
     assert_int_equal(render_scene(sc, &f64_render_ops, &o, &b, &sb, &err), 0);
-    bad = render_diff(&a.img, &b.img, 8);
+    bad = tt_image_over(&a.img, &b.img, 8);
     printf("# glass: %llu refracted, %llu reflected rays; %ld pixels differ by more than 8/255\n",
            sa.rays_refracted, sa.rays_reflected, bad);
     assert_true(sa.rays_refracted > 1000 && sb.rays_refracted > 1000);

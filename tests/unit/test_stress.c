@@ -9,7 +9,6 @@
 #include <cmocka.h>
 #include <stdlib.h>
 #include "tracer_test.h"
-#include "cli/cli_scene.h"
 #include "util/mem.h"
 
 static const render_ops *stress_mode(int m)
@@ -19,20 +18,6 @@ static const render_ops *stress_mode(int m)
     return all[m];
 }
 
-/* Reads a deck as the CLI does (images beside it). */
-static scene *stress_load(const char *path)
-{
-    cli_files f;
-    scene *sc = NULL;
-    diag err;
-    diag_init(&err);
-    assert_int_equal(cli_files_init(&f, &err), 0);
-    if (cli_scene_load(&f, path, &sc, &err))
-        diag_print(stderr, &err);
-    cli_files_free(&f);
-    assert_non_null(sc);
-    return sc;
-}
 
 static void stress_render(const scene *sc, const render_ops *ops, int w, render_fb *fb, render_stats *st)
 {
@@ -51,8 +36,9 @@ static void stress_render(const scene *sc, const render_ops *ops, int w, render_
  * through a contact face (green well under red and blue). */
 static void test_stress_touching_objects_keep_contact_faces(void **state)
 {
-    scene *sc = stress_load("tests/decks/touching.scene");
+    scene *sc = tt_load("tests/decks/touching.scene");
     int m;
+    assert_non_null(sc);
     (void)state;
     for (m = 0; m < 4; m++) {
         render_fb fb;
@@ -76,20 +62,6 @@ static void test_stress_touching_objects_keep_contact_faces(void **state)
 }
 
 
-/* Pixels where some channel differs by more than tol. */
-static long stress_over(const image *a, const image *b, int tol)
-{
-    long n = 0;
-    size_t i, k;
-    for (i = 0; i < (size_t)a->width * (size_t)a->height; i++) {
-        int big = 0;
-        for (k = 0; k < 3; k++)
-            if (abs((int)a->px[3 * i + k] - (int)b->px[3 * i + k]) > tol)
-                big = 1;
-        n += big;
-    }
-    return n;
-}
 
 /* An eye 10,000 scene widths away and a 0.1-degree lens: every mode within
  * 0.3% of the pixels (over 8/255) of f64, without an overflow. */
@@ -99,16 +71,17 @@ static void test_stress_far_eye_and_narrow_lens(void **state)
     int d, m;
     (void)state;
     for (d = 0; d < 2; d++) {
-        scene *sc = stress_load(decks[d]);
+        scene *sc = tt_load(decks[d]);
         render_fb ref;
         render_stats st;
+        assert_non_null(sc);
         stress_render(sc, &f64_render_ops, 256, &ref, &st);
         assert_int_equal(st.range_cut, 0);
         for (m = 0; m < 3; m++) {
             render_fb fb;
             long over;
             stress_render(sc, stress_mode(m), 256, &fb, &st);
-            over = stress_over(&fb.img, &ref.img, 8);
+            over = tt_image_over(&fb.img, &ref.img, 8);
             printf("# %s %s: %ld of %d pixels over 8/255 against f64 (%.3f%%), %llu overflows, "
                    "%llu cut\n", decks[d], stress_mode(m)->name, over, 256 * 256,
                    100.0 * over / (256 * 256), st.fx_overflows, st.range_cut);
@@ -128,7 +101,7 @@ static void test_stress_far_eye_and_narrow_lens(void **state)
  * below is refused by q16 with the limit named. */
 static void test_stress_deep_floor(void **state)
 {
-    scene *sc = stress_load("tests/decks/deep-floor.scene");
+    scene *sc = tt_load("tests/decks/deep-floor.scene");
     render_fb fb;
     render_stats st;
     void *cs;
@@ -136,6 +109,7 @@ static void test_stress_deep_floor(void **state)
     char buf[512];
     int m;
     size_t i;
+    assert_non_null(sc);
     (void)state;
     for (m = 0; m < 4; m++) {
         stress_render(sc, stress_mode(m), 64, &fb, &st);
@@ -169,11 +143,12 @@ static void test_stress_deep_floor(void **state)
  * limit; the other modes render it without an overflow. */
 static void test_stress_thin_disc_refused_in_q16(void **state)
 {
-    scene *sc = stress_load("tests/decks/thin-disc.scene");
+    scene *sc = tt_load("tests/decks/thin-disc.scene");
     void *cs;
     diag err;
     char buf[512];
     int m;
+    assert_non_null(sc);
     (void)state;
     diag_init(&err);
     assert_int_equal(q16_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
@@ -205,7 +180,8 @@ static void test_stress_no_overflow_on_valid_decks(void **state)
     int m;
     (void)state;
     for (d = 0; d < sizeof decks / sizeof decks[0]; d++) {
-        scene *sc = stress_load(decks[d]);
+        scene *sc = tt_load(decks[d]);
+        assert_non_null(sc);
         for (m = 0; m < 4; m++) {
             render_fb fb;
             render_stats st;
