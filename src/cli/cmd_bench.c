@@ -138,12 +138,13 @@ static void bench_script(FILE *gp, const bench_row *rows, int n, int ids)
     int i;
     fprintf(gp, "set terminal pngcairo size 1000,700 noenhanced font ',11'\n"
                 "set logscale xy\nset grid xtics ytics mxtics mytics\n"
+                "set format x '%%g'\nset format y '%%g'\n"
                 "set xlabel 'median render seconds (log)'\n"
-                "set ylabel '%s (log; 0 shown at 0.1 pixel)'\n"
+                "set ylabel \"%s\\n(log; none drawn at 0.1 pixel)\"\n"
                 "set title 'maprt bench: time against error, per scene (S1, S2, ...) and mode'\n"
                 "set key outside right top\nset offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
                 "$d << EOD\n",
-            ids ? "% of pixels whose primitive, face or region differs from the REAL(16) oracle"
+            ids ? "% of pixels whose primitive, face or region\\ndiffers from the REAL(16) oracle"
                 : "% of pixels over 2/255 from f64");
     for (i = 0; i < n; i++)
         fprintf(gp, "%.9g %.9g S%d_%s %d\n", rows[i].seconds > 0 ? rows[i].seconds : 1e-6,
