@@ -79,39 +79,27 @@ int idmap_write(const char *path, const idmap *m, diag *err)
     return 0;
 }
 
-int idmap_read(const char *path, idmap *m, diag *err)
+int idmap_read_memory(const char *name, const void *data, size_t len, idmap *m, diag *err)
 {
-    char *data;
-    size_t len, i, n;
-    const unsigned char *b;
+    const unsigned char *b = data;
+    size_t i, n, need;
     uint32_t w, h;
     idmap out;
-    if (infile_read_all(path, (size_t)IDMAP_HEAD + (size_t)IDMAP_REC * 16384 * 16384, &data, &len, err))
-        return err->status;
-    b = (const unsigned char *)data;
-    if (len < IDMAP_HEAD || memcmp(b, "MAPRTID1", 8)) {
-        mem_free(data);
-        return diag_offset(err, DIAG_INPUT, path, 0, "not an identity map (no MAPRTID1 header)");
-    }
+    if (len < IDMAP_HEAD || memcmp(b, "MAPRTID1", 8))
+        return diag_offset(err, DIAG_INPUT, name, 0, "not an identity map (no MAPRTID1 header)");
     w = idmap_get32(b + 8);
     h = idmap_get32(b + 12);
-    if (w < 1 || h < 1 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE) {
-        mem_free(data);
-        return diag_offset(err, DIAG_INPUT, path, 8, "identity map size %lux%lu out of range",
+    if (w < 1 || h < 1 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE)
+        return diag_offset(err, DIAG_INPUT, name, 8, "identity map size %lux%lu out of range",
                            (unsigned long)w, (unsigned long)h);
-    }
     n = (size_t)w * h;
-    if (len != IDMAP_HEAD + IDMAP_REC * n) {
-        mem_free(data);
-        return diag_offset(err, DIAG_INPUT, path, (long long)(len < IDMAP_HEAD + IDMAP_REC * n ? len : IDMAP_HEAD + IDMAP_REC * n),
+    need = IDMAP_HEAD + IDMAP_REC * n;
+    if (len != need)                    /* checked before allocating */
+        return diag_offset(err, DIAG_INPUT, name, (long long)(len < need ? len : need),
                            "identity map of %lux%lu pixels needs %lu bytes, the file has %lu",
-                           (unsigned long)w, (unsigned long)h,
-                           (unsigned long)(IDMAP_HEAD + IDMAP_REC * n), (unsigned long)len);
-    }
-    if (idmap_alloc(&out, (int)w, (int)h, err)) {
-        mem_free(data);
+                           (unsigned long)w, (unsigned long)h, (unsigned long)need, (unsigned long)len);
+    if (idmap_alloc(&out, (int)w, (int)h, err))
         return err->status;
-    }
     for (i = 0; i < n; i++) {
         const unsigned char *r = b + IDMAP_HEAD + IDMAP_REC * i;
         uint64_t bits = 0;
@@ -124,7 +112,18 @@ int idmap_read(const char *path, idmap *m, diag *err)
             bits = bits << 8 | r[16 + j];
         memcpy(&out.px[i].t, &bits, sizeof bits);
     }
-    mem_free(data);
     *m = out;
     return 0;
+}
+
+int idmap_read(const char *path, idmap *m, diag *err)
+{
+    char *data;
+    size_t len;
+    int st;
+    if (infile_read_all(path, (size_t)IDMAP_HEAD + (size_t)IDMAP_REC * 16384 * 16384, &data, &len, err))
+        return err->status;
+    st = idmap_read_memory(path, data, len, m, err);
+    mem_free(data);
+    return st;
 }

@@ -6,6 +6,7 @@
  * per pixel, top row first, all little-endian. */
 #ifndef RENDER_IDMAP_H
 #define RENDER_IDMAP_H
+#include <stddef.h>
 #include <stdint.h>
 #include "util/diag.h"
 
@@ -32,4 +33,6 @@ int idmap_write(const char *path, const idmap *m, diag *err);
 /* Reads path into *m. DIAG_INPUT, located by byte offset, for a bad magic,
  * size or length; DIAG_IO when it cannot be read. */
 int idmap_read(const char *path, idmap *m, diag *err);
+/* The same from len bytes at data; name is used in messages. */
+int idmap_read_memory(const char *name, const void *data, size_t len, idmap *m, diag *err);
 #endif
