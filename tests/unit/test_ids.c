@@ -47,14 +47,10 @@ static void test_ids_against_oracle(void **state)
             diag_print(stderr, &err);
         assert_int_equal(err.status, 0);
         for (m = 0; m < 4; m++) {
-            render_opts o;
+            render_opts o = tt_render_opts(W, W, 2);
             render_fb fb;
             render_stats st;
             idcheck_stats cs;
-            memset(&o, 0, sizeof o);
-            o.width = o.height = W;
-            o.threads = 2;
-            o.aa = 1;
             o.ids = 1;
             assert_int_equal(render_scene(sc, ids_mode(m), &o, &fb, &st, &err), 0);
             idcheck_compare(&fb.ids, &orc, &cs);

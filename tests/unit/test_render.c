@@ -28,18 +28,6 @@ static scene *render_load(const char *path)
     return sc;
 }
 
-static render_opts render_default(int w, int h, int threads)
-{
-    render_opts o;
-    memset(&o, 0, sizeof o);
-    o.width = w;
-    o.height = h;
-    o.threads = threads;
-    o.aa = 1;
-    return o;
-}
-
-
 static void test_render_goldens(void **state)
 {
     static const char *const scenes[] = {"fig1", "csg", "coincident"};
@@ -53,7 +41,7 @@ static void test_render_goldens(void **state)
             image gold;
             render_fb fb;
             render_stats st;
-            render_opts o = render_default(128, 128, 1);
+            render_opts o = tt_render_opts(128, 128, 1);
             diag err;
             long bad;
             snprintf(path, sizeof path, "scenes/%s.scene", scenes[s]);
@@ -76,7 +64,7 @@ static void test_render_counts_and_threads(void **state)
     scene *sc = render_load("scenes/fig1.scene");
     render_fb a, b;
     render_stats sa, sb;
-    render_opts o = render_default(70, 50, 1);
+    render_opts o = tt_render_opts(70, 50, 1);
     diag err;
     int i;
     (void)state;
@@ -128,7 +116,7 @@ static void test_render_scale_independent(void **state)
         scene *sc = render_load("scenes/csg.scene");
         render_fb ref;
         render_stats st;
-        render_opts o = render_default(96, 96, 1);
+        render_opts o = tt_render_opts(96, 96, 1);
         diag err;
         diag_init(&err);
         assert_int_equal(render_scene(sc, modes[m], &o, &ref, &st, &err), 0);
@@ -155,7 +143,7 @@ static void test_render_glass_modes_agree(void **state)
     scene *sc = render_load("bench/glass.scene");
     render_fb a, b;
     render_stats sa, sb;
-    render_opts o = render_default(96, 72, 1);
+    render_opts o = tt_render_opts(96, 72, 1);
     diag err;
     long bad;
     (void)state;
@@ -189,7 +177,7 @@ static void test_render_bad_view(void **state)
     scene *sc = render_load("scenes/fig1.scene");
     render_fb fb;
     render_stats st;
-    render_opts o = render_default(8, 8, 1);
+    render_opts o = tt_render_opts(8, 8, 1);
     diag err;
     char buf[256];
     (void)state;
@@ -206,7 +194,7 @@ static void test_render_bad_view(void **state)
 static void test_render_oom_sweep(void **state)
 {
     scene *sc = render_load("scenes/csg.scene");
-    render_opts o = render_default(40, 30, 2);
+    render_opts o = tt_render_opts(40, 30, 2);
     long n;
     (void)state;
     for (n = 0; n < 1000; n++) {

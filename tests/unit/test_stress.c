@@ -21,12 +21,8 @@ static const render_ops *stress_mode(int m)
 
 static void stress_render(const scene *sc, const render_ops *ops, int w, render_fb *fb, render_stats *st)
 {
-    render_opts o;
+    render_opts o = tt_render_opts(w, w, 2);
     diag err;
-    memset(&o, 0, sizeof o);
-    o.width = o.height = w;
-    o.threads = 2;
-    o.aa = 1;
     diag_init(&err);
     assert_int_equal(render_scene(sc, ops, &o, fb, st, &err), 0);
 }

@@ -56,6 +56,18 @@ static inline scene *tt_load(const char *path)
     return sc;
 }
 
+/* Render options: w x h pixels, one sample each, on `threads` threads. */
+static inline render_opts tt_render_opts(int w, int h, int threads)
+{
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.width = w;
+    o.height = h;
+    o.threads = threads;
+    o.aa = 1;
+    return o;
+}
+
 /* Index of the primitive named name in sc, -1 if none. */
 static inline int tt_find_prim(const scene *sc, const char *name)
 {
