@@ -28,7 +28,8 @@ static void test_ids_against_oracle(void **state)
 {
     static const char *const decks[] = {"scenes/fig1.scene", "scenes/csg.scene", "scenes/coincident.scene",
                                         "scenes/glass.scene", "tests/decks/touching.scene",
-                                        "tests/decks/far-eye.scene", "tests/decks/narrow-lens.scene"};
+                                        "tests/decks/far-eye.scene", "tests/decks/narrow-lens.scene",
+                                        "tests/decks/coincident-turned.scene"};
     const int W = 128;
     size_t d;
     int m;

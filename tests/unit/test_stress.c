@@ -171,7 +171,8 @@ static void test_stress_no_overflow_on_valid_decks(void **state)
         "scenes/glass.scene", "scenes/granite.scene", "scenes/pds-bspline.scene",
         "scenes/pds-cells.scene", "scenes/pds-cpg.scene", "scenes/pds-pixel.scene",
         "scenes/pds-quadtree.scene", "scenes/pds-striptree.scene", "tests/decks/touching.scene",
-        "tests/decks/far-eye.scene", "tests/decks/narrow-lens.scene", "tests/decks/deep-floor.scene"};
+        "tests/decks/far-eye.scene", "tests/decks/narrow-lens.scene", "tests/decks/deep-floor.scene",
+        "tests/decks/coincident-turned.scene"};
     size_t d;
     int m;
     (void)state;
