@@ -1,6 +1,6 @@
 #!/bin/sh
 # make bench: time against error for every scene in scenes/ and bench/ in all
-# numeric modes (f64 is the reference), then the CSG-width figure: render time
+# numeric modes (f64 and, when built, the REAL(16) oracle are the references), then the CSG-width figure: render time
 # and primitive tests per ray of a slab minus N cylinders, N = 8 .. 256, and
 # one multi-attribute primitive against single-attribute ones (attrmap.sh).
 # Results go to out/. Timings depend on machine load.
@@ -11,8 +11,10 @@ mkdir -p out
 sh bench/slab.sh
 plot=""
 command -v gnuplot >/dev/null 2>&1 && plot="--plot out/bench.png"
+oracle=""
+[ -x "$(dirname "$bin")/oracle/ids_oracle" ] && oracle="--oracle $(dirname "$bin")/oracle/ids_oracle"
 "$bin" bench scenes/*.scene bench/*.scene --size "$size" --threads "$threads" \
-  --csv out/bench.csv $plot || exit 1
+  --runs "${BENCH_RUNS:-3}" $oracle --csv out/bench.csv $plot || exit 1
 echo
 echo "slab minus N cylinders, q16, $size, $threads thread(s):"
 echo "n,render_s,rays,prim_tests,prim_tests_per_ray" > out/slab.csv

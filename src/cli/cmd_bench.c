@@ -1,28 +1,39 @@
-/* cmd_bench — `maprt bench`: renders each scene in each numeric mode and
- * reports run time against error, the error measured against the scene's
- * f64 render (the reference, rendered once per scene in addition to the
- * listed modes). Output: a table on stdout, optional CSV and gnuplot chart. */
+/* cmd_bench — `maprt bench`: renders each scene in each numeric mode N
+ * times and reports, per scene and mode, the median render time, rays/s,
+ * the error against the scene's f64 render (PSNR) and, with --oracle,
+ * against the REAL(16) oracle's identity map (pixels whose primitive, face
+ * or region differs; hit distance error). Output: a table on stdout,
+ * optional CSV and a Pareto chart drawn by gnuplot. gnuplot is run
+ * without a shell and sees numbers and labels of a fixed alphabet only:
+ * scenes are named S1, S2, ... in the chart (the table and the CSV say
+ * which is which), and the PNG comes back on its standard output. */
 #include "cli/cli.h"
 #include "cli/cli_scene.h"
 #include "image/image_diff.h"
+#include "render/idcheck.h"
 #include "render/render.h"
-#include "util/exe.h"
 #include "util/mem.h"
 #include "util/outfile.h"
+#include <errno.h>
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #define BENCH_MAX_MODES 6
+#define BENCH_MAX_RUNS 99
 
 typedef struct bench_row {
     const char *scene, *mode;
-    int threads;
-    double seconds, rays_per_s, rays_per_s_core, psnr, pct_over2, maxdiff, pct_pid;
-    unsigned long long rays, overflows, hfp_exc;
+    int scene_no, threads, runs, has_ids;
+    double seconds, rays_per_s, psnr, pct_over2;
+    double id_pct, err_median, err_max;
+    long id_compared, id_flagged, id_mismatch;
+    unsigned long long rays, overflows, range_cut, hfp_exc;
 } bench_row;
 
 static void bench_help(FILE *f)
@@ -30,68 +41,50 @@ static void bench_help(FILE *f)
     fprintf(f,
         "usage: maprt bench SCENE... [options]\n"
         "\n"
-        "Renders every SCENE in every numeric mode and prints, per run: wall-clock\n"
-        "render seconds, rays/s and rays/s per thread (all rays: primary, shadow,\n"
-        "reflected, refracted), and the error against the same scene rendered in\n"
-        "f64, which is the reference (rendered once more per scene for that):\n"
-        "PSNR in dB (inf when identical), the %% of pixels where some channel differs\n"
-        "by more than 2/255, the largest channel difference (0..255), the %% of\n"
-        "pixels whose primitive id differs from f64's, the fixed-point overflow\n"
-        "count, and the HFP exceptions other than significance (exponent overflow\n"
-        "and underflow, divide, square root, conversion; 0 outside hfp32/hfp64).\n"
+        "Renders every SCENE in every numeric mode N times and prints per scene and\n"
+        "mode: the median wall-clock render seconds of the N runs, rays/s (all rays:\n"
+        "primary, shadow, reflected, refracted), the error against the same scene\n"
+        "rendered in f64 (PSNR in dB, inf when identical, and the %% of pixels where\n"
+        "a channel differs by more than 2/255), the fixed-point overflows and primary\n"
+        "rays beyond the mode's range, and with --oracle the pixels whose primitive,\n"
+        "face or region differs from the REAL(16) oracle's (its ambiguous pixels not\n"
+        "counted) and the hit distance error against it, median and largest, in deck\n"
+        "units (docs/idmap.md).\n"
         "\n"
         "options:\n"
         "  --size WxH        image size, 1..%d each (default: each deck's SIZE)\n"
         "  --modes LIST      comma-separated modes out of q16,q32,f32,f64,hfp32,hfp64\n"
         "                    (default: all)\n"
+        "  --runs N          timed renders per scene and mode, 1..%d (default 3)\n"
         "  --threads N       worker threads, 1..%d (default: OpenMP's count, %d here)\n"
+        "  --oracle PATH     the ids_oracle executable (make builds build/oracle/ids_oracle)\n"
         "  --csv OUT.csv     also write the rows as CSV with a header line\n"
-        "  --plot OUT.png    chart seconds against max difference with gnuplot\n"
+        "  --plot OUT.png    Pareto chart with gnuplot: median seconds against the %% of\n"
+        "                    pixels that differ from the oracle (needs --oracle; else\n"
+        "                    against the %% over 2/255 from f64), both axes logarithmic;\n"
+        "                    scenes are labelled S1, S2, ... in the order given\n"
         "                    (an error, exit 3, when gnuplot is not installed)\n"
         "  -h, --help        show this help\n"
         "\n"
-        "Timings depend on machine load; repeat runs to judge the noise.\n"
+        "Timings depend on machine load; the median of N runs damps the noise.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
-        SCENE_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads());
+        SCENE_MAX_SIDE, BENCH_MAX_RUNS, RENDER_MAX_THREADS, omp_get_max_threads());
 }
 
-/* Charts seconds against max difference, one labelled point per run, by
- * piping a script with inline data to gnuplot. The PNG is written under a
- * temporary name and renamed when gnuplot succeeds. CLI_OK or CLI_IO. */
-static int bench_plot(const char *out, const bench_row *rows, int n)
+/* Writes s as one CSV field (RFC 4180: quoted, quotes doubled). */
+static int bench_csv_field(outfile *of, const char *s, diag *err)
 {
-    FILE *gp;
-    char *tmp;
-    int i, rc;
-    size_t len = strlen(out) + 16;
-    if (!exe_on_path("gnuplot")) {
-        fprintf(stderr, "maprt: %s: error: --plot needs gnuplot, which is not installed\n", out);
-        return CLI_IO;
+    char buf[2];
+    if (!strpbrk(s, ",\"\r\n"))
+        return outfile_write(of, s, strlen(s), err);
+    outfile_write(of, "\"", 1, err);
+    for (; *s; s++) {
+        buf[0] = *s;
+        if (*s == '"')
+            outfile_write(of, "\"", 1, err);
+        outfile_write(of, buf, 1, err);
     }
-    if (!(tmp = mem_alloc(len)))
-        return CLI_IO;
-    snprintf(tmp, len, "%s.tmp-%ld", out, (long)getpid());
-    if (!(gp = popen("gnuplot", "w"))) {
-        mem_free(tmp);
-        fprintf(stderr, "maprt: %s: error: cannot run gnuplot\n", out);
-        return CLI_IO;
-    }
-    fprintf(gp, "set terminal png size 800,600\nset output '%s'\n"
-                "set xlabel 'render seconds'\nset ylabel 'max channel difference vs f64 (0..255)'\n"
-                "set title 'maprt bench: run time against error'\nset key outside\n"
-                "$d << EOD\n", tmp);
-    for (i = 0; i < n; i++)
-        fprintf(gp, "\"%s/%s\" %.6f %.0f\n", rows[i].scene, rows[i].mode, rows[i].seconds, rows[i].maxdiff);
-    fprintf(gp, "EOD\nplot $d using 2:3:1 with labels point pt 7 offset 1,1 notitle\n");
-    rc = pclose(gp);
-    if (rc != 0 || rename(tmp, out) != 0) {
-        remove(tmp);
-        mem_free(tmp);
-        fprintf(stderr, "maprt: %s: error: gnuplot failed\n", out);
-        return CLI_IO;
-    }
-    mem_free(tmp);
-    return CLI_OK;
+    return outfile_write(of, "\"", 1, err);
 }
 
 /* Writes the rows as CSV with a header line, committed on close. */
@@ -99,20 +92,27 @@ static int bench_csv(const char *path, const bench_row *rows, int n)
 {
     outfile of;
     diag err;
-    char line[512];
+    char line[768];
     int i;
     diag_init(&err);
     if (outfile_open(&of, path, &err))
         goto fail;
-    snprintf(line, sizeof line, "scene,mode,threads,seconds,rays,rays_per_s,rays_per_s_core,"
-                                "psnr_db,pct_pixels_over_2,max_abs_diff,fx_overflows,"
-                                "pct_pid_diff,hfp_exceptions\n");
+    snprintf(line, sizeof line, "scene,label,mode,threads,runs,seconds_median,rays,rays_per_s,psnr_db,"
+                                "pct_pixels_over_2,fx_overflows,range_cut,hfp_exceptions,id_compared,id_flagged,"
+                                "id_mismatch,id_mismatch_pct,hit_err_median,hit_err_max\n");
     outfile_write(&of, line, strlen(line), &err);
     for (i = 0; i < n; i++) {
-        snprintf(line, sizeof line, "%s,%s,%d,%.6f,%llu,%.0f,%.0f,%.3f,%.4f,%.0f,%llu,%.4f,%llu\n",
-                 rows[i].scene, rows[i].mode, rows[i].threads, rows[i].seconds, rows[i].rays,
-                 rows[i].rays_per_s, rows[i].rays_per_s_core, rows[i].psnr, rows[i].pct_over2,
-                 rows[i].maxdiff, rows[i].overflows, rows[i].pct_pid, rows[i].hfp_exc);
+        const bench_row *r = &rows[i];
+        bench_csv_field(&of, r->scene, &err);
+        snprintf(line, sizeof line, ",S%d,%s,%d,%d,%.6f,%llu,%.0f,%.3f,%.4f,%llu,%llu,%llu",
+                 r->scene_no, r->mode, r->threads, r->runs, r->seconds, r->rays, r->rays_per_s,
+                 r->psnr, r->pct_over2, r->overflows, r->range_cut, r->hfp_exc);
+        outfile_write(&of, line, strlen(line), &err);
+        if (r->has_ids)
+            snprintf(line, sizeof line, ",%ld,%ld,%ld,%.4f,%.3g,%.3g\n", r->id_compared, r->id_flagged,
+                     r->id_mismatch, r->id_pct, r->err_median, r->err_max);
+        else
+            snprintf(line, sizeof line, ",,,,,,\n");
         outfile_write(&of, line, strlen(line), &err);
     }
     if (outfile_commit(&of, &err))
@@ -124,13 +124,94 @@ fail:
     return CLI_IO;
 }
 
-/* The fraction of pixels whose primitive id differs between a and b (same size). */
-static double bench_pid_diff(const render_fb *a, const render_fb *b)
+/* The chart's y value of a row: % of pixels off, floored at a tenth of one
+ * pixel so that a perfect run stays on the logarithmic axis. */
+static double bench_y(const bench_row *r, int ids)
 {
-    size_t i, n = (size_t)a->img.width * (size_t)a->img.height, d = 0;
+    double floor_pct = 10.0 / (r->id_compared > 0 ? (double)r->id_compared : 1e6);
+    double y = ids ? r->id_pct : r->pct_over2;
+    return y > floor_pct ? y : floor_pct;
+}
+
+/* The gnuplot script: fixed text, numbers, and labels "S<n> <mode>". */
+static void bench_script(FILE *gp, const bench_row *rows, int n, int ids)
+{
+    int i;
+    fprintf(gp, "set terminal pngcairo size 1000,700 noenhanced font ',11'\n"
+                "set logscale xy\nset grid xtics ytics mxtics mytics\n"
+                "set format x '%%g'\nset format y '%%g'\n"
+                "set xlabel 'median render seconds (log)'\n"
+                "set ylabel \"%s\\n(log; none drawn at 0.1 pixel)\"\n"
+                "set title 'maprt bench: time against error, per scene (S1, S2, ...) and mode'\n"
+                "set key outside right top\nset offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n"
+                "$d << EOD\n",
+            ids ? "% of pixels whose primitive, face or region\\ndiffers from the REAL(16) oracle"
+                : "% of pixels over 2/255 from f64");
     for (i = 0; i < n; i++)
-        d += a->pid[i] != b->pid[i];
-    return n ? (double)d / (double)n : 0;
+        fprintf(gp, "%.9g %.9g S%d_%s %d\n", rows[i].seconds > 0 ? rows[i].seconds : 1e-6,
+                bench_y(&rows[i], ids), rows[i].scene_no, rows[i].mode,
+                !strcmp(rows[i].mode, "q16") ? 0 : !strcmp(rows[i].mode, "q32") ? 1
+                : !strcmp(rows[i].mode, "f32") ? 2 : 3);
+    /* one colour per mode; labels alternate above and below the point so
+     * that neighbours (f32 and f64 are often close) stay apart */
+    fprintf(gp, "EOD\nplot for [m=0:3] $d using ($4==m ? $1 : NaN):2 with points pt 7 ps 1.5 "
+                "title word('q16 q32 f32 f64', m+1), \\\n"
+                "     $d using 1:2:3 every 2 with labels offset 0,1.2 notitle, \\\n"
+                "     $d using 1:2:3 every 2::1 with labels offset 0,-1.2 notitle\n");
+}
+
+/* Runs gnuplot (found on PATH, no shell) with the chart script on its
+ * standard input and its standard output into the PNG, committed only when
+ * gnuplot succeeds. CLI_OK or CLI_IO. */
+static int bench_plot(const char *out, const bench_row *rows, int n, int ids)
+{
+    outfile of;
+    diag err;
+    int fds[2], status = -1;
+    pid_t pid;
+    FILE *gp;
+    diag_init(&err);
+    if (outfile_open(&of, out, &err)) {
+        diag_print(stderr, &err);
+        return CLI_IO;
+    }
+    fflush(of.f);
+    if (pipe(fds) != 0) {
+        outfile_abort(&of);
+        fprintf(stderr, "maprt: %s: error: cannot run gnuplot\n", out);
+        return CLI_IO;
+    }
+    pid = fork();
+    if (pid == 0) {
+        char *argv[2];
+        argv[0] = (char *)"gnuplot";
+        argv[1] = NULL;
+        close(fds[1]);
+        if (dup2(fds[0], 0) < 0 || dup2(fileno(of.f), 1) < 0)
+            _exit(126);
+        execvp("gnuplot", argv);
+        _exit(127);
+    }
+    close(fds[0]);
+    if (pid < 0 || !(gp = fdopen(fds[1], "w"))) {
+        if (pid < 0)
+            close(fds[1]);
+        outfile_abort(&of);
+        fprintf(stderr, "maprt: %s: error: cannot run gnuplot\n", out);
+        return CLI_IO;
+    }
+    bench_script(gp, rows, n, ids);
+    fclose(gp);
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        ;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || ftell(of.f) < 0
+        || fseek(of.f, 0, SEEK_END) != 0 || ftell(of.f) == 0 || outfile_commit(&of, &err)) {
+        outfile_abort(&of);
+        fprintf(stderr, "maprt: %s: error: gnuplot failed%s\n", out,
+                WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (is it installed?)" : "");
+        return CLI_IO;
+    }
+    return CLI_OK;
 }
 
 /* Parses "q16,f64" into ops tables; 0 or CLI_USAGE. */
@@ -145,7 +226,8 @@ static int bench_modes(const char *s, const render_ops **ops, int *n)
     for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
         const render_ops *o = render_ops_find(tok);
         if (!o)
-            return cli_usage_error("bench", "--modes: '%s' is not q16, q32, f32, f64, hfp32 or hfp64", tok);
+            return cli_usage_error("bench", "--modes: '%s' is not q16, q32, f32, f64, hfp32 or hfp64",
+                                   tok);
         for (k = 0; k < *n; k++)
             if (ops[k] == o)
                 return cli_usage_error("bench", "--modes: '%s' given twice", tok);
@@ -156,13 +238,69 @@ static int bench_modes(const char *s, const render_ops **ops, int *n)
     return 0;
 }
 
+static int bench_dcmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* One scene in one mode: `runs` timed renders (the median time), the
+ * image against ref, and with an oracle map the identity map against it. */
+static int bench_one(const scene *sc, const render_ops *ops, const render_opts *o, int runs,
+                     const render_fb *ref, const idmap *orc, bench_row *r, diag *err)
+{
+    double t[BENCH_MAX_RUNS];
+    render_fb fb;
+    render_stats st;
+    image_diff_stats d;
+    int k;
+    for (k = 0; k < runs; k++) {
+        if (render_scene(sc, ops, o, &fb, &st, err))
+            return err->status;
+        t[k] = st.time_render_s;
+        if (k + 1 < runs)
+            render_fb_free(&fb);
+    }
+    qsort(t, (size_t)runs, sizeof *t, bench_dcmp);
+    r->seconds = runs % 2 ? t[runs / 2] : (t[runs / 2 - 1] + t[runs / 2]) / 2;
+    r->rays = st.rays_primary + st.rays_shadow + st.rays_reflected + st.rays_refracted;
+    r->rays_per_s = r->seconds > 0 ? (double)r->rays / r->seconds : 0;
+    r->overflows = st.fx_overflows;
+    r->range_cut = st.range_cut;
+    r->hfp_exc = 0;           /* exponent overflow and underflow, divide, sqrt, conversion */
+    for (k = 0; k < HFP_EXC_N; k++)
+        if (k != HFP_EXC_SIGNIFICANCE)
+            r->hfp_exc += st.hfp_exc[k];
+    image_diff(&fb.img, &ref->img, 2, &d);
+    r->psnr = d.psnr;
+    r->pct_over2 = 100.0 * d.over;
+    render_fb_free(&fb);
+    if (orc) {
+        render_opts oi = *o;
+        idcheck_stats cs;
+        oi.ids = 1;
+        if (render_scene(sc, ops, &oi, &fb, &st, err))
+            return err->status;
+        idcheck_compare(&fb.ids, orc, &cs);
+        render_fb_free(&fb);
+        r->has_ids = 1;
+        r->id_compared = cs.compared;
+        r->id_flagged = cs.flagged;
+        r->id_mismatch = cs.mismatches;
+        r->id_pct = cs.compared ? 100.0 * cs.mismatches / cs.compared : 0;
+        r->err_median = cs.err_median;
+        r->err_max = cs.err_max;
+    }
+    return 0;
+}
+
 int cmd_bench(int argc, char **argv)
 {
     const render_ops *modes[BENCH_MAX_MODES];
-    const char *csv = NULL, *plot = NULL, *v, **scenes;
+    const char *csv = NULL, *plot = NULL, *oracle = NULL, *v, **scenes;
     bench_row *rows;
     render_opts o;
-    int nmodes = 0, nscenes = 0, nrows = 0, i, s, m, k, status = CLI_OK;
+    int nmodes = 0, nscenes = 0, nrows = 0, runs = 3, i, s, m, status = CLI_OK;
     long n;
 
     if (cli_wants_help(argc, argv)) {
@@ -176,7 +314,7 @@ int cmd_bench(int argc, char **argv)
         o.threads = RENDER_MAX_THREADS;
     bench_modes("q16,q32,f32,f64,hfp32,hfp64", modes, &nmodes);
     scenes = mem_alloc(sizeof *scenes * (size_t)argc);
-    rows = mem_alloc(sizeof *rows * (size_t)argc * BENCH_MAX_MODES);
+    rows = mem_calloc((size_t)argc * BENCH_MAX_MODES, sizeof *rows);
     if (!scenes || !rows) {
         mem_free(scenes);
         mem_free(rows);
@@ -195,6 +333,13 @@ int cmd_bench(int argc, char **argv)
             if (!(v = cli_value("bench", argc, argv, &i)) || cli_long("bench", a, v, 1, RENDER_MAX_THREADS, &n))
                 goto usage;
             o.threads = (int)n;
+        } else if (!strcmp(a, "--runs")) {
+            if (!(v = cli_value("bench", argc, argv, &i)) || cli_long("bench", a, v, 1, BENCH_MAX_RUNS, &n))
+                goto usage;
+            runs = (int)n;
+        } else if (!strcmp(a, "--oracle")) {
+            if (!(oracle = cli_value("bench", argc, argv, &i)))
+                goto usage;
         } else if (!strcmp(a, "--csv")) {
             if (!(csv = cli_value("bench", argc, argv, &i)))
                 goto usage;
@@ -212,15 +357,19 @@ int cmd_bench(int argc, char **argv)
         cli_usage_error("bench", "no SCENE given");
         goto usage;
     }
-    printf("%-28s %-5s %3s %9s %12s %12s %8s %8s %4s %8s %9s %7s\n", "scene", "mode", "thr", "seconds",
-           "rays/s", "rays/s/core", "psnr_db", "%>2/255", "max", "%pid", "overflows", "hfp_exc");
+    printf("%-3s %-24s %-5s %3s %9s %11s %8s %8s %9s %5s %9s %9s %9s %7s\n", "", "scene", "mode",
+           "thr", "median_s", "rays/s", "psnr_db", "%>2/255", "%id_diff", "flag", "err_med",
+           "err_max", "overflows", "hfp_exc");
     for (s = 0; s < nscenes && status == CLI_OK; s++) {
         scene *sc = NULL;
-        render_fb ref, fb;
+        render_fb ref;
         render_stats st;
         cli_files files;
+        idmap orc;
         diag err;
+        int have_orc = 0;
         diag_init(&err);
+        memset(&orc, 0, sizeof orc);
         status = cli_files_init(&files, &err);
         if (!status)
             status = cli_scene_load(&files, scenes[s], &sc, &err);
@@ -231,44 +380,47 @@ int cmd_bench(int argc, char **argv)
             scene_free(sc);
             break;
         }
+        if (oracle) {
+            if ((status = idcheck_oracle(oracle, sc, ref.img.width, ref.img.height, &orc, &err)) != 0) {
+                diag_print(stderr, &err);
+                render_fb_free(&ref);
+                scene_free(sc);
+                break;
+            }
+            have_orc = 1;
+        }
         for (m = 0; m < nmodes; m++) {
             bench_row *r = &rows[nrows];
-            image_diff_stats d;
-            if ((status = render_scene(sc, modes[m], &o, &fb, &st, &err)) != 0) {
+            r->scene = scenes[s];
+            r->scene_no = s + 1;
+            r->mode = modes[m]->name;
+            r->threads = o.threads;
+            r->runs = runs;
+            if ((status = bench_one(sc, modes[m], &o, runs, &ref, have_orc ? &orc : NULL, r, &err)) != 0) {
                 diag_print(stderr, &err);
                 break;
             }
-            r->scene = scenes[s];
-            r->mode = modes[m]->name;
-            r->threads = o.threads;
-            r->seconds = st.time_render_s;
-            r->rays = st.rays_primary + st.rays_shadow + st.rays_reflected + st.rays_refracted;
-            r->rays_per_s = r->seconds > 0 ? (double)r->rays / r->seconds : 0;
-            r->rays_per_s_core = r->rays_per_s / o.threads;
-            r->overflows = st.fx_overflows;
-            r->hfp_exc = 0;
-            for (k = 0; k < HFP_EXC_N; k++)
-                if (k != HFP_EXC_SIGNIFICANCE)
-                    r->hfp_exc += st.hfp_exc[k];
-            r->pct_pid = 100.0 * bench_pid_diff(&fb, &ref);
-            image_diff(&fb.img, &ref.img, 2, &d);
-            r->psnr = d.psnr;
-            r->pct_over2 = 100.0 * d.over;
-            r->maxdiff = d.max;
-            render_fb_free(&fb);
-            printf("%-28s %-5s %3d %9.4f %12.0f %12.0f %8.2f %8.4f %4.0f %8.4f %9llu %7llu\n", r->scene,
-                   r->mode, r->threads, r->seconds, r->rays_per_s, r->rays_per_s_core, r->psnr,
-                   r->pct_over2, r->maxdiff, r->pct_pid, r->overflows, r->hfp_exc);
+            printf("S%-2d %-24s %-5s %3d %9.4f %11.0f %8.2f %8.4f ", r->scene_no, r->scene, r->mode,
+                   r->threads, r->seconds, r->rays_per_s, r->psnr, r->pct_over2);
+            if (r->has_ids)
+                printf("%9.4f %5ld %9.2g %9.2g", r->id_pct, r->id_flagged, r->err_median, r->err_max);
+            else
+                printf("%9s %5s %9s %9s", "-", "-", "-", "-");
+            printf(" %9llu %7llu\n", r->overflows, r->hfp_exc);
+            if (r->range_cut)
+                printf("    %llu primary rays beyond the %s range (shown as background)\n", r->range_cut,
+                       r->mode);
             fflush(stdout);
             nrows++;
         }
+        idmap_free(&orc);
         render_fb_free(&ref);
         scene_free(sc);
     }
     if (status == CLI_OK && csv)
         status = bench_csv(csv, rows, nrows);
     if (status == CLI_OK && plot)
-        status = bench_plot(plot, rows, nrows);
+        status = bench_plot(plot, rows, nrows, oracle != NULL);
     mem_free(scenes);
     mem_free(rows);
     return status;

@@ -17,7 +17,7 @@
 static void render_help(FILE *f)
 {
     fprintf(f,
-        "usage: maprt render SCENE [-o OUT.png] [--dl OUT.dl5080] [options]\n"
+        "usage: maprt render SCENE [-o OUT.png] [--dl OUT.dl5080] [--ids OUT.ids] [options]\n"
         "\n"
         "Ray-traces the scene deck SCENE (see docs/scene-format.md) and writes a\n"
         "true-colour PNG and/or a DL5080 display list, as the IBM 5081 would show it.\n"
@@ -32,6 +32,9 @@ static void render_help(FILE *f)
         "                        one job of a batch array\n"
         "  --dl OUT.dl5080       write a DL5080 display list: the frame quantised to at\n"
         "                        most 256 colours in the DAC's colour space\n"
+        "  --ids OUT.ids         write the identity map of the primary rays: per pixel\n"
+        "                        the primitive, face, region (attribute) and distance\n"
+        "                        of the hit (format in docs/idmap.md)\n"
         "  --dac 4|8             bits per gun of the 5081 colour table (default 4)\n"
         "  --dither              Floyd-Steinberg dithering when quantising (--dl)\n"
         "  --wireframe           add the outlines of the primitives as seen (--dl)\n"
@@ -45,8 +48,9 @@ static void render_help(FILE *f)
         "  --stats               print key=value lines to stdout: numeric rays.primary\n"
         "                        rays.shadow rays.reflected rays.refracted pds.lookups\n"
         "                        fx.overflows tests.prim tests.bound csg.pruned\n"
-        "                        time.compile_s time.render_s (and dl.colours dl.bytes\n"
-        "                        dl.psnr with --dl)\n"
+        "                        time.compile_s time.render_s range.cut (and\n"
+        "                        dl.colours dl.bytes dl.psnr with --dl); any overflow\n"
+        "                        or range.cut is also reported on stderr\n"
         "%s"
         "  -h, --help            show this help\n"
         "\n"
@@ -101,8 +105,8 @@ static int render_write_part(const char *path, const render_fb *fb, const render
 int cmd_render(int argc, char **argv)
 {
     const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *out_part = NULL;
-    const char *mode = "q16", *v;
-    char *png_path = NULL, *dl_path = NULL, *part_path = NULL;
+    const char *out_ids = NULL, *mode = "q16", *v;
+    char *png_path = NULL, *dl_path = NULL, *part_path = NULL, *ids_path = NULL;
     cli_mpi_share share[CLI_MPI_MAX_RANKS];
     const render_ops *ops = NULL;
     render_opts o;
@@ -146,6 +150,8 @@ int cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--region")) {
             if (!(v = cli_value("render", argc, argv, &i)) || cli_region("render", a, v, SCENE_MAX_SIDE, o.region))
                 status = CLI_USAGE;
+        } else if (!strcmp(a, "--ids")) {
+            if (!(out_ids = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--dac")) {
             if (!(v = cli_value("render", argc, argv, &i)) || cli_long("render", a, v, 4, 8, &n)
                 || (n != 4 && n != 8))
@@ -186,12 +192,15 @@ int cmd_render(int argc, char **argv)
     }
     if (!status && !scene_name)
         status = cli_usage_error("render", "no SCENE given");
-    if (!status && !out_png && !out_dl && !out_part)
-        status = cli_usage_error("render", "no output: give -o OUT.png, --dl OUT.dl5080 or "
-                                 "--part OUT.part");
-    if (!status && o.region[2] && (out_png || out_dl))
+    if (!status && !out_png && !out_dl && !out_part && !out_ids)
+        status = cli_usage_error("render", "no output: give -o OUT.png, --dl OUT.dl5080, --ids "
+                                 "OUT.ids or --part OUT.part");
+    if (!status && o.region[2] && (out_png || out_dl || out_ids))
         status = cli_usage_error("render", "--region renders part of the image: write it with "
                                  "--part and assemble the parts with 'maprt merge'");
+    if (!status && out_ids && (out_part || cli_mpi_size() > 1))
+        status = cli_usage_error("render", "--ids is written by single-process renders only "
+                                 "(not with --part or under mpirun)");
     if (!status && !(ops = render_ops_find(mode)))
         status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32, f64, hfp32 or hfp64", mode);
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
@@ -205,6 +214,7 @@ int cmd_render(int argc, char **argv)
     if ((out_png && cli_output_path(&files, out_png, &png_path, &err))
         || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
         || (out_part && cli_output_path(&files, out_part, &part_path, &err))
+        || (out_ids && cli_output_path(&files, out_ids, &ids_path, &err))
         || cli_scene_load(&files, scene_name, &sc, &err)) {
         cli_mpi_agree(err.status, &root_status);
         quiet = cli_mpi_rank() != 0 && root_status;   /* rank 0 says it */
@@ -224,16 +234,26 @@ int cmd_render(int argc, char **argv)
     }
     if (cli_is_tty() && cli_mpi_rank() == 0)
         o.progress = render_progress;
+    o.ids = out_ids != NULL;
     if (cli_mpi_render(sc, ops, &o, &fb, &st, share, &err))
         goto done;
     rendered = 1;
     if (cli_mpi_rank() != 0)
         goto done;                    /* rank 0 writes and reports */
+    /* a precision event is never silent, --stats or not */
+    if (st.fx_overflows || st.range_cut)
+        fprintf(stderr, "maprt: %s: warning: %s: %llu fixed-point overflows, %llu primary rays "
+                        "beyond the mode's range shown as background (docs/numerics.md); %s\n",
+                scene_name, ops->name, st.fx_overflows, st.range_cut,
+                strcmp(ops->name, "q16") ? "the picture may be wrong there"
+                                         : "try --numeric q32 or f64");
     if (part_path && render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
         goto done;
     if (png_path && image_write_png(png_path, &fb.img, &err))
         goto done;
     if (dl_path && cli_sink_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
+        goto done;
+    if (ids_path && idmap_write(ids_path, &fb.ids, &err))
         goto done;
     if (stats) {
         printf("numeric=%s\n", ops->name);
@@ -251,6 +271,7 @@ done:
     mem_free(png_path);
     mem_free(dl_path);
     mem_free(part_path);
+    mem_free(ids_path);
     cli_files_free(&files);
     if (err.status) {
         if (!quiet)

@@ -332,7 +332,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     for (i = 0; (size_t)i < sc->nroots; i++)
         roots[i] = sc->roots[i];
     if (sc->nroots)
-        root = csg_compile_list(&x, roots, (int)sc->nroots, CSG_UNION, 0);
+        root = csg_compile_list(&x, roots, (int)sc->nroots, CSG_GROUP, 0);
     if (sc->nroots && root < 0)
         goto fail;
     out->nodes = x.nodes;
@@ -452,13 +452,73 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
     return n;
 }
 
+/* The first surface crossing of one object's span list s[0..n-1] with
+ * 0 < t <= tmax: 1 and *h, or 0. */
+static int csg_first(const span *s, int n, num tmax, csg_hit *h)
+{
+    int i, k;
+    for (i = 0; i < n; i++) {
+        const span_end *e[2];
+        e[0] = &s[i].a;
+        e[1] = &s[i].b;
+        for (k = 0; k < 2; k++) {
+            if (e[k]->t <= NUM_ZERO || e[k]->face == PRIM_FACE_NONE)
+                continue;
+            if (e[k]->t > tmax)
+                return 0;
+            h->t = e[k]->t;
+            h->prim = e[k]->prim;
+            h->face = e[k]->face;
+            h->entering = k == 0;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* Nearest hit below q->tmax in the objects under node ni; a hit found
+ * replaces *best (see csg_intersect for ties) and becomes the far end. */
+static void csg_nearest(csg_query *q, int ni, csg_hit *best, int *found)
+{
+    const csg_node *nd = &q->c->nodes[ni];
+    num tc;
+    if (nd->op == CSG_GROUP) {
+        if (nd->bounded) {
+            q->st->bound_tests++;
+            if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)
+                || (nd->use_box && vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, tc, NUM_ZERO, q->tmax))) {
+                q->st->pruned++;
+                return;
+            }
+        }
+        /* tree order (a spatial split): ordering the two by distance cost
+         * more than the pruning it gained (measured on fig1) */
+        csg_nearest(q, nd->left, best, found);
+        csg_nearest(q, nd->right, best, found);
+        return;
+    }
+    {
+        size_t mark = arena_mark(q->ar);
+        span *s = NULL;
+        csg_hit h;
+        int n = csg_eval(q, ni, NUM_ZERO, q->tmax, &s);
+        if (n > 0 && csg_first(s, n, q->tmax, &h)
+            && (!*found || h.t < best->t
+                || (h.t == best->t && (h.entering > best->entering
+                                       || (h.entering == best->entering && h.prim < best->prim))))) {
+            *best = h;
+            *found = 1;
+            q->tmax = h.t;
+        }
+        arena_release(q->ar, mark);
+    }
+}
+
 int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
                       arena *ar, geom_stats *st, csg_hit *hit)
 {
     csg_query q;
-    span *s = NULL;
-    size_t mark = arena_mark(ar);
-    int n, i, found = 0;
+    int found = 0;
     if (c->root < 0)
         return 0;
     q.c = c;
@@ -467,27 +527,6 @@ int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tm
     q.tmax = tmax;
     q.ar = ar;
     q.st = st;
-    n = csg_eval(&q, c->root, NUM_ZERO, tmax, &s);
-    for (i = 0; i < n && !found; i++) {
-        const span_end *e[2];
-        int k;
-        e[0] = &s[i].a;
-        e[1] = &s[i].b;
-        for (k = 0; k < 2; k++) {
-            if (e[k]->t <= NUM_ZERO || e[k]->face == PRIM_FACE_NONE)
-                continue;
-            if (e[k]->t > tmax) {
-                i = n;
-                break;
-            }
-            hit->t = e[k]->t;
-            hit->prim = e[k]->prim;
-            hit->face = e[k]->face;
-            hit->entering = k == 0;
-            found = 1;
-            break;
-        }
-    }
-    arena_release(ar, mark);
+    csg_nearest(&q, c->root, hit, &found);
     return found;
 }

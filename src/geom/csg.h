@@ -7,7 +7,9 @@
  * Every bounded node carries a bounding sphere (a division-free test) and,
  * where it is much tighter, a bounding box; a ray that misses them skips the
  * whole subtree, so a slab minus N cylinders costs O(log N) per ray, not
- * O(N). The rendered objects (scene roots) form one more union.
+ * O(N). Each rendered object (scene root) is a solid of its own: the
+ * objects form a tree of CSG_GROUP nodes, bounded like unions, where the
+ * nearest surface of any object wins instead of a span merge.
  * Modal: compiled per numeric mode. */
 #ifndef GEOM_CSG_H
 #define GEOM_CSG_H
@@ -15,9 +17,10 @@
 #include "util/arena.h"
 
 #define CSG_MAX_NEST 256     /* operator alternations allowed along a path */
+#define CSG_GROUP (CSG_DIFF + 1)   /* compiled only: a set of separate objects */
 
 typedef struct csg_node {
-    int op;                  /* CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF */
+    int op;                  /* CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF, CSG_GROUP */
     int left, right;         /* operator operands (compiled node indices) */
     int prim;                /* leaf: primitive index */
     int bounded;
@@ -50,8 +53,13 @@ void NS(csg_free)(csg *c);
 /* Bytes of arena a thread needs for csg_intersect. */
 size_t NS(csg_arena_bytes)(const csg *c);
 
-/* Nearest surface crossing with 0 < t <= tmax. Returns 1 and *hit, or 0.
- * Temporaries come from ar (released before returning); counters go to st. */
+/* Nearest surface crossing with 0 < t <= tmax over all objects. The far end
+ * shrinks to every hit found, so objects behind it are skipped by their
+ * bounds.
+ * At equal parameters a surface the ray enters wins over one it leaves (a
+ * touching object shows its contact face), then the lower primitive.
+ * Returns 1 and *hit, or 0. Temporaries come from ar (released before
+ * returning); counters go to st. */
 int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
                       arena *ar, geom_stats *st, csg_hit *hit);
 #endif

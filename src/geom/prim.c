@@ -2,15 +2,12 @@
  * docs/primitives.md for the face mappings, docs/numerics.md for ranges). */
 #include "geom/prim.h"
 #include "util/dmath.h"
+#include "util/mem.h"
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* ---- compile (double precision) ------------------------------------- */
-
-/* Rounds a plane coefficient to a 2^-40 grid so that planes computed along
- * different transform paths, equal up to double rounding, become identical
- * in every numeric mode. */
-static double prim_snap(double x) { return nearbyint(x * 1099511627776.0) / 1099511627776.0; }
 
 /* Exact bounding box of a bounded primitive in the normalised world:
  * ellipsoid extents for the sphere, the two end discs for cylinder and
@@ -43,6 +40,15 @@ static void prim_box(prim *p, int kind)
         p->box_d[i] = p->org_d[i] + lo;
         p->box_d[3 + i] = p->org_d[i] + hi;
     }
+}
+
+/* Rounds plane i of p from its double form to num and records the face's
+ * double normal for shading. */
+static void prim_round_plane(prim *p, int i)
+{
+    p->pl[i].n = vec3_from_d(p->pl_d[i]);
+    p->pl[i].d = num_from_d(p->pl_d[i][3]);
+    memcpy(p->pn_d[p->pl[i].face], p->pl_d[i], 3 * sizeof(double));
 }
 
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
@@ -180,24 +186,140 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         p.br = num_from_d(r * (1 + 1e-6) + 1.0 / 16384);
     }
 
-    /* planar faces as world planes rounded once */
+    /* planar faces as world planes in double, rounded once (prim_share may
+     * replace them by a coincident plane of another primitive) */
     p.nplanes = ncp;
     for (i = 0; i < ncp; i++) {
-        double n[3], pt[3], len, dd;
+        double n[3], pt[3], len;
         dmath_m3_tmul_v(p.ainv_d, cp[i].n, n);
         len = dmath_len3(n);
         for (j = 0; j < 3; j++)
-            n[j] = prim_snap(n[j] / len);
+            n[j] /= len;
         dmath_m3_mul_v(p.a_d, cp[i].p, pt);
         for (j = 0; j < 3; j++)
             pt[j] += p.org_d[j];
-        dd = prim_snap(dmath_dot3(n, pt));
-        p.pl[i].n = vec3_from_d(n);
-        p.pl[i].d = num_from_d(dd);
+        memcpy(p.pl_d[i], n, sizeof n);
+        p.pl_d[i][3] = dmath_dot3(n, pt);
         p.pl[i].face = cp[i].face;
-        memcpy(p.pn_d[cp[i].face], n, sizeof n);
+        prim_round_plane(&p, i);
     }
     *out = p;
+    return 0;
+}
+
+/* ---- one representation for coincident geometry --------------------- */
+
+typedef struct prim_pref { double key; int prim, k; } prim_pref;
+
+static int prim_pref_cmp(const void *a, const void *b)
+{
+    const prim_pref *x = a, *y = b;
+    if (x->key != y->key)
+        return x->key < y->key ? -1 : 1;
+    if (x->prim != y->prim)
+        return x->prim - y->prim;
+    return x->k - y->k;
+}
+
+/* The orientation (+1, -1) in which plane q equals plane r within
+ * PRIM_SAME_TOL, or 0. */
+static int prim_plane_same(const double *q, const double *r)
+{
+    int s, j;
+    for (s = 1; s >= -1; s -= 2) {
+        for (j = 0; j < 4 && fabs(q[j] - s * r[j]) <= PRIM_SAME_TOL; j++)
+            ;
+        if (j == 4)
+            return s;
+    }
+    return 0;
+}
+
+/* 1 when b is the same point set as a: b's canonical solid maps onto a's
+ * by a symmetry of the canonical solid (any rotation or reflection for the
+ * sphere; a rotation or reflection about z for cylinder and cone, and for
+ * the cylinder also the flip z -> 1 - z). */
+static int prim_same_solid(const prim *a, const prim *b)
+{
+    double s[9], w[3], t[3], e = PRIM_SAME_TOL;
+    int i, j, k;
+    if (a->kind != b->kind || !a->bounded || a->kind == PRIM_BLOCK
+        || a->cone_a != b->cone_a || a->cone_k != b->cone_k)
+        return 0;
+    for (i = 0; i < 3; i++)                 /* s = a^-1 b, t = a^-1 (org_b - org_a) */
+        for (j = 0; j < 3; j++) {
+            s[3 * i + j] = 0;
+            for (k = 0; k < 3; k++)
+                s[3 * i + j] += a->ainv_d[3 * i + k] * b->a_d[3 * k + j];
+        }
+    dmath_sub3(b->org_d, a->org_d, w);
+    dmath_m3_mul_v(a->ainv_d, w, t);
+    for (i = 0; i < 3; i++)                 /* s orthogonal: s s^T = I */
+        for (j = 0; j < 3; j++) {
+            double dot = s[3 * i] * s[3 * j] + s[3 * i + 1] * s[3 * j + 1] + s[3 * i + 2] * s[3 * j + 2];
+            if (fabs(dot - (i == j)) > e)
+                return 0;
+        }
+    if (a->kind == PRIM_SPHERE)
+        return fabs(t[0]) <= e && fabs(t[1]) <= e && fabs(t[2]) <= e;
+    if (fabs(s[2]) > e || fabs(s[5]) > e || fabs(s[6]) > e || fabs(s[7]) > e
+        || fabs(t[0]) > e || fabs(t[1]) > e)
+        return 0;
+    if (fabs(s[8] - 1) <= e)
+        return fabs(t[2]) <= e;
+    return a->kind == PRIM_CYLINDER && fabs(s[8] + 1) <= e && fabs(t[2] - 1) <= e;
+}
+
+int NS(prim_share)(prim *prims, size_t n, diag *err)
+{
+    prim_pref *pr;
+    size_t np = 0, i, j;
+    int k;
+    for (i = 0; i < n; i++)
+        np += (size_t)prims[i].nplanes;
+    pr = mem_calloc(np ? np : 1, sizeof *pr);
+    if (!pr)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    np = 0;
+    for (i = 0; i < n; i++)
+        for (k = 0; k < prims[i].nplanes; k++) {
+            pr[np].key = fabs(prims[i].pl_d[k][3]);
+            pr[np].prim = (int)i;
+            pr[np++].k = k;
+        }
+    /* planes sorted by |offset|; each takes the nearest earlier plane of
+     * another primitive that it equals within the tolerance, and that one
+     * already holds its group's single representation */
+    qsort(pr, np, sizeof *pr, prim_pref_cmp);
+    for (i = 0; i < np; i++) {
+        double *q = prims[pr[i].prim].pl_d[pr[i].k];
+        for (j = i; j-- > 0 && pr[i].key - pr[j].key <= PRIM_SAME_TOL;) {
+            const double *r = prims[pr[j].prim].pl_d[pr[j].k];
+            int s;
+            if (pr[j].prim == pr[i].prim || !(s = prim_plane_same(q, r)))
+                continue;
+            for (k = 0; k < 4; k++)
+                q[k] = s * r[k];
+            prim_round_plane(&prims[pr[i].prim], pr[i].k);
+            break;
+        }
+    }
+    mem_free(pr);
+    /* identical curved solids: the later one intersects through the
+     * earlier one's data (its own frame still gives (u,v)) */
+    for (i = 1; i < n; i++)
+        for (j = 0; j < i; j++)
+            if (prim_same_solid(&prims[j], &prims[i])) {
+                prim *b = &prims[i];
+                const prim *a = &prims[j];
+                b->bc = a->bc;
+                b->br = a->br;
+                b->org = a->org;
+                b->minv_s = a->minv_s;
+                b->smin = a->smin;
+                b->inv_smin = a->inv_smin;
+                break;
+            }
     return 0;
 }
 

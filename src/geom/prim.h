@@ -47,13 +47,30 @@ typedef struct prim {
     num cone_a, cone_k;/* cone radius at canonical z: a + k z */
     /* double copies for surface evaluation */
     double a_d[9], ainv_d[9], org_d[3], pn_d[6][3];
+    double pl_d[6][4]; /* planes in double (n, d), in pl's order */
 } prim;
+
+/* Two planes, or two placements of one canonical solid, that agree within
+ * this much in the normalised world (unit normals, offsets, transforms) are
+ * taken to be the same: far above double rounding (about 1e-14 here), far
+ * below any resolution a mode could use to tell them apart. */
+#define PRIM_SAME_TOL (1.0 / 1073741824.0)
 
 /* Compiles scene primitive sp (index id) under the normalisation nm.
  * 0 on success; DIAG_INPUT (located at sp->loc in file) for bad dimensions,
  * non-finite or singular transforms, or a primitive outside the range. */
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
                      const char *file, diag *err);
+
+/* Gives coincident geometry of the compiled primitives one representation
+ * (docs/numerics.md, "Coincident surfaces"): every plane equal within
+ * PRIM_SAME_TOL to an earlier one, in either orientation, becomes that
+ * plane or its exact negation, and a sphere, cylinder or cone that is the
+ * same point set as an earlier primitive of its kind (the same solid placed
+ * through an equivalent transform) shares that primitive's curved-face data.
+ * Intersected with one ray they then give bit-identical parameters. 0, or
+ * DIAG_IO when memory runs out. */
+int NS(prim_share)(prim *prims, size_t n, diag *err);
 
 /* Intersects r with p; the bounding test rejects p when it lies wholly
  * outside the parameters [tmin, tmax] (the span itself is not clipped).

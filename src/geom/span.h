@@ -22,8 +22,10 @@ typedef struct span {
 /* Combines the sorted, disjoint, non-touching span lists a (na spans) and b
  * (nb spans) by op (CSG_UNION, CSG_INTER or CSG_DIFF = a minus b) into out,
  * which must hold na + nb spans; returns the number written. The result is
- * sorted, disjoint and non-touching. At equal parameters the end of the
- * lower-numbered primitive is kept, so the result does not depend on the
- * order of union operands. */
+ * sorted, disjoint and non-touching. Regularised: boundaries within the
+ * mode's error bound of the earliest pending one (docs/numerics.md) are
+ * taken as one boundary, so no span thinner than the bound is created or
+ * kept. Of coincident boundaries the end of the lower-numbered primitive
+ * is kept, so the result does not depend on the order of union operands. */
 int NS(span_merge)(int op, const span *a, int na, const span *b, int nb, span *out);
 #endif

@@ -141,7 +141,7 @@ typedef struct scene {
     scene_attr *attrs;   size_t nattrs;
     scene_prim *prims;   size_t nprims;
     scene_node *nodes;   size_t nnodes;
-    int *roots;          size_t nroots;   /* rendered objects (union of all) */
+    int *roots;          size_t nroots;   /* rendered objects, each a solid of its own */
     scene_light *lights; size_t nlights;
     /* Attribute mapping: planar division structures (scene_map.h; each one
      * allocated on its own so that nested PDS references stay valid),

@@ -22,6 +22,7 @@ void render_fb_free(render_fb *fb)
     image_free(&fb->img);
     mem_free(fb->pid);
     fb->pid = NULL;
+    idmap_free(&fb->ids);
 }
 
 /* Adds this thread's fixed-point overflows and HFP exceptions since the
@@ -49,6 +50,7 @@ void render_stats_add(render_stats *a, const render_stats *b)
     a->bound_tests += b->bound_tests;
     a->csg_pruned += b->csg_pruned;
     a->arena_full += b->arena_full;
+    a->range_cut += b->range_cut;
 }
 
 void render_stats_print(FILE *f, const render_stats *st)
@@ -64,6 +66,7 @@ void render_stats_print(FILE *f, const render_stats *st)
         fprintf(f, "hfp.%s=%llu\n", hfp_exc_name[k], st->hfp_exc[k]);
     if (st->arena_full)
         fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
+    fprintf(f, "range.cut=%llu\n", st->range_cut);
 }
 
 int render_region_check(const int region[4], int width, int height)
@@ -121,6 +124,8 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
         status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for the framebuffer");
         goto done;
     }
+    if (opt.ids && (status = idmap_alloc(&out.ids, opt.width, opt.height, err)))
+        goto done;
     for (i = 0; i < nthreads; i++)
         if (ops->thread_new(cs, &tcs[i])) {
             status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for thread contexts");

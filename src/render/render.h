@@ -10,6 +10,7 @@
 #include "image/image.h"
 #include "util/diag.h"
 #include "num/hfp.h"
+#include "render/idmap.h"
 
 #define RENDER_TILE 32        /* tile side in pixels */
 #define RENDER_MAX_AA 16      /* samples per pixel side */
@@ -20,6 +21,9 @@ typedef struct render_stats {
     unsigned long long pds_lookups, fx_overflows;
     unsigned long long hfp_exc[HFP_EXC_N];   /* hfp modes: exceptions by kind (hfp.h) */
     unsigned long long prim_tests, bound_tests, csg_pruned, arena_full;
+    /* primary rays whose first possible surface lies beyond the mode's
+     * range (docs/numerics.md): they show the background */
+    unsigned long long range_cut;
     double time_compile_s, time_render_s;
 } render_stats;
 
@@ -31,6 +35,7 @@ typedef struct render_opts {
      * larger job, e.g. one rank's share); all 0 = the whole image. Pixels
      * outside it are left 0 in the framebuffer (pid 0 too). */
     int region[4];
+    int ids;                  /* also fill render_fb.ids */
     /* Called (serialised) after each finished tile; may be NULL. */
     void (*progress)(void *ctx, long done, long total);
     void *progress_ctx;
@@ -39,6 +44,8 @@ typedef struct render_opts {
 typedef struct render_fb {
     image img;                /* RGB8, top row first */
     int32_t *pid;             /* width*height primitive ids, -1 = background */
+    idmap ids;                /* with render_opts.ids: primitive, face, region
+                                 and distance of the centre sample's hit */
 } render_fb;
 
 /* One numeric mode's implementation (q16_render_ops, ...). Opaque compiled
@@ -52,6 +59,9 @@ typedef struct render_ops {
     void (*thread_free)(void *tc);
     void (*render_tile)(const void *cs, void *tc, const render_opts *o,
                         int x0, int y0, int x1, int y1, render_fb *fb, render_stats *st);
+    /* The region (attribute index) face `face` of primitive prim shows at
+     * (u,v), by the mode's PDS lookup. */
+    int (*region)(const void *cs, void *tc, int prim, int face, double u, double v);
 } render_ops;
 
 extern const render_ops q16_render_ops, q32_render_ops, f32_render_ops, f64_render_ops,

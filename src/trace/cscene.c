@@ -46,9 +46,11 @@ void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world)
         world[i] = cs->nm.scale * deck[i] + cs->nm.off[i];
 }
 
-/* Normalisation: the bounded primitives and the eye are mapped into the cube
- * [-GEOM_W, GEOM_W]^3 by one uniform scale and a translation (docs/numerics.md).
- * Only half-spaces: the eye and the look point set the box. */
+/* Normalisation: the bounded primitives are mapped into the cube
+ * [-GEOM_W, GEOM_W]^3 by one uniform scale and a translation
+ * (docs/numerics.md); the eye may lie anywhere, primary rays start near the
+ * scene (cscene_primary). Only half-spaces: the eye and the look point set
+ * the box. */
 static int cscene_normalise(const scene *sc, geom_norm *nm, diag *err)
 {
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
@@ -60,13 +62,11 @@ static int cscene_normalise(const scene *sc, geom_norm *nm, diag *err)
             cscene_grow_box(&sc->prims[i], lo, hi);
             any = 1;
         }
-    for (j = 0; j < 3; j++) {
+    for (j = 0; j < 3 && !any; j++) {
         if (sc->view.eye[j] < lo[j]) lo[j] = sc->view.eye[j];
         if (sc->view.eye[j] > hi[j]) hi[j] = sc->view.eye[j];
-        if (!any) {
-            if (sc->view.look[j] < lo[j]) lo[j] = sc->view.look[j];
-            if (sc->view.look[j] > hi[j]) hi[j] = sc->view.look[j];
-        }
+        if (sc->view.look[j] < lo[j]) lo[j] = sc->view.look[j];
+        if (sc->view.look[j] > hi[j]) hi[j] = sc->view.look[j];
     }
     for (j = 0; j < 3; j++) {
         if (!isfinite(lo[j]) || !isfinite(hi[j]) || !isfinite(hi[j] - lo[j]))
@@ -114,6 +114,122 @@ static int cscene_maps(const scene *sc, cscene *cs, diag *err)
     return 0;
 }
 
+/* Largest |origin| of a primary ray and largest |offset| of a half-space
+ * plane, in normalised units: with hit points at most GEOM_TMAX further,
+ * every plane and sphere test stays in range (docs/numerics.md, q16:
+ * 16384 + 12000 + 4096 < 32768). Largest aspect ratio of a curved
+ * primitive (measured: q16 overflows from 2.5e4, q32 from 1e10); 0 for no
+ * limit. */
+#if defined(NUM_MODE_q16)
+#define CSCENE_ORIG_MAX 12000.0
+#define CSCENE_ASPECT_MAX 1e4
+#elif defined(NUM_MODE_q32)
+#define CSCENE_ORIG_MAX 268435456.0
+#define CSCENE_ASPECT_MAX 1e8
+#else
+#define CSCENE_ORIG_MAX 268435456.0
+#define CSCENE_ASPECT_MAX 0.0
+#endif
+#define CSCENE_PLANE_MAX (CSCENE_ORIG_MAX + 4096 + 288)
+
+/* Range checks and the data primary rays are started from: the sphere that
+ * holds the bounded primitives and the half-space planes. A curved
+ * primitive too thin for the mode, or a half-space plane the eye could see
+ * beyond the mode's range, is refused (located, the limit named); a
+ * half-space plane beyond the range that the eye is inside is moved to the
+ * range's end, which changes nothing a ray can reach. */
+static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
+{
+    size_t i;
+    int bounded = 0;
+    cs->orig_max = CSCENE_ORIG_MAX;
+    cs->nplanes = 0;
+    cs->advance = 1;
+    for (i = 0; i < cs->nprims; i++) {
+        prim *p = &cs->prims[i];
+        const scene_prim *sp = &sc->prims[i];
+        if (p->bounded) {
+            double aspect = dmath_m3_spectral_norm(p->a_d) * dmath_m3_spectral_norm(p->ainv_d);
+            bounded = 1;
+            if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK && aspect > CSCENE_ASPECT_MAX)
+                return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
+                               "primitive '%s': aspect ratio %.3g is beyond the %s limit of %g "
+                               "(docs/numerics.md); use --numeric q32 or f64",
+                               sp->name, aspect, NUM_NAME, CSCENE_ASPECT_MAX);
+            continue;
+        }
+        if (fabs(p->pl_d[0][3]) > CSCENE_PLANE_MAX) {
+            if (dmath_dot3(p->pl_d[0], cs->eye) > p->pl_d[0][3])
+                return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
+                               "primitive '%s': the half-space's plane lies %.3g scene widths from "
+                               "the scene, beyond the %s range of %.0f (docs/numerics.md); use "
+                               "--numeric q32 or f64", sp->name, fabs(p->pl_d[0][3]) / (2 * GEOM_W),
+                               NUM_NAME, CSCENE_ORIG_MAX / (2 * GEOM_W));
+            p->pl[0].d = num_from_d(p->pl_d[0][3] > 0 ? CSCENE_PLANE_MAX : -CSCENE_PLANE_MAX);
+        }
+        if (cs->nplanes < CSCENE_MAX_PLANES)
+            memcpy(cs->planes[cs->nplanes++], p->pl_d[0], sizeof cs->planes[0]);
+        else
+            cs->advance = 0;
+    }
+    /* the cube [-GEOM_W, GEOM_W]^3 holds every bounded primitive's box */
+    cs->bound_r = bounded ? GEOM_W * sqrt(3.0) * (1 + 1e-9) : 0;
+    for (i = 0; i < cs->nplanes; i++)
+        cs->plane_gap[i] = cs->planes[i][3] - dmath_dot3(cs->planes[i], cs->eye);
+    cs->eye2 = dmath_norm2_3(cs->eye);
+    cs->eye_ok = sqrt(cs->eye2) <= cs->orig_max;
+    if (cs->eye_ok)
+        cs->eye_n = vec3_from_d(cs->eye);
+    return 0;
+}
+
+int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray *r, double *t0)
+{
+    const double margin = 1;
+    double t = HUGE_VAL, o[3];
+    size_t k;
+    int i;
+    if (!cs->advance) {
+        t = after > 0 ? HUGE_VAL : margin;
+    } else {
+        if (cs->bound_r > 0 && after <= 0) {
+            double tc = -dmath_dot3(cs->eye, u), r2 = cs->bound_r * cs->bound_r;
+            double h2 = r2 - (cs->eye2 - tc * tc);
+            if (cs->eye2 <= r2)
+                t = 0;                       /* the eye is inside the sphere */
+            else if (h2 >= 0 && tc > 0)
+                t = tc - sqrt(h2);
+        }
+        for (k = 0; k < cs->nplanes; k++) {
+            double den = dmath_dot3(cs->planes[k], u), th;
+            if (den == 0)
+                continue;
+            th = cs->plane_gap[k] / den;
+            if (th > after && th < t)
+                t = th;
+        }
+    }
+    if (t == HUGE_VAL)
+        return 0;
+    t = t - margin > after ? t - margin : after;
+    *t0 = t;
+    if (t == 0 && cs->eye_ok) {
+        r->o = cs->eye_n;
+    } else {
+        for (i = 0; i < 3; i++)
+            o[i] = cs->eye[i] + t * u[i];
+        if (dmath_len3(o) > cs->orig_max)
+            return -1;
+        r->o = vec3_from_d(o);
+    }
+    r->excl_prim = -1;
+    r->excl_enter = 0;
+    /* u is a unit vector in double: rounding each component keeps it unit
+     * to the mode's resolution, as a normalisation in num would */
+    r->d = vec3_from_d(u);
+    return 1;
+}
+
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
 {
     cscene *cs;
@@ -153,7 +269,10 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     cs->up[2] = cs->right[0] * fwd[1] - cs->right[1] * fwd[0];
     cs->tan_half = tan(dmath_rad(v->fov_deg / 2));
     NS(cscene_to_world)(cs, v->eye, cs->eye);
-    cs->eye_n = vec3_from_d(cs->eye);
+    if (!cscene_finite3(cs->eye)) {
+        diag_at(err, DIAG_INPUT, cscene_file(sc), 0, 0, "view: the eye is too far from the scene");
+        goto fail;
+    }
     cs->max_depth = sc->max_depth < 0 ? 0 : sc->max_depth > CSCENE_MAX_DEPTH ? CSCENE_MAX_DEPTH
                                                                           : sc->max_depth;
     status = DIAG_IO;
@@ -175,6 +294,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, &cs->prims[i], cscene_file(sc), err)))
             goto fail;
     }
+    if ((status = NS(prim_share)(cs->prims, cs->nprims, err)) || (status = cscene_ranges(sc, cs, err)))
+        goto fail;
     for (i = 0; i < sc->nattrs; i++) {
         const scene_attr *a = &sc->attrs[i];
         if (a->texture >= (int)sc->ntextures || a->bump >= (int)sc->nbumps ||

@@ -9,6 +9,7 @@
 #include "pds/pds.h"
 
 #define CSCENE_MAX_DEPTH 32   /* recursion limit applied to scene max_depth */
+#define CSCENE_MAX_PLANES 64  /* half-spaces a primary ray is advanced over */
 
 typedef struct cscene_light {
     vec3 pos;                 /* normalised world */
@@ -24,7 +25,18 @@ typedef struct cscene {
     cscene_light *lights;
     size_t nlights;
     double eye[3], fwd[3], right[3], up[3], tan_half;   /* camera, normalised */
-    vec3 eye_n;
+    /* Primary rays start where something can first be hit (computed in
+     * double, see cscene_primary): the sphere of radius bound_r about the
+     * centre that holds every bounded primitive (0: none), and the planes
+     * of the half-spaces (n, d). orig_max bounds |origin| in this mode. */
+    double bound_r, orig_max;
+    double planes[CSCENE_MAX_PLANES][4];
+    double plane_gap[CSCENE_MAX_PLANES];   /* d - n.eye per plane */
+    size_t nplanes;
+    double eye2;              /* |eye|^2 */
+    vec3 eye_n;               /* the eye in num, when it is in range */
+    int eye_ok;
+    int advance;              /* 0: more half-spaces than CSCENE_MAX_PLANES */
     int max_depth;
     /* Attribute mapping: maps[i] is scene map i compiled for this mode, or
      * NULL when no face is bound to it (nothing is compiled that no ray can
@@ -40,6 +52,14 @@ typedef struct cscene {
  * memory runs out. */
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err);
 void NS(cscene_free)(cscene *cs);
+/* The primary ray from the eye along unit direction u (normalised world,
+ * double), started at the first parameter t >= after where a surface can
+ * lie (the bounding sphere or a half-space plane, less a margin), so that
+ * far eyes and narrow lenses keep the accuracy of double. 1 and *r, or 0
+ * when nothing remains to be hit beyond `after`; *t0 gets the start (the
+ * next call's `after` when the ray found nothing). -1: the start lies
+ * beyond the mode's range (the hit could not be represented). */
+int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray *r, double *t0);
 /* Maps a deck point to the normalised world (double). */
 void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world);
 #endif

@@ -1,8 +1,10 @@
 /* render_ops — this numeric mode's entry points for the render driver
  * (render.h): compile, per-thread contexts, and one tile of primary rays. */
 #include "trace/trace.h"
+#include "util/dmath.h"
 #include "util/mem.h"
 #include <math.h>
+#include <string.h>
 
 static int render_ops_compile(const scene *sc, void **cs, diag *err)
 {
@@ -43,9 +45,37 @@ static unsigned char render_ops_byte(double c)
     return (unsigned char)(c * 255 + 0.5);
 }
 
+/* The identity of primary ray r's hit (started t0 from the eye): its
+ * primitive, face, region and distance in deck units. */
+static void render_ops_ids(const cscene *cs, trace_ctx *tc, const prim_ray *r, double t0, idmap_px *out)
+{
+    csg_hit h;
+    geom_surface sf;
+    if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h))
+        return;
+    NS(prim_surface)(&cs->prims[h.prim], h.face, vec3_madd(r->o, h.t, r->d), &sf);
+    out->prim = h.prim;
+    out->face = h.face;
+    out->region = (int32_t)(NS(trace_attribute)(cs, tc, h.prim, h.face, &sf) - cs->sc->attrs);
+    out->t = (t0 + num_to_d(h.t)) / cs->nm.scale;
+}
+
+static int render_ops_region(const void *vcs, void *vtc, int prim, int face, double u, double v)
+{
+    const cscene *cs = vcs;
+    geom_surface sf;
+    memset(&sf, 0, sizeof sf);
+    sf.u = u;
+    sf.v = v;
+    if (prim < 0 || (size_t)prim >= cs->nprims)
+        return -1;
+    return (int)(NS(trace_attribute)(cs, vtc, prim, face, &sf) - cs->sc->attrs);
+}
+
 /* Pixel centres at (x + (i+1/2)/aa, y + (j+1/2)/aa); the PID is the one seen
- * by the sample nearest the pixel centre. Directions are set up in double
- * and normalised in num. */
+ * by the sample nearest the pixel centre. Directions are set up in double,
+ * the ray's start too (cscene_primary), and the direction is normalised in
+ * num. */
 static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                             int x0, int y0, int x1, int y1, render_fb *fb, render_stats *st)
 {
@@ -64,18 +94,29 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                 for (i = 0; i < aa; i++) {
                     double sx = (2 * (x + (i + 0.5) / aa) / o->width - 1) * cs->tan_half * aspect;
                     double sy = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
-                    double dd[3], rgb[3];
+                    double dd[3], u[3], rgb[3], after = 0, t0;
                     prim_ray r;
-                    int p;
+                    int p = -1, st1;
+                    size_t tries;
                     for (k = 0; k < 3; k++)
                         dd[k] = cs->fwd[k] + sx * cs->right[k] + sy * cs->up[k];
-                    r.o = cs->eye_n;
-                    r.excl_prim = -1;
-                    r.excl_enter = 0;
-                    if (vec3_normalize(vec3_from_d(dd), &r.d, NULL))
+                    if (dmath_unit3(dd, u))
                         continue;
                     tc->rs.rays_primary++;
-                    NS(trace_ray)(cs, tc, &r, 0, 1.0, rgb, &p);
+                    for (k = 0; k < 3; k++)
+                        rgb[k] = cs->sc->background[k];
+                    /* started where a surface can first lie; when nothing is
+                     * hit in range, again from the next half-space plane */
+                    for (tries = 0; tries <= cs->nplanes && p < 0; tries++) {
+                        if ((st1 = NS(cscene_primary)(cs, u, after, &r, &t0)) <= 0) {
+                            tc->rs.range_cut += st1 < 0;
+                            break;
+                        }
+                        NS(trace_ray)(cs, tc, &r, 0, 1.0, rgb, &p);
+                        after = t0 + GEOM_TMAX - 2;
+                    }
+                    if (i == mid && j == mid && fb->ids.px && p >= 0)
+                        render_ops_ids(cs, tc, &r, t0, &fb->ids.px[(size_t)y * (size_t)o->width + (size_t)x]);
                     for (k = 0; k < 3; k++)
                         sum[k] += rgb[k];
                     if (i == mid && j == mid)
@@ -94,6 +135,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     st->bound_tests += tc->gs.bound_tests;
     st->csg_pruned += tc->gs.pruned;
     st->arena_full += tc->gs.arena_full;
+    st->range_cut += tc->rs.range_cut;
 }
 
 const render_ops NS(render_ops) = {
@@ -103,4 +145,5 @@ const render_ops NS(render_ops) = {
     .thread_new = render_ops_thread_new,
     .thread_free = render_ops_thread_free,
     .render_tile = render_ops_tile,
+    .region = render_ops_region,
 };

@@ -27,7 +27,7 @@ void NS(trace_ctx_free)(trace_ctx *tc) { arena_free(&tc->ar); }
  * surface point sf. The PDS bound to the face (FACE statement) names the
  * region's attribute; where it has no region (PDS_NONE), or the face has no
  * PDS, the primitive's plain attribute applies. */
-static const scene_attr *trace_attribute(const cscene *cs, trace_ctx *tc, int pi, int face,
+const scene_attr *NS(trace_attribute)(const cscene *cs, trace_ctx *tc, int pi, int face,
                                          const geom_surface *sf)
 {
     const scene *sc = cs->sc;
@@ -84,7 +84,7 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         p = vec3_madd(p, h.t, l);
         dist = num_sub(dist, h.t);
         NS(prim_surface)(&cs->prims[h.prim], h.face, p, &sf);
-        at = trace_attribute(cs, tc, h.prim, h.face, &sf);
+        at = NS(trace_attribute)(cs, tc, h.prim, h.face, &sf);
         pass *= at->transmit;
         if (pass <= TRACE_MIN_WEIGHT)
             return 0;
@@ -122,7 +122,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     /* Step 2: (x,y,z) -> face parameters (u,v) and the tangent frame. */
     NS(prim_surface)(&cs->prims[h.prim], h.face, p, &sf);
     /* Step 3: the region of (u,v) in the face's PDS and its attribute. */
-    at = trace_attribute(cs, tc, h.prim, h.face, &sf);
+    at = NS(trace_attribute)(cs, tc, h.prim, h.face, &sf);
 
     /* The ray meets the surface from the side d points away from; `inside`
      * says it travelled inside the solid (it leaves it here), which selects

@@ -17,6 +17,12 @@ typedef struct trace_ctx {
 int NS(trace_ctx_init)(const cscene *cs, trace_ctx *tc);
 void NS(trace_ctx_free)(trace_ctx *tc);
 
+/* Algorithm 1, step 3: the attribute of face `face` of primitive pi at the
+ * surface point sf (its u, v): the region's attribute from the face's PDS,
+ * else the primitive's own. */
+const scene_attr *NS(trace_attribute)(const cscene *cs, trace_ctx *tc, int pi, int face,
+                                      const geom_surface *sf);
+
 /* Shades ray r (a primary ray: depth 0, weight 1) into rgb (linear, not
  * clamped); *pid receives the primitive hit (-1 for the background). */
 void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,

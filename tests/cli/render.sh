@@ -49,5 +49,22 @@ mkfifo "$tmp/fifo" && mkdir "$tmp/dir"
 $MAPRT render scenes/csg.scene -o "$tmp/fifo" --size 8x8 2> "$tmp/err"; [ $? -eq 3 ] || fail "FIFO output should exit 3"
 grep -q "not a regular file" "$tmp/err" && [ -p "$tmp/fifo" ] || fail "FIFO replaced: $(cat "$tmp/err")"
 $MAPRT render scenes/csg.scene -o "$tmp/dir" --size 8x8 2> /dev/null; [ $? -eq 3 ] && [ -d "$tmp/dir" ] || fail "directory output should exit 3"
+# --ids: the identity map, 16 + 24 bytes a pixel (docs/idmap.md), alone or
+# with a PNG; a precision event is reported on stderr without --stats; a
+# primitive beyond the mode's limits is refused before rendering.
+$MAPRT render scenes/csg.scene --ids "$tmp/c.ids" --size 10x7 2> "$tmp/err" || fail "--ids failed"
+[ "$(wc -c < "$tmp/c.ids")" -eq $((16 + 24 * 70)) ] || fail "--ids size"
+[ "$(head -c 8 "$tmp/c.ids")" = MAPRTID1 ] || fail "--ids magic"
+[ -s "$tmp/err" ] && fail "a clean render printed: $(cat "$tmp/err")"
+$MAPRT render tests/decks/deep-floor.scene -o "$tmp/d.png" --size 32x32 2> "$tmp/err" || fail "deep floor failed"
+[ "$(wc -l < "$tmp/err")" -eq 1 ] && grep -q "^maprt: tests/decks/deep-floor.scene: warning: q16: 0 fixed-point overflows, [1-9][0-9]* primary rays beyond" "$tmp/err" \
+  || fail "range warning: $(cat "$tmp/err")"
+$MAPRT render tests/decks/deep-floor.scene -o "$tmp/d.png" --size 32x32 --numeric q32 2> "$tmp/err" || fail "deep floor q32 failed"
+[ -s "$tmp/err" ] && fail "q32 deep floor printed: $(cat "$tmp/err")"
+$MAPRT render tests/decks/thin-disc.scene -o "$tmp/t.png" --size 16x16 2> "$tmp/err"; [ $? -eq 1 ] || fail "thin disc should exit 1 in q16"
+grep -q "^maprt: tests/decks/thin-disc.scene:9:1: error: primitive 'COIN': aspect ratio 5e+04 is beyond the q16 limit of 10000 (docs/numerics.md); use --numeric q32 or f64$" "$tmp/err" \
+  || fail "thin disc message: $(cat "$tmp/err")"
+[ -e "$tmp/t.png" ] && fail "output written for a refused scene"
+$MAPRT render tests/decks/thin-disc.scene -o "$tmp/t.png" --size 16x16 --numeric f64 || fail "thin disc f64 failed"
 ls "$tmp" | grep -q tmp- && fail "temporary file left behind"
 exit 0

@@ -9,11 +9,11 @@
 ! stdout, one line per ray: "hit t0 t1" (parameters along the unit direction,
 ! +-1e30 for an unbounded end) or "miss".
 program geom_oracle
+  use oracle_math
   implicit none
-  integer, parameter :: qp = selected_real_kind(30)
   real(qp), parameter :: big = 1.0e30_qp
   real(qp) :: dim(3), m(3,4), o(3), d(3), a(3,3), inv(3,3), q(3), e(3), w(3)
-  real(qp) :: t0, t1, len, det
+  real(qp) :: t0, t1, len
   integer :: kind, ios, i
   logical :: hit
 
@@ -21,7 +21,7 @@ program geom_oracle
     read (*, *, iostat=ios) kind, dim, (m(i, 1), m(i, 2), m(i, 3), m(i, 4), i = 1, 3), o, d
     if (ios /= 0) exit
     a = m(:, 1:3)
-    call inverse3(a, inv, det)
+    call inverse3(a, inv)
     len = sqrt(sum(d * d))
     d = d / len
     w = o - m(:, 4)
@@ -56,22 +56,6 @@ program geom_oracle
   end do
 
 contains
-
-  subroutine inverse3(a, inv, det)
-    real(qp), intent(in) :: a(3,3)
-    real(qp), intent(out) :: inv(3,3), det
-    inv(1,1) = a(2,2)*a(3,3) - a(2,3)*a(3,2)
-    inv(1,2) = a(1,3)*a(3,2) - a(1,2)*a(3,3)
-    inv(1,3) = a(1,2)*a(2,3) - a(1,3)*a(2,2)
-    inv(2,1) = a(2,3)*a(3,1) - a(2,1)*a(3,3)
-    inv(2,2) = a(1,1)*a(3,3) - a(1,3)*a(3,1)
-    inv(2,3) = a(1,3)*a(2,1) - a(1,1)*a(2,3)
-    inv(3,1) = a(2,1)*a(3,2) - a(2,2)*a(3,1)
-    inv(3,2) = a(1,2)*a(3,1) - a(1,1)*a(3,2)
-    inv(3,3) = a(1,1)*a(2,2) - a(1,2)*a(2,1)
-    det = a(1,1)*inv(1,1) + a(1,2)*inv(2,1) + a(1,3)*inv(3,1)
-    inv = inv / det
-  end subroutine
 
   ! Clips [t0,t1] to lo <= p + t v <= hi.
   subroutine slab(p, v, lo, hi, t0, t1, hit)

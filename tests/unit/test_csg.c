@@ -17,15 +17,6 @@
 static const char *const csg_solids[] = {
     "SPHERE %s 1.3", "CYLINDER %s 0.9 2.1", "BLOCK %s 1.7 1.1 2.3", "CONE %s 1.2 0.4 1.9"};
 
-static int csg_find_prim(const scene *sc, const char *name)
-{
-    size_t i;
-    for (i = 0; i < sc->nprims; i++)
-        if (!strcmp(sc->prims[i].name, name))
-            return (int)i;
-    return -1;
-}
-
 static void csg_random_ray(uint64_t *s, double *o, double *d)
 {
     double l = 0;
@@ -138,7 +129,7 @@ static int csg_rtree_at(const scene *sc, const csg_rtree *t, int np, const doubl
         const scene_prim *sp;
         double sd;
         snprintf(nm, sizeof nm, "P%d", i);
-        sp = &sc->prims[csg_find_prim(sc, nm)];
+        sp = &sc->prims[tt_find_prim(sc, nm)];
         tt_to_object(sp, p, q);
         sd = tt_sdf(sp, q);
         in[i] = sd < 0;
@@ -279,9 +270,9 @@ static long csg_coincident_wrong(const render_ops *mode, long *counted)
     long wrong = 0;
     double th = tan(10 * 3.14159265358979323846 / 180), m = 0.01;
     assert_non_null(sc);
-    plate = csg_find_prim(sc, "PLATE");
-    plug = csg_find_prim(sc, "PLUG");
-    ground = csg_find_prim(sc, "GROUND");
+    plate = tt_find_prim(sc, "PLATE");
+    plug = tt_find_prim(sc, "PLUG");
+    ground = tt_find_prim(sc, "GROUND");
     memset(&o, 0, sizeof o);
     o.width = o.height = W;
     o.threads = 1;
@@ -339,8 +330,8 @@ static void test_csg_coincident_oblique_rays(void **state)
     int m, k, plate, plug;
     (void)state;
     assert_non_null(sc);
-    plate = csg_find_prim(sc, "PLATE");
-    plug = csg_find_prim(sc, "PLUG");
+    plate = tt_find_prim(sc, "PLATE");
+    plug = tt_find_prim(sc, "PLUG");
     for (m = 0; m < TT_MODES; m++) {
         const probe_ops *ops = tt_mode(m);
         void *cs;

@@ -28,34 +28,6 @@ static scene *render_load(const char *path)
     return sc;
 }
 
-static render_opts render_default(int w, int h, int threads)
-{
-    render_opts o;
-    memset(&o, 0, sizeof o);
-    o.width = w;
-    o.height = h;
-    o.threads = threads;
-    o.aa = 1;
-    return o;
-}
-
-/* Pixels where some channel differs by more than tol. */
-static long render_diff(const image *a, const image *b, int tol)
-{
-    long n = 0;
-    size_t i, k;
-    assert_int_equal(a->width, b->width);
-    assert_int_equal(a->height, b->height);
-    for (i = 0; i < (size_t)a->width * (size_t)a->height; i++) {
-        int big = 0;
-        for (k = 0; k < 3; k++)
-            if (abs((int)a->px[3 * i + k] - (int)b->px[3 * i + k]) > tol)
-                big = 1;
-        n += big;
-    }
-    return n;
-}
-
 static void test_render_goldens(void **state)
 {
     static const char *const scenes[] = {"fig1", "csg", "coincident"};
@@ -69,7 +41,7 @@ static void test_render_goldens(void **state)
             image gold;
             render_fb fb;
             render_stats st;
-            render_opts o = render_default(128, 128, 1);
+            render_opts o = tt_render_opts(128, 128, 1);
             diag err;
             long bad;
             snprintf(path, sizeof path, "scenes/%s.scene", scenes[s]);
@@ -78,7 +50,7 @@ static void test_render_goldens(void **state)
             snprintf(path, sizeof path, "tests/golden/%s-%s.png", scenes[s], modes[m]);
             assert_int_equal(image_read_png(path, 3, &gold, &err), 0);
             assert_int_equal(render_scene(sc, render_ops_find(modes[m]), &o, &fb, &st, &err), 0);
-            bad = render_diff(&fb.img, &gold, 2);
+            bad = tt_image_over(&fb.img, &gold, 2);
             printf("# %s: %ld of %d pixels differ by more than 2/255\n", path, bad, 128 * 128);
             assert_true(bad <= 128 * 128 / 200);
             image_free(&gold);
@@ -92,7 +64,7 @@ static void test_render_counts_and_threads(void **state)
     scene *sc = render_load("scenes/fig1.scene");
     render_fb a, b;
     render_stats sa, sb;
-    render_opts o = render_default(70, 50, 1);
+    render_opts o = tt_render_opts(70, 50, 1);
     diag err;
     int i;
     (void)state;
@@ -105,7 +77,7 @@ static void test_render_counts_and_threads(void **state)
     assert_true(sa.rays_shadow > 0 && sa.rays_reflected > 0);
     assert_true(sa.rays_shadow == sb.rays_shadow && sa.rays_reflected == sb.rays_reflected);
     assert_true(sa.fx_overflows == 0);
-    assert_int_equal(render_diff(&a.img, &b.img, 0), 0);
+    assert_int_equal(tt_image_over(&a.img, &b.img, 0), 0);
     for (i = 0; i < 70 * 50; i++) {
         assert_int_equal(a.pid[i], b.pid[i]);
         assert_true(a.pid[i] >= -1 && a.pid[i] < (int)sc->nprims);
@@ -144,7 +116,7 @@ static void test_render_scale_independent(void **state)
         scene *sc = render_load("scenes/csg.scene");
         render_fb ref;
         render_stats st;
-        render_opts o = render_default(96, 96, 1);
+        render_opts o = tt_render_opts(96, 96, 1);
         diag err;
         diag_init(&err);
         assert_int_equal(render_scene(sc, modes[m], &o, &ref, &st, &err), 0);
@@ -155,7 +127,7 @@ static void test_render_scale_independent(void **state)
             sc = render_load("scenes/csg.scene");
             render_scale_scene(sc, scales[i]);
             assert_int_equal(render_scene(sc, modes[m], &o, &fb, &st, &err), 0);
-            bad = render_diff(&fb.img, &ref.img, 8);
+            bad = tt_image_over(&fb.img, &ref.img, 8);
             printf("# %s scale %g: %ld pixels differ by more than 8/255\n", modes[m]->name, scales[i], bad);
             assert_true(bad <= 96 * 96 / 1000);
             render_fb_free(&fb);
@@ -171,14 +143,14 @@ static void test_render_glass_modes_agree(void **state)
     scene *sc = render_load("bench/glass.scene");
     render_fb a, b;
     render_stats sa, sb;
-    render_opts o = render_default(96, 72, 1);
+    render_opts o = tt_render_opts(96, 72, 1);
     diag err;
     long bad;
     (void)state;
     diag_init(&err);
     assert_int_equal(render_scene(sc, &q16_render_ops, &o, &a, &sa, &err), 0);
     assert_int_equal(render_scene(sc, &f64_render_ops, &o, &b, &sb, &err), 0);
-    bad = render_diff(&a.img, &b.img, 8);
+    bad = tt_image_over(&a.img, &b.img, 8);
     printf("# glass: %llu refracted, %llu reflected rays; %ld pixels differ by more than 8/255\n",
            sa.rays_refracted, sa.rays_reflected, bad);
     assert_true(sa.rays_refracted > 1000 && sb.rays_refracted > 1000);
@@ -205,7 +177,7 @@ static void test_render_bad_view(void **state)
     scene *sc = render_load("scenes/fig1.scene");
     render_fb fb;
     render_stats st;
-    render_opts o = render_default(8, 8, 1);
+    render_opts o = tt_render_opts(8, 8, 1);
     diag err;
     char buf[256];
     (void)state;
@@ -222,7 +194,7 @@ static void test_render_bad_view(void **state)
 static void test_render_oom_sweep(void **state)
 {
     scene *sc = render_load("scenes/csg.scene");
-    render_opts o = render_default(40, 30, 2);
+    render_opts o = tt_render_opts(40, 30, 2);
     long n;
     (void)state;
     for (n = 0; n < 1000; n++) {

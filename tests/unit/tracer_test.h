@@ -3,10 +3,13 @@
  * similarity transforms, an independent point classification in double. */
 #ifndef TRACER_TEST_H
 #define TRACER_TEST_H
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "scene/scene_parse.h"
+#include "cli/cli_scene.h"
 #include "trace/probe.h"
 #include "render/render.h"
 #include "util/recsrc.h"
@@ -37,6 +40,62 @@ static inline scene *tt_parse(const char *text)
         return NULL;
     }
     return s;
+}
+
+/* Reads a deck file as the CLI does (images beside it); fails the test on
+ * error. */
+static inline scene *tt_load(const char *path)
+{
+    cli_files f;
+    scene *sc = NULL;
+    diag err;
+    diag_init(&err);
+    if (cli_files_init(&f, &err) == 0) {
+        if (cli_scene_load(&f, path, &sc, &err))
+            diag_print(stderr, &err);
+        cli_files_free(&f);
+    }
+    return sc;
+}
+
+/* Render options: w x h pixels, one sample each, on `threads` threads. */
+static inline render_opts tt_render_opts(int w, int h, int threads)
+{
+    render_opts o;
+    memset(&o, 0, sizeof o);
+    o.width = w;
+    o.height = h;
+    o.threads = threads;
+    o.aa = 1;
+    return o;
+}
+
+/* Index of the primitive named name in sc, -1 if none. */
+static inline int tt_find_prim(const scene *sc, const char *name)
+{
+    size_t i;
+    for (i = 0; i < sc->nprims; i++)
+        if (!strcmp(sc->prims[i].name, name))
+            return (int)i;
+    return -1;
+}
+
+/* Pixels of two images where some channel differs by more than tol;
+ * LONG_MAX when their sizes differ. */
+static inline long tt_image_over(const image *a, const image *b, int tol)
+{
+    long n = 0;
+    size_t i, k;
+    if (a->width != b->width || a->height != b->height)
+        return LONG_MAX;
+    for (i = 0; i < (size_t)a->width * (size_t)a->height; i++) {
+        int big = 0;
+        for (k = 0; k < 3; k++)
+            if (abs((int)a->px[3 * i + k] - (int)b->px[3 * i + k]) > tol)
+                big = 1;
+        n += big;
+    }
+    return n;
 }
 
 /* Object coordinates of world point p for primitive sp (double inverse). */
