@@ -10,7 +10,7 @@
 #include "cli/cli.h"
 #include "cli/cli_scene.h"
 #include "image/image_diff.h"
-#include "render/idcheck.h"
+#include "cli/cli_idcheck.h"
 #include "render/render.h"
 #include "util/mem.h"
 #include "util/outfile.h"
@@ -277,11 +277,11 @@ static int bench_one(const scene *sc, const render_ops *ops, const render_opts *
     render_fb_free(&fb);
     if (orc) {
         render_opts oi = *o;
-        idcheck_stats cs;
+        cli_idcheck_stats cs;
         oi.ids = 1;
         if (render_scene(sc, ops, &oi, &fb, &st, err))
             return err->status;
-        idcheck_compare(&fb.ids, orc, &cs);
+        cli_idcheck_compare(&fb.ids, orc, &cs);
         render_fb_free(&fb);
         r->has_ids = 1;
         r->id_compared = cs.compared;
@@ -381,7 +381,7 @@ int cmd_bench(int argc, char **argv)
             break;
         }
         if (oracle) {
-            if ((status = idcheck_oracle(oracle, sc, ref.img.width, ref.img.height, &orc, &err)) != 0) {
+            if ((status = cli_idcheck_oracle(oracle, sc, ref.img.width, ref.img.height, &orc, &err)) != 0) {
                 diag_print(stderr, &err);
                 render_fb_free(&ref);
                 scene_free(sc);

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 #include "tracer_test.h"
-#include "render/idcheck.h"
+#include "cli/cli_idcheck.h"
 #include "util/outfile.h"
 
 static char ids_oracle_path[1024];
@@ -44,17 +44,17 @@ static void test_ids_against_oracle(void **state)
         diag err;
         assert_non_null(sc);
         diag_init(&err);
-        if (idcheck_oracle(ids_oracle_path, sc, W, W, &orc, &err))
+        if (cli_idcheck_oracle(ids_oracle_path, sc, W, W, &orc, &err))
             diag_print(stderr, &err);
         assert_int_equal(err.status, 0);
         for (m = 0; m < 4; m++) {
             render_opts o = tt_render_opts(W, W, 2);
             render_fb fb;
             render_stats st;
-            idcheck_stats cs;
+            cli_idcheck_stats cs;
             o.ids = 1;
             assert_int_equal(render_scene(sc, ids_mode(m), &o, &fb, &st, &err), 0);
-            idcheck_compare(&fb.ids, &orc, &cs);
+            cli_idcheck_compare(&fb.ids, &orc, &cs);
             printf("# %s %s: %ld of %ld pixels differ (%ld flagged), hit error median %.3g max %.3g\n",
                    decks[d], ids_mode(m)->name, cs.mismatches, cs.compared, cs.flagged, cs.err_median,
                    cs.err_max);

@@ -1,5 +1,5 @@
-/* idcheck — the oracle run and the comparison (see idcheck.h). */
-#include "render/idcheck.h"
+/* cli_idcheck — the oracle run and the comparison (see idcheck.h). */
+#include "cli/cli_idcheck.h"
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <errno.h>
@@ -14,7 +14,7 @@
 
 /* A length scale of the scene: the largest reach of a bounded primitive's
  * placement (translation plus its size through the matrix). */
-static double idcheck_scale(const scene *sc)
+static double cli_idcheck_scale(const scene *sc)
 {
     double s = 0;
     size_t i;
@@ -38,12 +38,12 @@ static double idcheck_scale(const scene *sc)
     return s > 0 ? s : 1;
 }
 
-static int idcheck_write_input(FILE *f, const scene *sc, int w, int h)
+static int cli_idcheck_write_input(FILE *f, const scene *sc, int w, int h)
 {
     const scene_view *v = &sc->view;
     size_t i;
     int k;
-    fprintf(f, "%d %d %.17g\n", w, h, idcheck_scale(sc));
+    fprintf(f, "%d %d %.17g\n", w, h, cli_idcheck_scale(sc));
     fprintf(f, "%.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", v->eye[0], v->eye[1],
             v->eye[2], v->look[0], v->look[1], v->look[2], v->up[0], v->up[1], v->up[2], v->fov_deg);
     fprintf(f, "%lu %lu %lu\n", (unsigned long)sc->nprims, (unsigned long)sc->nnodes,
@@ -64,7 +64,7 @@ static int idcheck_write_input(FILE *f, const scene *sc, int w, int h)
 }
 
 /* Runs path IN OUT without a shell; 0 when it exits with status 0. */
-static int idcheck_run(const char *path, const char *in, const char *out)
+static int cli_idcheck_run(const char *path, const char *in, const char *out)
 {
     pid_t pid = fork();
     int status;
@@ -85,12 +85,12 @@ static int idcheck_run(const char *path, const char *in, const char *out)
     return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
-static int32_t idcheck_i32(const unsigned char *b)
+static int32_t cli_idcheck_i32(const unsigned char *b)
 {
     return (int32_t)((uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24);
 }
 
-static double idcheck_f64(const unsigned char *b)
+static double cli_idcheck_f64(const unsigned char *b)
 {
     uint64_t bits = 0;
     double d;
@@ -101,7 +101,7 @@ static double idcheck_f64(const unsigned char *b)
     return d;
 }
 
-int idcheck_oracle(const char *oracle, const scene *sc, int w, int h, idmap *out, diag *err)
+int cli_idcheck_oracle(const char *oracle, const scene *sc, int w, int h, idmap *out, diag *err)
 {
     char in[64], outp[64], *data = NULL;
     const char *tmpdir = getenv("TMPDIR");
@@ -122,7 +122,7 @@ int idcheck_oracle(const char *oracle, const scene *sc, int w, int h, idmap *out
         remove(in);
         return diag_at(err, DIAG_IO, "ids oracle", 0, 0, "cannot create a temporary file");
     }
-    if (idcheck_write_input(f, sc, w, h) | fclose(f)) {
+    if (cli_idcheck_write_input(f, sc, w, h) | fclose(f)) {
         remove(in);
         return diag_at(err, DIAG_IO, "ids oracle", 0, 0, "cannot write the oracle's input");
     }
@@ -131,7 +131,7 @@ int idcheck_oracle(const char *oracle, const scene *sc, int w, int h, idmap *out
         return diag_at(err, DIAG_IO, "ids oracle", 0, 0, "cannot create a temporary file");
     }
     close(fd);
-    if (idcheck_run(oracle, in, outp)) {
+    if (cli_idcheck_run(oracle, in, outp)) {
         st = diag_at(err, DIAG_IO, oracle, 0, 0, "the REAL(16) oracle failed or is not installed");
         goto done;
     }
@@ -151,17 +151,17 @@ int idcheck_oracle(const char *oracle, const scene *sc, int w, int h, idmap *out
     for (i = 0; i < n; i++) {
         const unsigned char *r = (const unsigned char *)data + IDCHECK_REC * i;
         idmap_px *p = &m.px[i];
-        p->prim = idcheck_i32(r);
-        p->face = idcheck_i32(r + 4);
-        p->flags = idcheck_i32(r + 8);
-        p->t = idcheck_f64(r + 12);
+        p->prim = cli_idcheck_i32(r);
+        p->face = cli_idcheck_i32(r + 4);
+        p->flags = cli_idcheck_i32(r + 8);
+        p->t = cli_idcheck_f64(r + 12);
         if (p->prim >= (int32_t)sc->nprims) {
             st = diag_offset(err, DIAG_IO, oracle, (long long)(IDCHECK_REC * i), "primitive out of range");
             goto done;
         }
         if (p->prim >= 0)
-            p->region = f64_render_ops.region(cs, tc, p->prim, p->face, idcheck_f64(r + 20),
-                                              idcheck_f64(r + 28));
+            p->region = f64_render_ops.region(cs, tc, p->prim, p->face, cli_idcheck_f64(r + 20),
+                                              cli_idcheck_f64(r + 28));
     }
     *out = m;
     m.px = NULL;
@@ -177,13 +177,13 @@ done:
     return st;
 }
 
-static int idcheck_dcmp(const void *a, const void *b)
+static int cli_idcheck_dcmp(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return x < y ? -1 : x > y;
 }
 
-void idcheck_compare(const idmap *mode, const idmap *oracle, idcheck_stats *st)
+void cli_idcheck_compare(const idmap *mode, const idmap *oracle, cli_idcheck_stats *st)
 {
     size_t i, n = (size_t)mode->width * (size_t)mode->height;
     double *e = mem_calloc(n ? n : 1, sizeof *e);
@@ -204,7 +204,7 @@ void idcheck_compare(const idmap *mode, const idmap *oracle, idcheck_stats *st)
             e[st->hits++] = fabs(a->t - b->t);
     }
     if (st->hits && e) {
-        qsort(e, (size_t)st->hits, sizeof *e, idcheck_dcmp);
+        qsort(e, (size_t)st->hits, sizeof *e, cli_idcheck_dcmp);
         st->err_median = e[st->hits / 2];
         st->err_max = e[st->hits - 1];
     }
