@@ -1,4 +1,4 @@
-/* cli_idcheck — the oracle run and the comparison (see idcheck.h). */
+/* cli_idcheck — the oracle run and the comparison (see cli_idcheck.h). */
 #include "cli/cli_idcheck.h"
 #include "util/mem.h"
 #include "util/outfile.h"
