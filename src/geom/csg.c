@@ -390,7 +390,7 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
         /* leaves test their own sphere in prim_intersect; tc comes from here */
         q->st->bound_tests++;
         if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)
-            || vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, tc, lo, hi)) {
+            || vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, &q->r->rcp, tc, lo, hi)) {
             q->st->pruned++;
             return 0;
         }

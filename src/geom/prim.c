@@ -203,28 +203,36 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
 
 /* ---- intersection (num) -------------------------------------------- */
 
-/* Intersects the span s with the half-spaces of p's planes. 0 if empty. */
+/* Intersects the span s with the half-spaces of p's planes. 0 if empty.
+ * The entry and exit candidates are kept as fractions (positive
+ * denominators) and compared by cross products, so only the two winners
+ * are divided; an entry at or beyond the exit ends the test early. */
 static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
 {
     const num big = num_from_i(GEOM_TBIG);
-    int k;
+    num an = NUM_ZERO, ad = NUM_ZERO, bn = NUM_ZERO, bd = NUM_ZERO, t;
+    int af = PRIM_FACE_NONE, bf = PRIM_FACE_NONE, k;
     for (k = 0; k < p->nplanes; k++) {
         const prim_plane *pl = &p->pl[k];
         num den = vec3_dot(pl->n, r->d);
         num nm = num_sub(pl->d, vec3_dot(pl->n, r->o));
-        num t;
         if (den == NUM_ZERO) {
             if (nm < NUM_ZERO)
                 return 0;
             continue;
         }
-        t = num_div_clamp(nm, den, big);
         if (den < NUM_ZERO) {
-            if (t > s->a.t) { s->a.t = t; s->a.face = pl->face; }
-        } else {
-            if (t < s->b.t) { s->b.t = t; s->b.face = pl->face; }
+            nm = num_neg(nm);
+            den = num_neg(den);
+            if (ad == NUM_ZERO || num_frac_gt(nm, den, an, ad)) { an = nm; ad = den; af = pl->face; }
+        } else if (bd == NUM_ZERO || num_frac_gt(bn, bd, nm, den)) {
+            bn = nm; bd = den; bf = pl->face;
         }
+        if (ad != NUM_ZERO && bd != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
+            return 0;
     }
+    if (ad != NUM_ZERO && (t = num_div_clamp(an, ad, big)) > s->a.t) { s->a.t = t; s->a.face = af; }
+    if (bd != NUM_ZERO && (t = num_div_clamp(bn, bd, big)) < s->b.t) { s->b.t = t; s->b.face = bf; }
     return s->a.t < s->b.t;
 }
 
@@ -242,19 +250,20 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     vec3 o1 = vec3_madd(r->o, tc, r->d);
     vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->inv_smin);
     vec3 du, cl, rel;
-    num L, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
+    num L, rL, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];
     int npc = 1, k, side = p->kind == PRIM_SPHERE ? PRIM_FACE_SPHERE_SURFACE : PRIM_FACE_CYL_SIDE;
 
-    if (vec3_normalize(mat3_mul(&p->minv_s, r->d), &du, &L))
+    if (vec3_unit(mat3_mul(&p->minv_s, r->d), &du, &L, &rL))
         return 0;
-    ratio = num_div(p->smin, L);
+    ratio = num_mul(p->smin, rL);      /* world parameter per local one */
     cl = vec3_make(NUM_ZERO, NUM_ZERO, p->kind == PRIM_SPHERE ? NUM_ZERO : NUM_HALF);
     sh = vec3_dot(vec3_sub(cl, ol), du);
     rel = vec3_sub(vec3_madd(ol, sh, du), cl);
     if (vec3_maxabs(rel) > two)
         return 0;
-    lim = num_add(num_div_clamp(p->br, ratio, num_from_i(GEOM_TBIG)), num_abs(sh));
+    /* br / ratio = br |minv_s d| / smin */
+    lim = num_add(num_mul_clamp(num_mul(p->br, L), p->inv_smin, num_from_i(GEOM_TBIG)), num_abs(sh));
     if (lim < one)
         lim = one;
     pc[0].f0 = pc[0].f1 = 1;

@@ -22,9 +22,20 @@
  * origin is then never reported again (no epsilon offsets). */
 typedef struct ray {
     vec3 o, d;
+    vec3_rcp rcp;      /* reciprocals of d's components (prim_ray_set) */
     int excl_prim;
     int excl_enter;
 } prim_ray;
+
+/* Sets every field of r, the direction's reciprocals included. */
+static inline void prim_ray_set(prim_ray *r, vec3 o, vec3 d, int excl_prim, int excl_enter)
+{
+    r->o = o;
+    r->d = d;
+    vec3_rcp_init(d, &r->rcp);
+    r->excl_prim = excl_prim;
+    r->excl_enter = excl_enter;
+}
 
 typedef struct prim_plane {
     vec3 n;            /* outward unit normal, world */

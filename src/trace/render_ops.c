@@ -66,14 +66,13 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                     double sy = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
                     double dd[3], rgb[3];
                     prim_ray r;
+                    vec3 dir;
                     int p;
                     for (k = 0; k < 3; k++)
                         dd[k] = cs->fwd[k] + sx * cs->right[k] + sy * cs->up[k];
-                    r.o = cs->eye_n;
-                    r.excl_prim = -1;
-                    r.excl_enter = 0;
-                    if (vec3_normalize(vec3_from_d(dd), &r.d, NULL))
+                    if (vec3_normalize(vec3_from_d(dd), &dir, NULL))
                         continue;
+                    prim_ray_set(&r, cs->eye_n, dir, -1, 0);
                     tc->rs.rays_primary++;
                     NS(trace_ray)(cs, tc, &r, 0, 1.0, rgb, &p);
                     for (k = 0; k < 3; k++)

@@ -46,10 +46,7 @@ static void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_pri
 {
     double dd[3];
     vec3_to_d(d, dd);
-    r->o = p;
-    r->d = d;
-    r->excl_prim = pi;
-    r->excl_enter = dmath_dot3(n_prim, dd) < 0;
+    prim_ray_set(r, p, d, pi, dmath_dot3(n_prim, dd) < 0);
 }
 
 /* Step 4: the fraction of the light at distance dist along unit l from p
