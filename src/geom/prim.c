@@ -390,29 +390,46 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
 
 static double prim_clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
 
-void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
+void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)
 {
     double w[3], l[3], nl[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
-    double u = 0, v = 0, rho, th, len;
+    double u = 0, v = 0, rho, th = 0, ct = 1, st = 0, len;
     int i, planar = 1;
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         out->p[i] = w[i];
+    if (!need_uv && p->kind != PRIM_SPHERE && (p->kind == PRIM_BLOCK || p->kind == PRIM_HALFSPACE
+                                               || face != PRIM_FACE_CYL_SIDE)) {
+        /* a planar face: its normal is stored, nothing else is asked for */
+        int f = face >= 0 && face < 6 ? face : 0;
+        memset(out->dpdu, 0, sizeof out->dpdu);
+        memset(out->dpdv, 0, sizeof out->dpdv);
+        out->u = out->v = 0;
+        for (i = 0; i < 3; i++)
+            out->n[i] = p->pn_d[f][i];
+        return;
+    }
     for (i = 0; i < 3; i++)
         w[i] -= p->org_d[i];
     dmath_m3_mul_v(p->ainv_d, w, l);
     rho = sqrt(l[0] * l[0] + l[1] * l[1]);
-    th = atan2(l[1], l[0]);
-    if (th < 0)
-        th += 2 * DMATH_PI;
+    if (rho > 0) {
+        ct = l[0] / rho;
+        st = l[1] / rho;
+    }
+    if (need_uv) {
+        th = atan2(l[1], l[0]);
+        if (th < 0)
+            th += 2 * DMATH_PI;
+    }
     switch (p->kind) {
     case PRIM_SPHERE:
         planar = 0;
         u = th / (2 * DMATH_PI);
-        v = 0.5 + atan2(l[2], rho) / DMATH_PI;
+        v = need_uv ? 0.5 + atan2(l[2], rho) / DMATH_PI : 0;
         nl[0] = l[0]; nl[1] = l[1]; nl[2] = l[2];
         du[0] = -2 * DMATH_PI * l[1]; du[1] = 2 * DMATH_PI * l[0];
-        dv[0] = -DMATH_PI * l[2] * cos(th); dv[1] = -DMATH_PI * l[2] * sin(th); dv[2] = DMATH_PI * rho;
+        dv[0] = -DMATH_PI * l[2] * ct; dv[1] = -DMATH_PI * l[2] * st; dv[2] = DMATH_PI * rho;
         break;
     case PRIM_CYLINDER:
     case PRIM_CONE: {
@@ -422,9 +439,9 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
             planar = 0;
             u = th / (2 * DMATH_PI);
             v = l[2];
-            nl[0] = cos(th); nl[1] = sin(th); nl[2] = -k;
+            nl[0] = ct; nl[1] = st; nl[2] = -k;
             du[0] = -2 * DMATH_PI * l[1]; du[1] = 2 * DMATH_PI * l[0];
-            dv[0] = k * cos(th); dv[1] = k * sin(th); dv[2] = 1;
+            dv[0] = k * ct; dv[1] = k * st; dv[2] = 1;
         } else {
             rf = face == PRIM_FACE_CYL_TOP ? a + k : a;
             if (rf <= 0) {

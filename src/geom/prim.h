@@ -72,6 +72,8 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
  * and carry PRIM_FACE_NONE) or 0 when the ray misses. */
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
 
-/* Surface data of face `face` of p at world point pt (a hit point). */
-void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out);
+/* Surface data of face `face` of p at world point pt (a hit point). With
+ * need_uv 0 only p and n are computed ((u,v), dP/du and dP/dv are 0): no
+ * trigonometry, and a planar face only copies its stored normal. */
+void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out);
 #endif

@@ -18,6 +18,10 @@ typedef struct render_stats {
     unsigned long long rays_primary, rays_shadow, rays_reflected, rays_refracted;
     unsigned long long pds_lookups, fx_overflows;
     unsigned long long prim_tests, bound_tests, csg_pruned, arena_full;
+    /* work the scene did not need: hits whose (u,v) was not evaluated (no
+     * PDS, texture or bump on the face), shadow rays not traced (the
+     * attribute has no diffuse or specular term) */
+    unsigned long long uv_skipped, shadow_skipped;
     double time_compile_s, time_render_s;
 } render_stats;
 

@@ -86,7 +86,7 @@ static int probe_trace(const probe_cs *pc, const prim_ray *r, probe_hit *h, vec3
                            (arena *)&pc->ar, &gs, &ch))
         return 0;
     *pn = vec3_madd(r->o, ch.t, r->d);
-    NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, &h->sf);
+    NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, 1, &h->sf);
     h->t = num_to_d(ch.t) / cs->nm.scale;
     h->prim = ch.prim;
     h->face = ch.face;

@@ -89,6 +89,8 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     st->rays_reflected += tc->rs.rays_reflected;
     st->rays_refracted += tc->rs.rays_refracted;
     st->pds_lookups += tc->rs.pds_lookups;
+    st->uv_skipped += tc->rs.uv_skipped;
+    st->shadow_skipped += tc->rs.shadow_skipped;
     st->prim_tests += tc->gs.prim_tests;
     st->bound_tests += tc->gs.bound_tests;
     st->csg_pruned += tc->gs.pruned;
