@@ -12,7 +12,7 @@ BUILD   ?= build
 WARN     := -std=c99 -pedantic -Wall -Wextra -Werror
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I. -MMD -MP
 ALL_CFLAGS = $(WARN) $(CFLAGS) -fopenmp $(MODULE_CFLAGS)
-LIBS     = $(MODULE_LIBS) -lpng -lm
+LIBS     = $(MODULE_LIBS) -lpng -lz -lm
 MODES    := q16 q32 f32 f64
 
 # Directories compiled once per numeric mode (symbols prefixed by mode).

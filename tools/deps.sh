@@ -1,7 +1,7 @@
 #!/bin/sh
 # Checks the Debian packages maprt builds and tests with. As root it installs the
 # missing ones; otherwise it prints the exact apt-get line and fails.
-PKGS="gcc make pkg-config libpng-dev libcmocka-dev gfortran libosmesa6-dev libegl-dev libgl-dev libgles-dev libgl1-mesa-dri libegl-mesa0 clang libclang-rt-14-dev libomp-dev gnuplot-nox povray"
+PKGS="gcc make pkg-config libpng-dev zlib1g-dev libcmocka-dev gfortran libosmesa6-dev libegl-dev libgl-dev libgles-dev libgl1-mesa-dri libegl-mesa0 clang libclang-rt-14-dev libomp-dev gnuplot-nox povray"
 command -v dpkg-query >/dev/null 2>&1 || { echo "deps: not a Debian system; install the equivalents of: $PKGS" >&2; exit 0; }
 missing=""
 for p in $PKGS; do

@@ -215,7 +215,7 @@ int cmd_render(int argc, char **argv)
     if (render_scene(sc, ops, &o, &fb, &st, &err))
         goto done;
     rendered = 1;
-    if (png_path && image_write_png(png_path, &fb.img, &err))
+    if (png_path && image_write_png_mt(png_path, &fb.img, o.threads, &err))
         goto done;
     if (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
         goto done;
