@@ -117,3 +117,12 @@ clean:
 
 print-libs:
 	@echo $(LIBS)
+
+# --- race against peers (POV-Ray 3.7 and a minimal hand-written tracer) ---
+$(BUILD)/bench/minimal: bench/peers/minimal.c
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -pedantic -Wall -Wextra -Werror -O2 -o $@ $< -lm
+
+.PHONY: bench-peers
+bench-peers: deps all $(BUILD)/bench/minimal
+	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal
