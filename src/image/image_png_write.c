@@ -20,24 +20,6 @@ typedef struct image_png_write_band {
     int failed;
 } image_png_write_band;
 
-/* The PNG filter predictors for byte i: a left, b up, c up-left. */
-static int image_png_write_pred(int f, int a, int b, int c)
-{
-    int p, pa, pb, pc;
-    switch (f) {
-    case 1: return a;
-    case 2: return b;
-    case 3: return (a + b) >> 1;
-    case 4:
-        p = a + b - c;
-        pa = p > a ? p - a : a - p;
-        pb = p > b ? p - b : b - p;
-        pc = p > c ? p - c : c - p;
-        return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-    default: return 0;
-    }
-}
-
 /* Filters row cur (n bytes, bpp per pixel; prev is a row of zeros for the
  * first row) into out[0..n]: type byte, then the bytes of the filter (0
  * none, 1 sub, 2 up, 3 average, 4 Paeth) whose outputs, read as signed,
@@ -64,9 +46,32 @@ static void image_png_write_filter(const unsigned char *cur, const unsigned char
         if (sum[f] < sum[best])
             best = f;
     out[0] = (unsigned char)best;
-    for (i = 0; i < n; i++)
-        out[1 + i] = (unsigned char)(cur[i] - image_png_write_pred(best, i >= k ? cur[i - k] : 0, prev[i],
-                                                                  i >= k ? prev[i - k] : 0));
+    out++;
+    switch (best) {
+    case 0:
+        memcpy(out, cur, n);
+        break;
+    case 1:
+        for (i = 0; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - (i >= k ? cur[i - k] : 0));
+        break;
+    case 2:
+        for (i = 0; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - prev[i]);
+        break;
+    case 3:
+        for (i = 0; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - (((i >= k ? cur[i - k] : 0) + prev[i]) >> 1));
+        break;
+    default:
+        for (i = 0; i < n; i++) {
+            int a = i >= k ? cur[i - k] : 0, b = prev[i], c = i >= k ? prev[i - k] : 0;
+            int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p;
+            int pc = p > c ? p - c : c - p;
+            out[i] = (unsigned char)(cur[i] - (pa <= pb && pa <= pc ? a : pb <= pc ? b : c));
+        }
+        break;
+    }
 }
 
 /* Appends the deflate output of z's pending input to b, growing b. */

@@ -52,6 +52,9 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     const cscene *cs = vcs;
     trace_ctx *tc = vtc;
     double aspect = (double)o->width / o->height;
+    /* the per-sample quotients as products (exact for aa a power of two) */
+    double sxk = 2.0 / o->width * cs->tan_half * aspect, syk = 2.0 / o->height * cs->tan_half;
+    double raa = 1.0 / o->aa, rss = 1.0 / (o->aa * o->aa);
     int x, y, i, j, k, aa = o->aa, mid = aa / 2;
     tc->rs = (render_stats){0};
     tc->gs = (geom_stats){0};
@@ -62,8 +65,8 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
             unsigned char *px = fb->img.px + 3 * ((size_t)y * (size_t)o->width + (size_t)x);
             for (j = 0; j < aa; j++)
                 for (i = 0; i < aa; i++) {
-                    double sx = (2 * (x + (i + 0.5) / aa) / o->width - 1) * cs->tan_half * aspect;
-                    double sy = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
+                    double sx = (x + (i + 0.5) * raa) * sxk - cs->tan_half * aspect;
+                    double sy = cs->tan_half - (y + (j + 0.5) * raa) * syk;
                     double dd[3], rgb[3];
                     prim_ray r;
                     vec3 dir;
@@ -81,7 +84,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                         pid = p;
                 }
             for (k = 0; k < 3; k++)
-                px[k] = render_ops_byte(sum[k] / (aa * aa));
+                px[k] = render_ops_byte(sum[k] * rss);
             fb->pid[(size_t)y * (size_t)o->width + (size_t)x] = pid;
         }
     st->rays_primary += tc->rs.rays_primary;
