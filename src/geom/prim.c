@@ -355,21 +355,14 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     return 0;
 }
 
-int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out)
+int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out)
 {
     const num big = num_from_i(GEOM_TBIG);
     span s;
-    num tc = NUM_ZERO;
     s.a.t = num_neg(big);
     s.b.t = big;
     s.a.prim = s.b.prim = p->id;
     s.a.face = s.b.face = PRIM_FACE_NONE;
-    if (p->bounded) {
-        /* The bound only rejects: span ends always come from faces, so a
-         * rounding difference between bound and face cannot hide a face. */
-        if (vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmin, tmax, &tc))
-            return 0;
-    }
     if (!prim_clip_planes(p, r, &s))
         return 0;
     if ((p->kind == PRIM_SPHERE || p->kind == PRIM_CYLINDER || p->kind == PRIM_CONE)
@@ -384,6 +377,16 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
     }
     *out = s;
     return 1;
+}
+
+int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out)
+{
+    num tc = NUM_ZERO;
+    /* The bound only rejects: span ends always come from faces, so a
+     * rounding difference between bound and face cannot hide a face. */
+    if (p->bounded && vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmin, tmax, &tc))
+        return 0;
+    return NS(prim_intersect_tc)(p, r, tc, out);
 }
 
 /* ---- surface evaluation (double) ----------------------------------- */

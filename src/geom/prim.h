@@ -71,6 +71,10 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
  * and carry PRIM_FACE_NONE) or 0 when the ray misses. */
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
+/* The same after the caller has tested p's bounding sphere (bc, br) itself
+ * and found the ray's closest parameter tc (0 for the unbounded half-space):
+ * a CSG leaf's bound is then tested once. */
+int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out);
 
 /* Surface data of face `face` of p at world point pt (a hit point). With
  * need_uv 0 only p and n are computed ((u,v), dP/du and dP/dv are 0): no
