@@ -74,10 +74,14 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
         int e = 0, k = 1, i;
         num raw[3];
         raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
+#if defined(__GNUC__)
+        e = __builtin_clz((unsigned)m) - 15;         /* top bit of m to bit 16 */
+#else
         while (((int64_t)m << e) < FX16_ONE)         /* m >= 1 unit, so e <= 16 */
             e++;
         while ((m >> -e) >= 2 * FX16_ONE)            /* m < 2^31, so e >= -15 */
             e--;
+#endif
         for (i = 0; i < 3; i++) {
             w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
             ss += w[i] * w[i];                          /* exact: < 13 * 2^32 */
