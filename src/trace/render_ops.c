@@ -67,13 +67,16 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                 for (i = 0; i < aa; i++) {
                     double sx = (x + (i + 0.5) * raa) * sxk - cs->tan_half * aspect;
                     double sy = cs->tan_half - (y + (j + 0.5) * raa) * syk;
-                    double dd[3], rgb[3];
+                    double rgb[3];
                     prim_ray r;
                     vec3 dir;
                     int p;
-                    for (k = 0; k < 3; k++)
-                        dd[k] = cs->fwd[k] + sx * cs->right[k] + sy * cs->up[k];
-                    if (vec3_normalize(vec3_from_d(dd), &dir, NULL))
+                    /* component by component: an array would be stored in
+                     * 8-byte pieces and read back in 16 (a stalled load) */
+                    dir = vec3_make(num_from_d(cs->fwd[0] + sx * cs->right[0] + sy * cs->up[0]),
+                                    num_from_d(cs->fwd[1] + sx * cs->right[1] + sy * cs->up[1]),
+                                    num_from_d(cs->fwd[2] + sx * cs->right[2] + sy * cs->up[2]));
+                    if (vec3_normalize(dir, &dir, NULL))
                         continue;
                     prim_ray_set(&r, cs->eye_n, dir, -1, 0);
                     tc->rs.rays_primary++;
