@@ -6,18 +6,6 @@ unsigned long fx_overflows;
 
 /* ---- Q16.16 ---------------------------------------------------------- */
 
-fx16 fx16_sqrt(fx16 a)
-{
-    uint64_t v, s;
-    if (a < 0) { fx_overflows++; return 0; }
-    v = (uint64_t)a << 16;
-    s = (uint64_t)sqrt((double)v);
-    while (s * s > v) s--;
-    while ((s + 1) * (s + 1) <= v) s++;
-    if (v - s * s > s) s++;            /* round to nearest */
-    return (fx16)s;                    /* s <= 2^23.5: fits */
-}
-
 /* 1/sqrt(X) in Q1.15 at the centre of [i/256, (i+1)/256), i = 64..255:
  * the starting point of fx16_rsqrt, good to about 2^-8. */
 const uint16_t fx_rsqrt_tab[192] = {

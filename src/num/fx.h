@@ -15,6 +15,7 @@
  * No operation here has undefined behaviour for any input. */
 #ifndef FX_H
 #define FX_H
+#include <math.h>
 #include <stdint.h>
 
 extern unsigned long fx_overflows;
@@ -109,7 +110,17 @@ static inline fx16 fx16_div(fx16 a, fx16 b)
  * representable) lands within one of the floor root; the integer checks
  * that follow make s exactly floor(sqrt(v)), so the result does not depend
  * on the floating-point unit. */
-fx16 fx16_sqrt(fx16 a);
+static inline fx16 fx16_sqrt(fx16 a)
+{
+    uint64_t v, s;
+    if (a < 0) { fx_overflows++; return 0; }
+    v = (uint64_t)a << 16;
+    s = (uint64_t)sqrt((double)v);
+    while (s * s > v) s--;
+    while ((s + 1) * (s + 1) <= v) s++;
+    if (v - s * s > s) s++;            /* round to nearest */
+    return (fx16)s;                    /* s <= 2^23.5: fits */
+}
 
 /* 1/sqrt(a) in Q16.16 for a > 0, rounded to nearest: round(2^24/sqrt(raw)).
  * A 256-entry table and two Newton steps in integers give it to well under
