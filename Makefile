@@ -12,7 +12,7 @@ BUILD   ?= build
 WARN     := -std=c99 -pedantic -Wall -Wextra -Werror
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I. -MMD -MP
 ALL_CFLAGS = $(WARN) $(CFLAGS) -fopenmp $(MODULE_CFLAGS)
-LIBS     = $(MODULE_LIBS) -lpng -lm
+LIBS     = $(MODULE_LIBS) -lpng -lz -lm
 MODES    := q16 q32 f32 f64 hfp32 hfp64
 
 # Directories compiled once per numeric mode (symbols prefixed by mode).
@@ -121,3 +121,12 @@ clean:
 
 print-libs:
 	@echo $(LIBS)
+
+# --- race against peers (POV-Ray 3.7 and a minimal hand-written tracer) ---
+$(BUILD)/bench/minimal: bench/peers/minimal.c
+	@mkdir -p $(@D)
+	$(CC) -std=c99 -pedantic -Wall -Wextra -Werror -O2 -o $@ $< -lm
+
+.PHONY: bench-peers
+bench-peers: deps all $(BUILD)/bench/minimal
+	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal

@@ -21,7 +21,7 @@ typedef struct dl_backend {
 } dl_backend;
 
 extern const dl_backend dl_backend_png;
-extern const dl_backend dl_backend_osmesa;   /* says why when built without OSMesa */
+extern const dl_backend dl_backend_osmesa;   /* says why when libOSMesa is missing */
 extern const dl_backend dl_backend_egl;
 
 /* The backend called name, or NULL. */

@@ -1,28 +1,49 @@
 /* dl_backend_osmesa — the display list drawn with OpenGL into an OSMesa
- * buffer (Mesa's off-screen renderer). Compiled only when pkg-config found
- * osmesa (DL_HAVE_OSMESA, see mk/display5080.mk): OSMesa left Mesa in 25.1,
- * so without it the backend exists but says why it cannot start. */
+ * buffer (Mesa's off-screen renderer). libOSMesa is opened with dlopen when
+ * this backend is chosen (dl_lib), so other commands never map Mesa; where
+ * it is missing (OSMesa left Mesa in 25.1) opening the backend says so.
+ * The few OSMesa entry points and constants are spelled out here, so no
+ * OSMesa header is needed to build. */
 #include "display5080/dl_backend.h"
 #include "display5080/dl_gl.h"
+#include "display5080/dl_lib.h"
 #include "util/mem.h"
 #include <string.h>
 
-#ifdef DL_HAVE_OSMESA
-#include <GL/osmesa.h>
+#define DL_OSMESA_RGBA 0x1908          /* GL_RGBA */
+#define DL_OSMESA_UNSIGNED_BYTE 0x1401 /* GL_UNSIGNED_BYTE */
+
+typedef struct dl_backend_osmesa_api {
+    void *(*CreateContextExt)(unsigned, int, int, int, void *);
+    unsigned char (*MakeCurrent)(void *, void *, unsigned, int, int);
+    void (*DestroyContext)(void *);
+    dl_gl_proc (*GetProcAddress)(const char *);
+} dl_backend_osmesa_api;
 
 typedef struct dl_backend_osmesa_ctx {
     dl_gl g;                   /* first: the device pointer is a dl_gl too */
-    OSMesaContext ctx;
+    void *ctx;                 /* OSMesaContext */
     uint8_t *buf;              /* RGBA colour buffer */
 } dl_backend_osmesa_ctx;
 
-static dl_gl_proc dl_backend_osmesa_proc(const char *name)
+static dl_backend_osmesa_api dl_backend_osmesa_fn;
+
+static int dl_backend_osmesa_load(diag *err)
 {
-    OSMESAproc p = OSMesaGetProcAddress(name);
-    dl_gl_proc q;
-    memcpy(&q, &p, sizeof q);
-    return q;
+    static const char *const names[] = {"libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so", NULL};
+    static const char *const syms[] = {"OSMesaCreateContextExt", "OSMesaMakeCurrent",
+                                       "OSMesaDestroyContext", "OSMesaGetProcAddress"};
+    dl_lib_fn f[4];
+    if (dl_lib_load(names, syms, f, 4, "osmesa", err))
+        return DIAG_IO;
+    dl_backend_osmesa_fn.CreateContextExt = (void *(*)(unsigned, int, int, int, void *))f[0];
+    dl_backend_osmesa_fn.MakeCurrent = (unsigned char (*)(void *, void *, unsigned, int, int))f[1];
+    dl_backend_osmesa_fn.DestroyContext = (void (*)(void *))f[2];
+    dl_backend_osmesa_fn.GetProcAddress = (dl_gl_proc (*)(const char *))f[3];
+    return 0;
 }
+
+static dl_gl_proc dl_backend_osmesa_proc(const char *name) { return dl_backend_osmesa_fn.GetProcAddress(name); }
 
 static void dl_backend_osmesa_close(void *dev)
 {
@@ -31,7 +52,7 @@ static void dl_backend_osmesa_close(void *dev)
         return;
     if (o->ctx) {
         dl_gl_stop(&o->g);
-        OSMesaDestroyContext(o->ctx);
+        dl_backend_osmesa_fn.DestroyContext(o->ctx);
     }
     mem_free(o->buf);
     mem_free(o);
@@ -39,8 +60,10 @@ static void dl_backend_osmesa_close(void *dev)
 
 static int dl_backend_osmesa_open(int width, int height, void **dev, diag *err)
 {
-    dl_backend_osmesa_ctx *o = mem_calloc(1, sizeof *o);
-    if (!o)
+    dl_backend_osmesa_ctx *o;
+    if (dl_backend_osmesa_load(err))
+        return DIAG_IO;
+    if (!(o = mem_calloc(1, sizeof *o)))
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "out of memory");
     o->buf = mem_alloc((size_t)width * (size_t)height * 4);
     if (!o->buf) {
@@ -48,12 +71,12 @@ static int dl_backend_osmesa_open(int width, int height, void **dev, diag *err)
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "out of memory for a %dx%d buffer", width,
                        height);
     }
-    o->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 8, 0, NULL);
+    o->ctx = dl_backend_osmesa_fn.CreateContextExt(DL_OSMESA_RGBA, 0, 8, 0, NULL);
     if (!o->ctx) {
         dl_backend_osmesa_close(o);
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "cannot create an OSMesa context");
     }
-    if (!OSMesaMakeCurrent(o->ctx, o->buf, GL_UNSIGNED_BYTE, width, height)) {
+    if (!dl_backend_osmesa_fn.MakeCurrent(o->ctx, o->buf, DL_OSMESA_UNSIGNED_BYTE, width, height)) {
         dl_backend_osmesa_close(o);
         return diag_at(err, DIAG_IO, "osmesa", 0, 0, "cannot make the OSMesa context current");
     }
@@ -74,40 +97,9 @@ static int dl_backend_osmesa_read(void *dev, uint8_t *px, diag *err)
 
 const dl_backend dl_backend_osmesa = {
     .name = "osmesa",
-    .summary = "OpenGL in an OSMesa off-screen buffer",
+    .summary = "OpenGL in an OSMesa off-screen buffer (libOSMesa, loaded when chosen)",
     .open = dl_backend_osmesa_open,
     .ops = &dl_gl_device,
     .read = dl_backend_osmesa_read,
     .close = dl_backend_osmesa_close,
 };
-
-#else
-
-static int dl_backend_osmesa_open(int width, int height, void **dev, diag *err)
-{
-    (void)width;
-    (void)height;
-    (void)dev;
-    return diag_at(err, DIAG_IO, "osmesa", 0, 0,
-                   "this maprt was built without OSMesa (no osmesa.pc; OSMesa left Mesa in 25.1); "
-                   "use --backend egl");
-}
-
-static int dl_backend_osmesa_read(void *dev, uint8_t *px, diag *err)
-{
-    (void)dev;
-    (void)px;
-    return diag_at(err, DIAG_IO, "osmesa", 0, 0, "not available");
-}
-
-static void dl_backend_osmesa_close(void *dev) { (void)dev; }
-
-const dl_backend dl_backend_osmesa = {
-    .name = "osmesa",
-    .summary = "OpenGL in an OSMesa off-screen buffer (not built)",
-    .open = dl_backend_osmesa_open,
-    .ops = &dl_gl_device,
-    .read = dl_backend_osmesa_read,
-    .close = dl_backend_osmesa_close,
-};
-#endif

@@ -1,10 +1,4 @@
-# display5080: the OpenGL backends, each only where pkg-config finds it.
-# OSMesa left Mesa in 25.1, so its absence is normal; EGL is the path forward.
-ifeq ($(shell pkg-config --exists osmesa 2>/dev/null && echo yes),yes)
-MODULE_CFLAGS += -DDL_HAVE_OSMESA $(shell pkg-config --cflags osmesa)
-MODULE_LIBS   += $(shell pkg-config --libs osmesa)
-endif
-ifeq ($(shell pkg-config --exists egl 2>/dev/null && echo yes),yes)
-MODULE_CFLAGS += -DDL_HAVE_EGL $(shell pkg-config --cflags egl)
-MODULE_LIBS   += $(shell pkg-config --libs egl)
-endif
+# display5080: the OpenGL backends load libOSMesa and libEGL with dlopen
+# when chosen (display5080/dl_lib.c), so nothing here links them; glibc
+# before 2.34 keeps dlopen in libdl.
+MODULE_LIBS += -ldl

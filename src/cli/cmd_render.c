@@ -48,6 +48,9 @@ static void render_help(FILE *f)
         "  --stats               print key=value lines to stdout: numeric rays.primary\n"
         "                        rays.shadow rays.reflected rays.refracted pds.lookups\n"
         "                        fx.overflows tests.prim tests.bound csg.pruned\n"
+        "                        skipped.uv (hits whose face needs no (u,v): no PDS,\n"
+        "                        texture or bump) skipped.shadow (shadow rays not\n"
+        "                        traced: no diffuse or specular term)\n"
         "                        time.compile_s time.render_s range.cut (and\n"
         "                        dl.colours dl.bytes dl.psnr with --dl); any overflow\n"
         "                        or range.cut is also reported on stderr\n"
@@ -249,7 +252,7 @@ int cmd_render(int argc, char **argv)
                                          : "try --numeric q32 or f64");
     if (part_path && render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
         goto done;
-    if (png_path && image_write_png(png_path, &fb.img, &err))
+    if (png_path && image_write_png_mt(png_path, &fb.img, o.threads, &err))
         goto done;
     if (dl_path && cli_sink_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
         goto done;

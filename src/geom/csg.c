@@ -385,12 +385,12 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
     size_t mark = arena_mark(q->ar);
     span *l = NULL, *r = NULL, *tmp, *dst;
     int nl, nr, n;
-    num tc, rlo = lo, rhi = hi;
+    num tc = NUM_ZERO, rlo = lo, rhi = hi;
     if (nd->use_box) {
-        /* leaves test their own sphere in prim_intersect; tc comes from here */
+        /* a leaf's sphere is its primitive's: tested here once, with tc */
         q->st->bound_tests++;
         if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)
-            || vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, tc, lo, hi)) {
+            || vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, &q->r->rcp, tc, lo, hi)) {
             q->st->pruned++;
             return 0;
         }
@@ -398,7 +398,8 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
     if (nd->op == CSG_LEAF) {
         span s;
         q->st->prim_tests++;
-        if (!NS(prim_intersect)(&q->prims[nd->prim], q->r, lo, hi, &s))
+        if (nd->use_box ? !NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
+                        : !NS(prim_intersect)(&q->prims[nd->prim], q->r, lo, hi, &s))
             return 0;
         if (!(dst = arena_alloc(q->ar, sizeof s))) {
             q->st->arena_full++;
@@ -486,7 +487,7 @@ static void csg_nearest(csg_query *q, int ni, csg_hit *best, int *found)
         if (nd->bounded) {
             q->st->bound_tests++;
             if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)
-                || (nd->use_box && vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, tc, NUM_ZERO, q->tmax))) {
+                || (nd->use_box && vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, &q->r->rcp, tc, NUM_ZERO, q->tmax))) {
                 q->st->pruned++;
                 return;
             }

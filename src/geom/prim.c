@@ -325,28 +325,36 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
 
 /* ---- intersection (num) -------------------------------------------- */
 
-/* Intersects the span s with the half-spaces of p's planes. 0 if empty. */
+/* Intersects the span s with the half-spaces of p's planes. 0 if empty.
+ * The entry and exit candidates are kept as fractions (positive
+ * denominators) and compared by cross products, so only the two winners
+ * are divided; an entry at or beyond the exit ends the test early. */
 static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
 {
     const num big = num_from_i(GEOM_TBIG);
-    int k;
+    num an = NUM_ZERO, ad = NUM_ZERO, bn = NUM_ZERO, bd = NUM_ZERO, t;
+    int af = PRIM_FACE_NONE, bf = PRIM_FACE_NONE, k;
     for (k = 0; k < p->nplanes; k++) {
         const prim_plane *pl = &p->pl[k];
         num den = vec3_dot(pl->n, r->d);
         num nm = num_sub(pl->d, vec3_dot(pl->n, r->o));
-        num t;
         if (den == NUM_ZERO) {
             if (nm < NUM_ZERO)
                 return 0;
             continue;
         }
-        t = num_div_clamp(nm, den, big);
         if (den < NUM_ZERO) {
-            if (t > s->a.t) { s->a.t = t; s->a.face = pl->face; }
-        } else {
-            if (t < s->b.t) { s->b.t = t; s->b.face = pl->face; }
+            nm = num_neg(nm);
+            den = num_neg(den);
+            if (ad == NUM_ZERO || num_frac_gt(nm, den, an, ad)) { an = nm; ad = den; af = pl->face; }
+        } else if (bd == NUM_ZERO || num_frac_gt(bn, bd, nm, den)) {
+            bn = nm; bd = den; bf = pl->face;
         }
+        if (ad != NUM_ZERO && bd != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
+            return 0;
     }
+    if (ad != NUM_ZERO && (t = num_div_clamp(an, ad, big)) > s->a.t) { s->a.t = t; s->a.face = af; }
+    if (bd != NUM_ZERO && (t = num_div_clamp(bn, bd, big)) < s->b.t) { s->b.t = t; s->b.face = bf; }
     return s->a.t < s->b.t;
 }
 
@@ -364,19 +372,20 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     vec3 o1 = vec3_madd(r->o, tc, r->d);
     vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->inv_smin);
     vec3 du, cl, rel;
-    num L, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
+    num L, rL, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];
     int npc = 1, k, side = p->kind == PRIM_SPHERE ? PRIM_FACE_SPHERE_SURFACE : PRIM_FACE_CYL_SIDE;
 
-    if (vec3_normalize(mat3_mul(&p->minv_s, r->d), &du, &L))
+    if (vec3_unit(mat3_mul(&p->minv_s, r->d), &du, &L, &rL))
         return 0;
-    ratio = num_div(p->smin, L);
+    ratio = num_mul(p->smin, rL);      /* world parameter per local one */
     cl = vec3_make(NUM_ZERO, NUM_ZERO, p->kind == PRIM_SPHERE ? NUM_ZERO : NUM_HALF);
     sh = vec3_dot(vec3_sub(cl, ol), du);
     rel = vec3_sub(vec3_madd(ol, sh, du), cl);
     if (vec3_maxabs(rel) > two)
         return 0;
-    lim = num_add(num_div_clamp(p->br, ratio, num_from_i(GEOM_TBIG)), num_abs(sh));
+    /* br / ratio = br |minv_s d| / smin */
+    lim = num_add(num_mul_clamp(num_mul(p->br, L), p->inv_smin, num_from_i(GEOM_TBIG)), num_abs(sh));
     if (lim < one)
         lim = one;
     pc[0].f0 = pc[0].f1 = 1;
@@ -468,21 +477,14 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     return 0;
 }
 
-int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out)
+int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out)
 {
     const num big = num_from_i(GEOM_TBIG);
     span s;
-    num tc = NUM_ZERO;
     s.a.t = num_neg(big);
     s.b.t = big;
     s.a.prim = s.b.prim = p->id;
     s.a.face = s.b.face = PRIM_FACE_NONE;
-    if (p->bounded) {
-        /* The bound only rejects: span ends always come from faces, so a
-         * rounding difference between bound and face cannot hide a face. */
-        if (vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmin, tmax, &tc))
-            return 0;
-    }
     if (!prim_clip_planes(p, r, &s))
         return 0;
     if ((p->kind == PRIM_SPHERE || p->kind == PRIM_CYLINDER || p->kind == PRIM_CONE)
@@ -499,33 +501,60 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
     return 1;
 }
 
+int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out)
+{
+    num tc = NUM_ZERO;
+    /* The bound only rejects: span ends always come from faces, so a
+     * rounding difference between bound and face cannot hide a face. */
+    if (p->bounded && vec3_sphere_miss(p->bc, p->br, r->o, r->d, tmin, tmax, &tc))
+        return 0;
+    return NS(prim_intersect_tc)(p, r, tc, out);
+}
+
 /* ---- surface evaluation (double) ----------------------------------- */
 
 static double prim_clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
 
-void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
+void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)
 {
     double w[3], l[3], nl[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
-    double u = 0, v = 0, rho, th, len;
+    double u = 0, v = 0, rho, th = 0, ct = 1, st = 0, len;
     int i, planar = 1;
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         out->p[i] = w[i];
+    if (!need_uv && p->kind != PRIM_SPHERE && (p->kind == PRIM_BLOCK || p->kind == PRIM_HALFSPACE
+                                               || face != PRIM_FACE_CYL_SIDE)) {
+        /* a planar face: its normal is stored, nothing else is asked for */
+        int f = face >= 0 && face < 6 ? face : 0;
+        memset(out->dpdu, 0, sizeof out->dpdu);
+        memset(out->dpdv, 0, sizeof out->dpdv);
+        out->u = out->v = 0;
+        for (i = 0; i < 3; i++)
+            out->n[i] = p->pn_d[f][i];
+        return;
+    }
     for (i = 0; i < 3; i++)
         w[i] -= p->org_d[i];
     dmath_m3_mul_v(p->ainv_d, w, l);
     rho = sqrt(l[0] * l[0] + l[1] * l[1]);
-    th = atan2(l[1], l[0]);
-    if (th < 0)
-        th += 2 * DMATH_PI;
+    if (rho > 0) {
+        ct = l[0] / rho;
+        st = l[1] / rho;
+    }
+    if (need_uv) {
+        th = atan2(l[1], l[0]);
+        if (th < 0)
+            th += 2 * DMATH_PI;
+    }
     switch (p->kind) {
     case PRIM_SPHERE:
         planar = 0;
         u = th / (2 * DMATH_PI);
-        v = 0.5 + atan2(l[2], rho) / DMATH_PI;
+        v = need_uv ? 0.5 + atan2(l[2], rho) / DMATH_PI : 0;
         nl[0] = l[0]; nl[1] = l[1]; nl[2] = l[2];
         du[0] = -2 * DMATH_PI * l[1]; du[1] = 2 * DMATH_PI * l[0];
-        dv[0] = -DMATH_PI * l[2] * cos(th); dv[1] = -DMATH_PI * l[2] * sin(th); dv[2] = DMATH_PI * rho;
+        dv[0] = -DMATH_PI * l[2] * ct; dv[1] = -DMATH_PI * l[2] * st; dv[2] = DMATH_PI * rho;
         break;
     case PRIM_CYLINDER:
     case PRIM_CONE: {
@@ -535,9 +564,9 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out)
             planar = 0;
             u = th / (2 * DMATH_PI);
             v = l[2];
-            nl[0] = cos(th); nl[1] = sin(th); nl[2] = -k;
+            nl[0] = ct; nl[1] = st; nl[2] = -k;
             du[0] = -2 * DMATH_PI * l[1]; du[1] = 2 * DMATH_PI * l[0];
-            dv[0] = k * cos(th); dv[1] = k * sin(th); dv[2] = 1;
+            dv[0] = k * ct; dv[1] = k * st; dv[2] = 1;
         } else {
             rf = face == PRIM_FACE_CYL_TOP ? a + k : a;
             if (rf <= 0) {

@@ -22,9 +22,20 @@
  * origin is then never reported again (no epsilon offsets). */
 typedef struct ray {
     vec3 o, d;
+    vec3_rcp rcp;      /* reciprocals of d's components (prim_ray_set) */
     int excl_prim;
     int excl_enter;
 } prim_ray;
+
+/* Sets every field of r, the direction's reciprocals included. */
+static inline void prim_ray_set(prim_ray *r, vec3 o, vec3 d, int excl_prim, int excl_enter)
+{
+    r->o = o;
+    r->d = d;
+    vec3_rcp_init(d, &r->rcp);
+    r->excl_prim = excl_prim;
+    r->excl_enter = excl_enter;
+}
 
 typedef struct prim_plane {
     vec3 n;            /* outward unit normal, world */
@@ -77,7 +88,13 @@ int NS(prim_share)(prim *prims, size_t n, diag *err);
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
  * and carry PRIM_FACE_NONE) or 0 when the ray misses. */
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
+/* The same after the caller has tested p's bounding sphere (bc, br) itself
+ * and found the ray's closest parameter tc (0 for the unbounded half-space):
+ * a CSG leaf's bound is then tested once. */
+int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out);
 
-/* Surface data of face `face` of p at world point pt (a hit point). */
-void NS(prim_surface)(const prim *p, int face, vec3 pt, geom_surface *out);
+/* Surface data of face `face` of p at world point pt (a hit point). With
+ * need_uv 0 only p and n are computed ((u,v), dP/du and dP/dv are 0): no
+ * trigonometry, and a planar face only copies its stored normal. */
+void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out);
 #endif

@@ -7,21 +7,39 @@
 #include "num/num.h"
 #include "geom/geom.h"
 
+/* The per-ray helpers below are small but called from several places; GCC
+ * and Clang would otherwise keep some out of line on the hot path. */
+#if defined(__GNUC__)
+#define VEC_HOT static inline __attribute__((always_inline))
+#else
+#define VEC_HOT static inline
+#endif
+
 typedef struct vec3 { num x, y, z; } vec3;
 typedef struct mat3 { num m[9]; } mat3;      /* row-major */
 
 static inline vec3 vec3_make(num x, num y, num z) { vec3 v; v.x = x; v.y = y; v.z = z; return v; }
 static inline vec3 vec3_from_d(const double *d) { return vec3_make(num_from_d(d[0]), num_from_d(d[1]), num_from_d(d[2])); }
-static inline vec3 vec3_add(vec3 a, vec3 b) { return vec3_make(num_add(a.x, b.x), num_add(a.y, b.y), num_add(a.z, b.z)); }
-static inline vec3 vec3_sub(vec3 a, vec3 b) { return vec3_make(num_sub(a.x, b.x), num_sub(a.y, b.y), num_sub(a.z, b.z)); }
+VEC_HOT vec3 vec3_add(vec3 a, vec3 b) { return vec3_make(num_add(a.x, b.x), num_add(a.y, b.y), num_add(a.z, b.z)); }
+VEC_HOT vec3 vec3_sub(vec3 a, vec3 b) { return vec3_make(num_sub(a.x, b.x), num_sub(a.y, b.y), num_sub(a.z, b.z)); }
 static inline vec3 vec3_neg(vec3 a) { return vec3_make(num_neg(a.x), num_neg(a.y), num_neg(a.z)); }
-static inline vec3 vec3_scale(vec3 a, num s) { return vec3_make(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s)); }
+VEC_HOT vec3 vec3_scale(vec3 a, num s) { return vec3_make(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s)); }
 static inline vec3 vec3_div(vec3 a, num s) { return vec3_make(num_div(a.x, s), num_div(a.y, s), num_div(a.z, s)); }
 /* a + t*d: a point along a ray. */
-static inline vec3 vec3_madd(vec3 a, num t, vec3 d) { return vec3_add(a, vec3_scale(d, t)); }
-static inline num vec3_dot(vec3 a, vec3 b)
+VEC_HOT vec3 vec3_madd(vec3 a, num t, vec3 d) { return vec3_add(a, vec3_scale(d, t)); }
+/* q16: the three Q32 products summed at 2^-34 resolution (each below 2^62,
+ * so a quarter of each sums below 2^62; truncated toward zero, so a dot
+ * with -b is exactly minus the dot with b) and rounded once to Q16: one
+ * saturation check instead of five, and one rounding instead of three.
+ * Other modes: term by term. */
+VEC_HOT num vec3_dot(vec3 a, vec3 b)
 {
+#if defined(NUM_MODE_q16)
+    int64_t s = (int64_t)a.x * b.x / 4 + (int64_t)a.y * b.y / 4 + (int64_t)a.z * b.z / 4;
+    return fx16_sat(fx_shr_round(s, 14));
+#else
     return num_add(num_add(num_mul(a.x, b.x), num_mul(a.y, b.y)), num_mul(a.z, b.z));
+#endif
 }
 static inline vec3 vec3_cross(vec3 a, vec3 b)
 {
@@ -31,28 +49,88 @@ static inline vec3 vec3_cross(vec3 a, vec3 b)
 }
 static inline num vec3_maxabs(vec3 a) { return num_max(num_abs(a.x), num_max(num_abs(a.y), num_abs(a.z))); }
 
-/* Unit vector along v and its length, without squaring large components:
- * v is first divided by its largest component magnitude, so the sum of
- * squares lies in [1,3]. Returns 0, or -1 (outputs untouched) for v = 0. */
-static inline int vec3_normalize(vec3 v, vec3 *unit, num *len)
+/* Unit vector along v, its length and the reciprocal of its length (each
+ * output may be NULL). Returns 0, or -1 (outputs untouched) for v = 0.
+ * No large component is ever squared and nothing is divided:
+ *   q16: v is scaled by a power of two 2^e (exactly, or rounded when
+ *        shifting right) so its largest component lies in [1, 2); the sum
+ *        of squares S of the scaled vector is formed exactly in 64 bits
+ *        and 1/sqrt(S) comes from fx_rsqrt_q30 (2^-29 relative), so each
+ *        unit component is w_i/sqrt(S) rounded once.
+ *   f32/f64: one square root and one reciprocal when the largest component
+ *        is in [2^-30, 2^30] (no overflow or underflow), else v is first
+ *        divided by it.
+ *   q32: v is divided by its largest component, a square root and a
+ *        reciprocal (native 128-bit divides where the compiler has them). */
+VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
 {
-    num m = vec3_maxabs(v), s;
-    vec3 w;
+    num m = vec3_maxabs(v);
     if (m == NUM_ZERO)
         return -1;
-    /* one reciprocal instead of three quotients when 1/m is well inside
-     * the range (m >= 1/64) */
-    w = m >= num_div(NUM_ONE, num_from_i(64)) ? vec3_scale(v, num_div(NUM_ONE, m)) : vec3_div(v, m);
-    s = num_sqrt(vec3_dot(w, w));
-    if (s == NUM_ZERO)
-        return -1;
-    *unit = vec3_scale(w, num_div(NUM_ONE, s));      /* s in [1, sqrt 3] */
-    if (len)
-        *len = num_mul(m, s);
-    return 0;
+#if defined(NUM_MODE_q16)
+    {
+        int64_t w[3], ss = 0;
+        uint64_t xs, y;
+        int e = 0, k = 1, i;
+        num raw[3];
+        raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
+#if defined(__GNUC__)
+        e = __builtin_clz((unsigned)m) - 15;         /* top bit of m to bit 16 */
+#else
+        while (((int64_t)m << e) < FX16_ONE)         /* m >= 1 unit, so e <= 16 */
+            e++;
+        while ((m >> -e) >= 2 * FX16_ONE)            /* m < 2^31, so e >= -15 */
+            e--;
+#endif
+        for (i = 0; i < 3; i++) {
+            w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
+            ss += w[i] * w[i];                          /* exact: < 13 * 2^32 */
+        }
+        while ((ss >> (2 * k)) >= ((int64_t)1 << 32))   /* ss/4^k in [2^30, 2^32) */
+            k++;
+        xs = (uint64_t)ss >> (2 * k);
+        y = fx_rsqrt_q30(xs);                           /* 2^k / sqrt(S), Q.30 */
+        if (unit)
+            *unit = vec3_make((num)fx_shr_round(w[0] * (int64_t)y, 30 + k),
+                              (num)fx_shr_round(w[1] * (int64_t)y, 30 + k),
+                              (num)fx_shr_round(w[2] * (int64_t)y, 30 + k));
+        if (len)      /* sqrt(S) 2^-e = xs y 2^(k - 46 - e) in Q16.16 */
+            *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - k + e));
+        if (rlen) {   /* 2^e / sqrt(S) = y 2^(e - k - 30) in Q16.16 */
+            int sh = 14 + k - e;
+            *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
+        }
+        return 0;
+    }
+#else
+    {
+        num s, inv;
+        vec3 w = v;
+#if NUM_IS_FIXED
+        const int direct = 0;
+#else
+        const int direct = m >= num_from_d(9.313225746154785e-10) && m <= num_from_d(1073741824.0);
+#endif
+        if (!direct)
+            w = vec3_div(v, m);
+        s = num_sqrt(vec3_dot(w, w));
+        if (s == NUM_ZERO)
+            return -1;
+        inv = num_div(NUM_ONE, s);
+        if (unit)
+            *unit = vec3_scale(w, inv);
+        if (len)
+            *len = direct ? s : num_mul(m, s);
+        if (rlen)
+            *rlen = direct ? inv : num_div(inv, m);
+        return 0;
+    }
+#endif
 }
 
-static inline vec3 mat3_mul(const mat3 *a, vec3 v)
+static inline int vec3_normalize(vec3 v, vec3 *unit, num *len) { return vec3_unit(v, unit, len, NULL); }
+
+VEC_HOT vec3 mat3_mul(const mat3 *a, vec3 v)
 {
     return vec3_make(num_add(num_add(num_mul(a->m[0], v.x), num_mul(a->m[1], v.y)), num_mul(a->m[2], v.z)),
                      num_add(num_add(num_mul(a->m[3], v.x), num_mul(a->m[4], v.y)), num_mul(a->m[5], v.z)),
@@ -69,7 +147,7 @@ static inline void vec3_to_d(vec3 v, double *d) { d[0] = num_to_d(v.x); d[1] = n
 
 /* a/b clamped to [-lim, lim] without overflowing: |a/b| >= lim (or b = 0)
  * yields +-lim with the quotient's sign; 0/0 is 0. lim must be >= 1. */
-static inline num num_div_clamp(num a, num b, num lim)
+VEC_HOT num num_div_clamp(num a, num b, num lim)
 {
     num aa = num_abs(a), ab = num_abs(b);
     int neg = (a < NUM_ZERO) != (b < NUM_ZERO);
@@ -85,16 +163,71 @@ static inline num num_div_clamp(num a, num b, num lim)
     }
 }
 
+/* Per-ray reciprocals of the direction components, so slab tests multiply
+ * instead of divide. q16: 1/d_i in Q32.32 (int64_t), used where |d_i| >=
+ * 2^-8, so that a product with a box offset (below 2^6, the sphere
+ * diameter) stays below 2^62 and the quotient below 2^14 < GEOM_TBIG;
+ * f32/f64: 1/d_i for d_i != 0; a zero entry means "divide" (q32 always
+ * divides: its 128-bit quotient is one instruction pair). */
+typedef struct vec3_rcp {
+#if defined(NUM_MODE_q16)
+    int64_t q[3];
+#else
+    num q[3];
+#endif
+} vec3_rcp;
+
+static inline void vec3_rcp_init(vec3 d, vec3_rcp *r)
+{
+    num c[3];
+    int i;
+    c[0] = d.x; c[1] = d.y; c[2] = d.z;
+    for (i = 0; i < 3; i++) {
+#if defined(NUM_MODE_q16)
+        int64_t a = c[i] < 0 ? -(int64_t)c[i] : c[i], q;
+        q = a >= 256 ? (((int64_t)1 << 48) + a / 2) / a : 0;
+        r->q[i] = c[i] < 0 ? -q : q;
+#elif NUM_IS_FIXED
+        r->q[i] = c[i] - c[i];          /* q32 divides */
+#else
+        r->q[i] = c[i] != NUM_ZERO ? num_div(NUM_ONE, c[i]) : NUM_ZERO;
+#endif
+    }
+}
+
+/* (x / d) clamped to +-GEOM_TBIG as num_div_clamp does, by the reciprocal
+ * rq of d where there is one. */
+#if defined(NUM_MODE_q16)
+typedef int64_t vec3_rcp_t;
+#else
+typedef num vec3_rcp_t;
+#endif
+VEC_HOT num vec3_slab_t(num x, num d, vec3_rcp_t rq, num big)
+{
+#if defined(NUM_MODE_q16)
+    if (rq != 0 && x < ((num)1 << 22) && x > -((num)1 << 22))
+        return (num)fx_shr_round((int64_t)x * rq, 32);
+#elif !NUM_IS_FIXED
+    if (rq != NUM_ZERO) {
+        num t = num_mul(x, rq);
+        return t > big ? big : t < num_neg(big) ? num_neg(big) : t;
+    }
+#else
+    (void)rq;
+#endif
+    return num_div_clamp(x, d, big);
+}
+
 /* Clips the relative ray interval [*a, *b] (parameters measured from o) to
- * the slab lo <= o + t d <= hi of one axis, with the same clamped quotient
- * as plane faces. 1 when the interval becomes empty. */
-static inline int vec3_slab_miss(num lo, num hi, num o, num d, num *a, num *b)
+ * the slab lo <= o + t d <= hi of one axis (rq: the reciprocal of d). 1 when
+ * the interval becomes empty. */
+VEC_HOT int vec3_slab_miss(num lo, num hi, num o, num d, vec3_rcp_t rq, num *a, num *b)
 {
     num t0, t1, big = num_from_i(GEOM_TBIG);
     if (d == NUM_ZERO)
         return o < lo || o > hi;
-    t0 = num_div_clamp(num_sub(lo, o), d, big);
-    t1 = num_div_clamp(num_sub(hi, o), d, big);
+    t0 = vec3_slab_t(num_sub(lo, o), d, rq, big);
+    t1 = vec3_slab_t(num_sub(hi, o), d, rq, big);
     if (d < NUM_ZERO) { num t = t0; t0 = t1; t1 = t; }
     if (t0 > *a) *a = t0;
     if (t1 < *b) *b = t1;
@@ -105,20 +238,61 @@ static inline int vec3_slab_miss(num lo, num hi, num o, num d, num *a, num *b)
  * parameter tc: 1 when the ray misses the box [lo, hi] for every t in
  * [tmin, tmax]. The origin is first moved to o + tc d, inside the sphere
  * that contains the box, so every difference is at most the sphere's
- * diameter. */
-static inline int vec3_box_miss(vec3 lo, vec3 hi, vec3 o, vec3 d, num tc, num tmin, num tmax)
+ * diameter. rc holds the reciprocals of d's components. */
+VEC_HOT int vec3_box_miss(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc, num tc,
+                                num tmin, num tmax)
 {
     vec3 o1 = vec3_madd(o, tc, d);
     num a = num_sub(tmin, tc), b = num_sub(tmax, tc);
-    return vec3_slab_miss(lo.x, hi.x, o1.x, d.x, &a, &b) || vec3_slab_miss(lo.y, hi.y, o1.y, d.y, &a, &b)
-        || vec3_slab_miss(lo.z, hi.z, o1.z, d.z, &a, &b);
+    return vec3_slab_miss(lo.x, hi.x, o1.x, d.x, rc->q[0], &a, &b)
+        || vec3_slab_miss(lo.y, hi.y, o1.y, d.y, rc->q[1], &a, &b)
+        || vec3_slab_miss(lo.z, hi.z, o1.z, d.z, rc->q[2], &a, &b);
+}
+
+/* a*b clamped to [-lim, lim] (lim > 0) without saturating: a product
+ * beyond lim gives +-lim and counts no overflow. */
+static inline num num_mul_clamp(num a, num b, num lim)
+{
+#if defined(NUM_MODE_q16)
+    int64_t p = (int64_t)a * b, l = (int64_t)lim << 16;
+    if (p >= l) return lim;
+    if (p <= -l) return -lim;
+    return fx16_mul(a, b);
+#elif NUM_IS_FIXED
+    num ab = num_abs(b);
+    if (ab > NUM_ONE && num_abs(a) >= num_div(lim, ab))
+        return (a < NUM_ZERO) != (b < NUM_ZERO) ? num_neg(lim) : lim;
+    {
+        num t = num_mul(a, b);
+        return t > lim ? lim : t < num_neg(lim) ? num_neg(lim) : t;
+    }
+#else
+    num t = num_mul(a, b);
+    return t > lim ? lim : t < num_neg(lim) ? num_neg(lim) : t;
+#endif
+}
+
+/* n1/d1 > n2/d2 for d1, d2 > 0: exact in q16 (64-bit cross products) and in
+ * q32 where the compiler has 128-bit integers; else on the rounded
+ * quotients (what the divide would give). */
+static inline int num_frac_gt(num n1, num d1, num n2, num d2)
+{
+#if defined(NUM_MODE_q16)
+    return (int64_t)n1 * d2 > (int64_t)n2 * d1;
+#elif NUM_IS_FIXED && defined(FX_HAVE_INT128)
+    return (fx_i128)n1 * d2 > (fx_i128)n2 * d1;
+#elif NUM_IS_FIXED
+    return num_div(n1, d1) > num_div(n2, d2);
+#else
+    return num_mul(n1, d2) > num_mul(n2, d1);
+#endif
 }
 
 /* Bounding-sphere rejection: 1 when the ray o + t d (d unit) misses the
  * sphere (c, r) for every t in [tmin, tmax]; else 0 and *tc = the parameter of
  * the ray point closest to c. Division-free; the only squares are of
  * quantities already checked to be at most r (docs/numerics.md). */
-static inline int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmin, num tmax, num *tc)
+VEC_HOT int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmin, num tmax, num *tc)
 {
     vec3 oc = vec3_sub(c, o), q;
     num t = vec3_dot(oc, d);

@@ -1,6 +1,8 @@
 /* image_png — PNG input and output of 8-bit rasters through libpng's
  * simplified API (no setjmp); outputs are committed through outfile. */
 #include "image/image_png.h"
+#include "image/image_png_write.h"
+#include <omp.h>
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <png.h>
@@ -27,15 +29,23 @@ static int image_png_commit(const char *path, png_image *pi, const void *px, int
     return rc;
 }
 
+int image_write_png_mt(const char *path, const image *img, int threads, diag *err)
+{
+    unsigned char *buf;
+    size_t size;
+    int rc;
+    if (img->channels != 1 && img->channels != 3)
+        return diag_at(err, DIAG_USAGE, path, 0, 0, "internal: bad channel count");
+    if (image_png_write_mem(img, threads, IMAGE_PNG_WRITE_LEVEL, path, &buf, &size, err))
+        return err->status;
+    rc = outfile_write_all(path, buf, size, err);
+    mem_free(buf);
+    return rc;
+}
+
 int image_write_png(const char *path, const image *img, diag *err)
 {
-    png_image pi;
-    memset(&pi, 0, sizeof pi);
-    pi.version = PNG_IMAGE_VERSION;
-    pi.width = (png_uint_32)img->width;
-    pi.height = (png_uint_32)img->height;
-    pi.format = img->channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
-    return image_png_commit(path, &pi, img->px, img->width * img->channels, NULL, err);
+    return image_write_png_mt(path, img, omp_get_max_threads(), err);
 }
 
 int image_write_png_palette(const char *path, int width, int height, const uint8_t *index,

@@ -1,5 +1,6 @@
-/* image_png — PNG input and output of 8-bit rasters through libpng's
- * simplified API. Shared by the renderer (true-colour output), the display
+/* image_png — PNG input and output of 8-bit rasters: reading and palette
+ * output through libpng's simplified API, grey and RGB output through the
+ * threaded encoder image_png_write. Shared by the renderer (true-colour output), the display
  * shim (palette output) and compare (reading references). */
 #ifndef IMAGE_PNG_H
 #define IMAGE_PNG_H
@@ -8,7 +9,10 @@
 #include "image/image.h"
 #include "util/diag.h"
 
-/* Writes img as an 8-bit grey or RGB PNG, committed on close. */
+/* Writes img as an 8-bit grey or RGB PNG, committed on close, encoded on
+ * up to `threads` threads (image_png_write); image_write_png uses OpenMP's
+ * default count. */
+int image_write_png_mt(const char *path, const image *img, int threads, diag *err);
 int image_write_png(const char *path, const image *img, diag *err);
 /* Writes an 8-bit palette PNG: index has width*height entries (top row
  * first); palette holds ncolors RGB triples (1..256). */

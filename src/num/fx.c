@@ -6,50 +6,43 @@ unsigned long fx_overflows;
 
 /* ---- Q16.16 ---------------------------------------------------------- */
 
-fx16 fx16_from_double(double x)
-{
-    double r;
-    if (x != x) { fx_overflows++; return 0; }
-    r = x * 65536.0;
-    if (r >= 2147483647.5) { fx_overflows++; return FX16_MAX; }
-    if (r <= -2147483648.5) { fx_overflows++; return FX16_MIN; }
-    return (fx16)llround(r);
-}
+/* 1/sqrt(X) in Q1.15 at the centre of [i/256, (i+1)/256), i = 64..255:
+ * the starting point of fx16_rsqrt, good to about 2^-8. */
+const uint16_t fx_rsqrt_tab[192] = {
+    65281, 64781, 64292, 63814, 63347, 62889, 62442, 62004, 61575, 61154, 60742, 60339,
+    59943, 59555, 59175, 58801, 58435, 58075, 57722, 57376, 57035, 56700, 56372, 56049,
+    55731, 55419, 55112, 54810, 54513, 54221, 53933, 53650, 53371, 53097, 52826, 52560,
+    52298, 52040, 51785, 51535, 51288, 51044, 50804, 50567, 50333, 50103, 49876, 49652,
+    49430, 49212, 48997, 48784, 48574, 48367, 48163, 47961, 47761, 47564, 47370, 47178,
+    46988, 46800, 46615, 46432, 46251, 46072, 45895, 45720, 45547, 45376, 45207, 45040,
+    44875, 44711, 44550, 44390, 44232, 44075, 43920, 43767, 43615, 43465, 43316, 43169,
+    43024, 42879, 42737, 42595, 42456, 42317, 42180, 42044, 41910, 41776, 41644, 41514,
+    41384, 41256, 41129, 41003, 40878, 40754, 40631, 40510, 40390, 40270, 40152, 40035,
+    39919, 39803, 39689, 39576, 39464, 39352, 39242, 39133, 39024, 38916, 38810, 38704,
+    38599, 38494, 38391, 38289, 38187, 38086, 37986, 37887, 37788, 37690, 37593, 37497,
+    37401, 37307, 37213, 37119, 37027, 36935, 36843, 36753, 36663, 36573, 36485, 36397,
+    36309, 36222, 36136, 36051, 35966, 35882, 35798, 35715, 35632, 35550, 35469, 35388,
+    35307, 35228, 35148, 35070, 34991, 34914, 34837, 34760, 34684, 34608, 34533, 34458,
+    34384, 34310, 34237, 34164, 34092, 34020, 33949, 33878, 33807, 33737, 33668, 33599,
+    33530, 33461, 33393, 33326, 33259, 33192, 33126, 33060, 32994, 32929, 32864, 32800,
+};
 
-double fx16_to_double(fx16 a) { return (double)a / 65536.0; }
-
-/* Quotient a/b in Q16.16: the dividend a*2^16 fits int64_t exactly. */
-fx16 fx16_div(fx16 a, fx16 b)
+fx16 fx16_rsqrt(fx16 a)
 {
-    int64_t n, q, r;
-    if (b == 0) {
-        fx_overflows++;
-        return a > 0 ? FX16_MAX : a < 0 ? FX16_MIN : 0;
-    }
-    n = (int64_t)a * 65536;
-    q = n / b;
-    r = n % b;
-    if (r < 0) r = -r;
-    if (2 * r >= (b < 0 ? -(int64_t)b : (int64_t)b))
-        q += ((n < 0) != (b < 0)) ? -1 : 1;
-    return fx16_sat(q);
-}
-
-/* Q16.16 square root, rounded to nearest: the integer root of a * 2^16.
- * A binary64 square root of the exact integer (below 2^47, so exactly
- * representable) lands within one of the floor root; the integer checks
- * that follow make s exactly floor(sqrt(v)), so the result does not depend
- * on the floating-point unit. */
-fx16 fx16_sqrt(fx16 a)
-{
-    uint64_t v, s;
-    if (a < 0) { fx_overflows++; return 0; }
-    v = (uint64_t)a << 16;
-    s = (uint64_t)sqrt((double)v);
-    while (s * s > v) s--;
-    while ((s + 1) * (s + 1) <= v) s++;
-    if (v - s * s > s) s++;            /* round to nearest */
-    return (fx16)s;                    /* s <= 2^23.5: fits */
+    uint64_t x, xs, y, lim = (uint64_t)1 << 50;
+    int s = 0;
+    if (a <= 0) { fx_overflows++; return FX16_MAX; }
+    x = (uint64_t)a;
+    /* xs = x * 4^s in [2^30, 2^32) */
+    xs = x;
+    while (xs < ((uint64_t)1 << 30)) { xs <<= 2; s++; }
+    y = fx_rsqrt_q30(xs);
+    /* 1/sqrt(x) * 2^24 = y * 2^(s - 22) */
+    y = (y + ((uint64_t)1 << (21 - s))) >> (22 - s);
+    /* round to nearest: (2y-1)^2 x <= 2^50 < (2y+1)^2 x */
+    while ((2 * y + 1) * (2 * y + 1) * x <= lim) y++;
+    while (y > 1 && (2 * y - 1) * (2 * y - 1) * x > lim) y--;
+    return (fx16)y;
 }
 
 /* ---- portable 128-bit helpers for Q32.32 ------------------------------ */
@@ -112,9 +105,7 @@ fx32 fx32_from_double(double x)
     return (fx32)llround(r);
 }
 
-double fx32_to_double(fx32 a) { return (double)a / 4294967296.0; }
-
-fx32 fx32_mul(fx32 a, fx32 b)
+fx32 fx32_mul_portable(fx32 a, fx32 b)
 {
     u128 p = u128_mul64(mag64(a), mag64(b));
     p = u128_add64(p, (uint64_t)1 << 31);          /* round half away from zero */
@@ -168,7 +159,7 @@ static uint64_t div128by64(uint64_t u1, uint64_t u0, uint64_t v, uint64_t *rem)
     return q1 * base + q0;
 }
 
-fx32 fx32_div(fx32 a, fx32 b)
+fx32 fx32_div_portable(fx32 a, fx32 b)
 {
     uint64_t ma = mag64(a), mb = mag64(b), q, r;
     int neg = (a < 0) != (b < 0);

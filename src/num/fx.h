@@ -2,8 +2,10 @@
  *
  *   fx16: Q16.16 in int32_t, products and quotients through int64_t
  *         (the 3081's fullword registers and even/odd register pairs).
- *   fx32: Q32.32 in int64_t, products and quotients through a portable
- *         128-bit pair of uint64_t (no compiler extensions).
+ *   fx32: Q32.32 in int64_t, products and quotients through 128 bits:
+ *         the compiler's unsigned __int128 where it has one (one multiply
+ *         or divide instruction pair), else a portable pair of uint64_t.
+ *         Both paths give identical results (test_fx compares them).
  *
  * Rounding: conversions from double, multiply and divide round to nearest,
  * ties away from zero; square root rounds to nearest. Results outside the
@@ -13,6 +15,7 @@
  * No operation here has undefined behaviour for any input. */
 #ifndef FX_H
 #define FX_H
+#include <math.h>
 #include <stdint.h>
 
 extern unsigned long fx_overflows;
@@ -30,16 +33,18 @@ typedef int64_t fx32;
 #define FX32_MAX  INT64_MAX
 #define FX32_MIN  INT64_MIN
 
-fx16 fx16_from_double(double x);
-double fx16_to_double(fx16 a);
-fx16 fx16_div(fx16 a, fx16 b);
-fx16 fx16_sqrt(fx16 a);
+#if defined(__SIZEOF_INT128__) && !defined(FX_PORTABLE)
+#define FX_HAVE_INT128 1
+__extension__ typedef unsigned __int128 fx_u128;
+__extension__ typedef __int128 fx_i128;
+#endif
 
 fx32 fx32_from_double(double x);
-double fx32_to_double(fx32 a);
-fx32 fx32_mul(fx32 a, fx32 b);
-fx32 fx32_div(fx32 a, fx32 b);
 fx32 fx32_sqrt(fx32 a);
+/* The portable 128-bit paths, always compiled (the reference for the
+ * native ones, and what fx32_mul/fx32_div use without __int128). */
+fx32 fx32_mul_portable(fx32 a, fx32 b);
+fx32 fx32_div_portable(fx32 a, fx32 b);
 
 /* Saturates a 64-bit intermediate to Q16.16, counting an overflow. */
 static inline fx16 fx16_sat(int64_t v)
@@ -48,6 +53,25 @@ static inline fx16 fx16_sat(int64_t v)
     if (v < FX16_MIN) { fx_overflows++; return FX16_MIN; }
     return (fx16)v;
 }
+
+/* Round to nearest, ties away from zero, without a call to llround: the
+ * truncation and its remainder are exact for |r| < 2^31. */
+static inline fx16 fx16_from_double(double x)
+{
+    double r, f;
+    int64_t i;
+    if (x != x) { fx_overflows++; return 0; }
+    r = x * 65536.0;
+    if (r >= 2147483647.5) { fx_overflows++; return FX16_MAX; }
+    if (r <= -2147483648.5) { fx_overflows++; return FX16_MIN; }
+    i = (int64_t)r;
+    f = r - (double)i;
+    if (f >= 0.5) i++;
+    else if (f <= -0.5) i--;
+    return (fx16)i;
+}
+
+static inline double fx16_to_double(fx16 a) { return (double)a * (1.0 / 65536.0); }
 
 static inline fx16 fx16_add(fx16 a, fx16 b) { return fx16_sat((int64_t)a + b); }
 static inline fx16 fx16_sub(fx16 a, fx16 b) { return fx16_sat((int64_t)a - b); }
@@ -61,6 +85,70 @@ static inline fx16 fx16_mul(fx16 a, fx16 b)
     int64_t p = (int64_t)a * b;
     int64_t q = p >= 0 ? (p + 32768) / 65536 : -((-p + 32768) / 65536);
     return fx16_sat(q);
+}
+
+/* Quotient a/b in Q16.16: the dividend a*2^16 fits int64_t exactly. */
+static inline fx16 fx16_div(fx16 a, fx16 b)
+{
+    int64_t n, q, r, mb;
+    if (b == 0) {
+        fx_overflows++;
+        return a > 0 ? FX16_MAX : a < 0 ? FX16_MIN : 0;
+    }
+    n = (int64_t)a * 65536;
+    q = n / b;
+    r = n - q * b;
+    if (r < 0) r = -r;
+    mb = b < 0 ? -(int64_t)b : (int64_t)b;
+    if (2 * r >= mb)
+        q += ((n < 0) != (b < 0)) ? -1 : 1;
+    return fx16_sat(q);
+}
+
+/* Q16.16 square root, rounded to nearest: the integer root of a * 2^16.
+ * A binary64 square root of the exact integer (below 2^47, so exactly
+ * representable) lands within one of the floor root; the integer checks
+ * that follow make s exactly floor(sqrt(v)), so the result does not depend
+ * on the floating-point unit. */
+static inline fx16 fx16_sqrt(fx16 a)
+{
+    uint64_t v, s;
+    if (a < 0) { fx_overflows++; return 0; }
+    v = (uint64_t)a << 16;
+    s = (uint64_t)sqrt((double)v);
+    while (s * s > v) s--;
+    while ((s + 1) * (s + 1) <= v) s++;
+    if (v - s * s > s) s++;            /* round to nearest */
+    return (fx16)s;                    /* s <= 2^23.5: fits */
+}
+
+/* 1/sqrt(a) in Q16.16 for a > 0, rounded to nearest: round(2^24/sqrt(raw)).
+ * A 256-entry table and two Newton steps in integers give it to well under
+ * one unit; an exact integer test then settles the last unit. No divide and
+ * no floating point. a <= 0 counts an overflow and gives FX16_MAX. */
+fx16 fx16_rsqrt(fx16 a);
+
+extern const uint16_t fx_rsqrt_tab[192];
+
+/* The core of fx16_rsqrt: for xs in [2^30, 2^32) (X = xs/2^32 in [1/4, 1)),
+ * 1/sqrt(X) in Q2.30, within 2 units (table, then two Newton steps). */
+static inline uint64_t fx_rsqrt_q30(uint64_t xs)
+{
+    uint64_t y = (uint64_t)fx_rsqrt_tab[(xs >> 24) - 64] << 15, y2, t;
+    int k;
+    for (k = 0; k < 2; k++) {                               /* y(3 - X y^2)/2 */
+        y2 = (y * y) >> 32;                                 /* Q.28 */
+        t = ((uint64_t)3 << 32) - ((xs * y2) >> 28);        /* Q.32 */
+        y = (y * (t >> 2)) >> 31;                           /* Q.30 */
+    }
+    return y;
+}
+
+/* v / 2^k rounded to nearest, ties away from zero (k >= 1). */
+static inline int64_t fx_shr_round(int64_t v, int k)
+{
+    int64_t h = (int64_t)1 << (k - 1);
+    return v >= 0 ? (v + h) >> k : -((-v + h) >> k);
 }
 
 static inline fx32 fx32_add(fx32 a, fx32 b)
@@ -78,4 +166,62 @@ static inline fx32 fx32_neg(fx32 a)
 }
 static inline fx32 fx32_sub(fx32 a, fx32 b) { return fx32_add(a, fx32_neg(b)); }
 static inline fx32 fx32_abs(fx32 a) { return a < 0 ? fx32_neg(a) : a; }
+static inline double fx32_to_double(fx32 a) { return (double)a * (1.0 / 4294967296.0); }
+
+#ifdef FX_HAVE_INT128
+/* Magnitude of a signed 64-bit value as unsigned, defined for INT64_MIN. */
+static inline uint64_t fx32_mag(int64_t a) { return a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a; }
+
+/* Applies a sign to magnitude m, saturating (and counting) out of range. */
+static inline fx32 fx32_sign(uint64_t m, int negative)
+{
+    if (m > (uint64_t)INT64_MAX + (uint64_t)negative) {
+        fx_overflows++;
+        return negative ? FX32_MIN : FX32_MAX;
+    }
+    return negative ? (fx32)((uint64_t)0 - m) : (fx32)m;
+}
+
+/* Q32.32 product rounded half away from zero, on one 64x64->128 multiply. */
+static inline fx32 fx32_mul(fx32 a, fx32 b)
+{
+    fx_u128 p = (fx_u128)fx32_mag(a) * fx32_mag(b) + ((fx_u128)1 << 31);
+    int neg = (a < 0) != (b < 0);
+    if (p >> 96) {
+        fx_overflows++;
+        return neg ? FX32_MIN : FX32_MAX;
+    }
+    return fx32_sign((uint64_t)(p >> 32), neg);
+}
+
+/* Q32.32 quotient rounded half away from zero, on one 128/64 divide. */
+static inline fx32 fx32_div(fx32 a, fx32 b)
+{
+    uint64_t ma = fx32_mag(a), mb = fx32_mag(b), q, r;
+    int neg = (a < 0) != (b < 0);
+    fx_u128 n;
+    if (b == 0) {
+        fx_overflows++;
+        return a > 0 ? FX32_MAX : a < 0 ? FX32_MIN : 0;
+    }
+    if ((ma >> 32) >= mb) {              /* quotient needs more than 64 bits */
+        fx_overflows++;
+        return neg ? FX32_MIN : FX32_MAX;
+    }
+    n = (fx_u128)ma << 32;
+    q = (uint64_t)(n / mb);
+    r = (uint64_t)(n - (fx_u128)q * mb);
+    if (r >= mb - r) {
+        if (q == UINT64_MAX) {
+            fx_overflows++;
+            return neg ? FX32_MIN : FX32_MAX;
+        }
+        q++;
+    }
+    return fx32_sign(q, neg);
+}
+#else
+static inline fx32 fx32_mul(fx32 a, fx32 b) { return fx32_mul_portable(a, b); }
+static inline fx32 fx32_div(fx32 a, fx32 b) { return fx32_div_portable(a, b); }
+#endif
 #endif

@@ -51,6 +51,8 @@ void render_stats_add(render_stats *a, const render_stats *b)
     a->csg_pruned += b->csg_pruned;
     a->arena_full += b->arena_full;
     a->range_cut += b->range_cut;
+    a->uv_skipped += b->uv_skipped;
+    a->shadow_skipped += b->shadow_skipped;
 }
 
 void render_stats_print(FILE *f, const render_stats *st)
@@ -58,10 +60,12 @@ void render_stats_print(FILE *f, const render_stats *st)
     int k;
     fprintf(f, "rays.primary=%llu\nrays.shadow=%llu\nrays.reflected=%llu\nrays.refracted=%llu\n"
                "pds.lookups=%llu\nfx.overflows=%llu\ntests.prim=%llu\ntests.bound=%llu\n"
-               "csg.pruned=%llu\ntime.compile_s=%.6f\ntime.render_s=%.6f\n",
+               "csg.pruned=%llu\nskipped.uv=%llu\nskipped.shadow=%llu\n"
+               "time.compile_s=%.6f\ntime.render_s=%.6f\n",
             st->rays_primary, st->rays_shadow, st->rays_reflected, st->rays_refracted,
             st->pds_lookups, st->fx_overflows, st->prim_tests, st->bound_tests,
-            st->csg_pruned, st->time_compile_s, st->time_render_s);
+            st->csg_pruned, st->uv_skipped, st->shadow_skipped, st->time_compile_s,
+            st->time_render_s);
     for (k = 0; k < HFP_EXC_N; k++)
         fprintf(f, "hfp.%s=%llu\n", hfp_exc_name[k], st->hfp_exc[k]);
     if (st->arena_full)

@@ -24,6 +24,10 @@ typedef struct render_stats {
     /* primary rays whose first possible surface lies beyond the mode's
      * range (docs/numerics.md): they show the background */
     unsigned long long range_cut;
+    /* work the scene did not need: hits whose (u,v) was not evaluated (no
+     * PDS, texture or bump on the face), shadow rays not traced (the
+     * attribute has no diffuse or specular term) */
+    unsigned long long uv_skipped, shadow_skipped;
     double time_compile_s, time_render_s;
 } render_stats;
 

@@ -187,6 +187,7 @@ int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray
 {
     const double margin = 1;
     double t = HUGE_VAL, o[3];
+    vec3 org;
     size_t k;
     int i;
     if (!cs->advance) {
@@ -214,19 +215,17 @@ int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray
     t = t - margin > after ? t - margin : after;
     *t0 = t;
     if (t == 0 && cs->eye_ok) {
-        r->o = cs->eye_n;
+        org = cs->eye_n;
     } else {
         for (i = 0; i < 3; i++)
             o[i] = cs->eye[i] + t * u[i];
         if (dmath_len3(o) > cs->orig_max)
             return -1;
-        r->o = vec3_from_d(o);
+        org = vec3_from_d(o);
     }
-    r->excl_prim = -1;
-    r->excl_enter = 0;
     /* u is a unit vector in double: rounding each component keeps it unit
      * to the mode's resolution, as a normalisation in num would */
-    r->d = vec3_from_d(u);
+    prim_ray_set(r, org, vec3_from_d(u), -1, 0);
     return 1;
 }
 

@@ -44,17 +44,13 @@ static void probe_free(void *v)
 /* Deck ray -> normalised-world ray in num; -1 for a zero direction. */
 static int probe_ray(const cscene *cs, const double *o, const double *d, prim_ray *r)
 {
-    double w[3];
+    double w[3], u[3];
+    vec3 dir;
     NS(cscene_to_world)(cs, o, w);
-    r->o = vec3_from_d(w);
-    r->excl_prim = -1;
-    r->excl_enter = 0;
-    {
-        double u[3];
-        if (dmath_unit3(d, u))
-            return -1;
-        return vec3_normalize(vec3_from_d(u), &r->d, NULL);
-    }
+    if (dmath_unit3(d, u) || vec3_normalize(vec3_from_d(u), &dir, NULL))
+        return -1;
+    prim_ray_set(r, vec3_from_d(w), dir, -1, 0);
+    return 0;
 }
 
 static int probe_prim_span(const void *v, int pi, const double *o, const double *d,
@@ -90,7 +86,7 @@ static int probe_trace(const probe_cs *pc, const prim_ray *r, probe_hit *h, vec3
                            (arena *)&pc->ar, &gs, &ch))
         return 0;
     *pn = vec3_madd(r->o, ch.t, r->d);
-    NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, &h->sf);
+    NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, 1, &h->sf);
     h->t = num_to_d(ch.t) / cs->nm.scale;
     h->prim = ch.prim;
     h->face = ch.face;
@@ -124,11 +120,12 @@ static int probe_respawn(const void *v, const double *o, const double *d, const 
     double u[3];
     if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || dmath_unit3(d2, u))
         return -1;
-    r2.o = pn;
-    if (vec3_normalize(vec3_from_d(u), &r2.d, NULL))
-        return -1;
-    r2.excl_prim = h1->prim;
-    r2.excl_enter = u[0] * h1->sf.n[0] + u[1] * h1->sf.n[1] + u[2] * h1->sf.n[2] < 0;
+    {
+        vec3 dir;
+        if (vec3_normalize(vec3_from_d(u), &dir, NULL))
+            return -1;
+        prim_ray_set(&r2, pn, dir, h1->prim, u[0] * h1->sf.n[0] + u[1] * h1->sf.n[1] + u[2] * h1->sf.n[2] < 0);
+    }
     return probe_trace(p, &r2, h2, &pn);
 }
 

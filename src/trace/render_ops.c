@@ -53,7 +53,7 @@ static void render_ops_ids(const cscene *cs, trace_ctx *tc, const prim_ray *r, d
     geom_surface sf;
     if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h))
         return;
-    NS(prim_surface)(&cs->prims[h.prim], h.face, vec3_madd(r->o, h.t, r->d), &sf);
+    NS(prim_surface)(&cs->prims[h.prim], h.face, vec3_madd(r->o, h.t, r->d), 1, &sf);
     out->prim = h.prim;
     out->face = h.face;
     out->region = (int32_t)(NS(trace_attribute)(cs, tc, h.prim, h.face, &sf) - cs->sc->attrs);
@@ -82,6 +82,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     const cscene *cs = vcs;
     trace_ctx *tc = vtc;
     double aspect = (double)o->width / o->height;
+    double rss = 1.0 / (o->aa * o->aa);
     int x, y, i, j, k, aa = o->aa, mid = aa / 2;
     tc->rs = (render_stats){0};
     tc->gs = (geom_stats){0};
@@ -123,7 +124,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                         pid = p;
                 }
             for (k = 0; k < 3; k++)
-                px[k] = render_ops_byte(sum[k] / (aa * aa));
+                px[k] = render_ops_byte(sum[k] * rss);
             fb->pid[(size_t)y * (size_t)o->width + (size_t)x] = pid;
         }
     st->rays_primary += tc->rs.rays_primary;
@@ -131,6 +132,8 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     st->rays_reflected += tc->rs.rays_reflected;
     st->rays_refracted += tc->rs.rays_refracted;
     st->pds_lookups += tc->rs.pds_lookups;
+    st->uv_skipped += tc->rs.uv_skipped;
+    st->shadow_skipped += tc->rs.shadow_skipped;
     st->prim_tests += tc->gs.prim_tests;
     st->bound_tests += tc->gs.bound_tests;
     st->csg_pruned += tc->gs.pruned;

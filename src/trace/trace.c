@@ -48,6 +48,26 @@ static const pds_def *trace_map_def(const cscene *cs, int pi, int face)
     return m >= 0 ? &cs->sc->maps[m]->def : NULL;
 }
 
+/* Whether face `face` of primitive pi needs (u,v) and its tangents: it has
+ * a PDS (the region depends on them), or its plain attribute has a texture
+ * or a bump. Otherwise only the normal is evaluated. */
+static int trace_needs_uv(const scene *sc, int pi, int face)
+{
+    const scene_attr *at = &sc->attrs[sc->prims[pi].attr];
+    if (face >= 0 && face < SCENE_MAX_FACES && sc->prims[pi].face_map[face] >= 0)
+        return 1;
+    return at->texture >= 0 || at->bump >= 0;
+}
+
+/* Evaluates the surface at a hit, (u,v) only where needed (counted when not). */
+static void trace_surface(const cscene *cs, trace_ctx *tc, const csg_hit *h, vec3 p, geom_surface *sf)
+{
+    int need = trace_needs_uv(cs->sc, h->prim, h->face);
+    if (!need)
+        tc->rs.uv_skipped++;
+    NS(prim_surface)(&cs->prims[h->prim], h->face, p, need, sf);
+}
+
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,
  * double) along unit direction d: the ray excludes that primitive's surface
  * and knows whether it goes into the primitive. */
@@ -55,10 +75,7 @@ static void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_pri
 {
     double dd[3];
     vec3_to_d(d, dd);
-    r->o = p;
-    r->d = d;
-    r->excl_prim = pi;
-    r->excl_enter = dmath_dot3(n_prim, dd) < 0;
+    prim_ray_set(r, p, d, pi, dmath_dot3(n_prim, dd) < 0);
 }
 
 /* Step 4: the fraction of the light at distance dist along unit l from p
@@ -83,7 +100,7 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
             return 0;
         p = vec3_madd(p, h.t, l);
         dist = num_sub(dist, h.t);
-        NS(prim_surface)(&cs->prims[h.prim], h.face, p, &sf);
+        trace_surface(cs, tc, &h, p, &sf);
         at = NS(trace_attribute)(cs, tc, h.prim, h.face, &sf);
         pass *= at->transmit;
         if (pass <= TRACE_MIN_WEIGHT)
@@ -106,7 +123,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     double d[3], ns[3], dn, refl, trans, tint[3], c[3], color[3], pass[SCENE_MAX_LIGHTS];
     double ldir[SCENE_MAX_LIGHTS][3];        /* unit direction to each light */
     size_t li;
-    int i, inside, far;
+    int i, inside, far, lit;
 
     /* Step 1: nearest hit and its primitive (PID), else the background. */
     if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)) {
@@ -120,7 +137,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         *pid = h.prim;
     p = vec3_madd(r->o, h.t, r->d);
     /* Step 2: (x,y,z) -> face parameters (u,v) and the tangent frame. */
-    NS(prim_surface)(&cs->prims[h.prim], h.face, p, &sf);
+    trace_surface(cs, tc, &h, p, &sf);
     /* Step 3: the region of (u,v) in the face's PDS and its attribute. */
     at = NS(trace_attribute)(cs, tc, h.prim, h.face, &sf);
 
@@ -137,8 +154,15 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     far = vec3_maxabs(p) > num_from_i(GEOM_TMAX);
 
     /* Step 4: shadows, per light: the fraction of it that reaches p. Lights
-     * behind the (unbumped) surface do not reach it. */
-    for (li = 0; li < cs->nlights; li++) {
+     * behind the (unbumped) surface do not reach it. An attribute with no
+     * diffuse and no specular term uses no light: no shadow ray then. */
+    lit = at->diffuse > 0 || at->specular > 0;
+    if (!lit) {
+        tc->rs.shadow_skipped += cs->nlights;
+        for (li = 0; li < cs->nlights; li++)
+            pass[li] = 0;
+    }
+    for (li = 0; lit && li < cs->nlights; li++) {
         vec3 l;
         num dist;
         double *ld = ldir[li];

@@ -10,7 +10,7 @@ $MAPRT render scenes/fig1.scene -o "$tmp/a.png" --size 40x30 --threads 2 --aa 2 
   || fail "render failed"
 [ -s "$tmp/a.png" ] || fail "no PNG written"
 grep -qx 'rays.primary=4800' "$tmp/stats" || fail "rays.primary should be 40*30*4"
-for k in rays.shadow rays.reflected rays.refracted pds.lookups fx.overflows time.render_s csg.pruned; do
+for k in rays.shadow rays.reflected rays.refracted pds.lookups fx.overflows time.render_s csg.pruned skipped.uv skipped.shadow; do
   grep -q "^$k=" "$tmp/stats" || fail "--stats lacks $k"
 done
 for m in q16 q32 f32 f64; do

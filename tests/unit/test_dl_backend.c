@@ -17,6 +17,7 @@
 #include "display5080/dl_encode.h"
 #include "display5080/dl_image.h"
 #include "display5080/dl_render.h"
+#include "display5080/dl_lib.h"
 #include "util/mem.h"
 #include "support.h"
 
@@ -417,10 +418,35 @@ static void test_dl_backend_find(void **state)
     assert_null(dl_backend_find("x11"));
 }
 
+/* A missing GL library or symbol is a clear DIAG_IO naming it, and leaves
+ * the table untouched; a present one fills it. */
+static void test_dl_backend_missing_library_is_reported(void **state)
+{
+    static const char *const none[] = {"libmaprt-no-such-gl.so.0", NULL};
+    static const char *const libc[] = {"libc.so.6", NULL};
+    static const char *const bad[] = {"maprt_no_such_symbol"};
+    static const char *const good[] = {"strlen"};
+    dl_lib_fn f[1] = {NULL};
+    diag err;
+    (void)state;
+    diag_init(&err);
+    assert_int_equal(dl_lib_load(none, good, f, 1, "osmesa", &err), DIAG_IO);
+    assert_non_null(strstr(err.msg, "cannot load libmaprt-no-such-gl.so.0"));
+    assert_null(f[0]);
+    diag_init(&err);
+    assert_int_equal(dl_lib_load(libc, bad, f, 1, "egl", &err), DIAG_IO);
+    assert_non_null(strstr(err.msg, "no symbol maprt_no_such_symbol"));
+    assert_null(f[0]);
+    diag_init(&err);
+    assert_int_equal(dl_lib_load(libc, good, f, 1, "egl", &err), 0);
+    assert_non_null(f[0]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_dl_backend_find),
+        cmocka_unit_test(test_dl_backend_missing_library_is_reported),
         cmocka_unit_test(test_dl_backend_f_image_png),
         cmocka_unit_test(test_dl_backend_f_image_osmesa),
         cmocka_unit_test(test_dl_backend_f_image_egl),

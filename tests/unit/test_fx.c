@@ -163,6 +163,54 @@ static void test_fx32_div_sqrt_full_range(void **state)
     assert_true(fx32_sqrt(INT64_MAX) == ref_fx32_sqrt(INT64_MAX));
 }
 
+/* The native 128-bit and portable Q32.32 paths agree bit for bit, overflow
+ * counts included, over the full range. */
+static void test_fx32_native_matches_portable(void **state)
+{
+    uint64_t s = test_seed("test_fx32_native_matches_portable");
+    int i;
+    (void)state;
+    for (i = 0; i < 300000; i++) {
+        int64_t a = (int64_t)test_rand(&s) >> (test_rand(&s) % 64);
+        int64_t b = (int64_t)test_rand(&s) >> (test_rand(&s) % 64);
+        unsigned long c0, c1, c2;
+        fx32 x, y;
+        if (i % 1000 == 0) a = INT64_MIN;
+        if (i % 1000 == 1) b = INT64_MIN;
+        c0 = fx_overflows;
+        x = fx32_mul(a, b);
+        c1 = fx_overflows;
+        y = fx32_mul_portable(a, b);
+        c2 = fx_overflows;
+        assert_true(x == y && c1 - c0 == c2 - c1);
+        x = fx32_div(a, b);
+        c1 = fx_overflows;
+        y = fx32_div_portable(a, b);
+        assert_true(x == y && c1 - c2 == fx_overflows - c1);
+    }
+}
+
+/* fx16_rsqrt is round(2^24 / sqrt(a)) for every a below 2^22, and for
+ * random inputs over the whole positive range (against long double). */
+static void test_fx16_rsqrt_rounds_to_nearest(void **state)
+{
+    uint64_t s = test_seed("test_fx16_rsqrt_rounds_to_nearest");
+    int64_t a;
+    int i;
+    unsigned long before;
+    (void)state;
+    for (a = 1; a < (1 << 22); a++)
+        assert_true((long double)fx16_rsqrt((fx16)a) == ref_round(16777216.0L / sqrtl((long double)a)));
+    for (i = 0; i < 200000; i++) {
+        fx16 x = (fx16)(test_rand(&s) >> 33);
+        if (x > 0)
+            assert_true((long double)fx16_rsqrt(x) == ref_round(16777216.0L / sqrtl((long double)x)));
+    }
+    before = fx_overflows;
+    assert_int_equal(fx16_rsqrt(0), FX16_MAX);
+    assert_true(fx_overflows == before + 1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -172,6 +220,8 @@ int main(void)
         cmocka_unit_test(test_fx_sqrt_exhaustive_low_and_near_squares),
         cmocka_unit_test(test_fx32_matches_long_double),
         cmocka_unit_test(test_fx32_div_sqrt_full_range),
+        cmocka_unit_test(test_fx32_native_matches_portable),
+        cmocka_unit_test(test_fx16_rsqrt_rounds_to_nearest),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

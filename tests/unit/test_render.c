@@ -59,6 +59,49 @@ static void test_render_goldens(void **state)
         }
 }
 
+/* An attribute with neither diffuse nor specular term casts no shadow rays
+ * (counted in shadow_skipped) and shows exactly its ambient colour; faces
+ * without PDS, texture or bump skip (u,v). The lit floor still casts them. */
+static void test_render_unlit_attribute_skips_shadow_rays(void **state)
+{
+    static const char deck[] =
+        "EYE 0 -6 2\nLOOKAT 0 0 0.5\nUP 0 0 1\nFOV 40\nAMBIENT 0.4 0.4 0.4\n"
+        "LIGHT 3 -4 6\nLIGHT -3 -4 6\n"
+        "ATTR GLOW COLOR 0.5 0.25 1 DIFFUSE 0 SPECULAR 0\nATTR FLOOR COLOR 0.6 0.6 0.6\n"
+        "SPHERE BALL 1 ATTR GLOW TRANSLATE 0 0 1\nHALFSPACE GROUND ATTR FLOOR\n"
+        "OBJECT BALL\nOBJECT GROUND\n";
+    const char *modes[] = {"q16", "f64"};
+    int m;
+    (void)state;
+    for (m = 0; m < 2; m++) {
+        scene *sc = tt_parse(deck);
+        render_fb fb;
+        render_stats st;
+        render_opts o = tt_render_opts(64, 48, 1);
+        diag err;
+        long ball = 0, hits = 0, i;
+        assert_non_null(sc);
+        diag_init(&err);
+        assert_int_equal(render_scene(sc, render_ops_find(modes[m]), &o, &fb, &st, &err), 0);
+        for (i = 0; i < 64 * 48; i++) {
+            hits += fb.pid[i] >= 0;
+            if (fb.pid[i] == 0) {
+                const unsigned char *px = fb.img.px + 3 * i;
+                ball++;
+                assert_true(px[0] == 51 && px[1] == 26 && px[2] == 102);
+            }
+        }
+        printf("# %s: %ld sphere pixels, %llu shadow rays skipped, %llu traced, %llu (u,v) skipped\n",
+               modes[m], ball, st.shadow_skipped, st.rays_shadow, st.uv_skipped);
+        assert_true(ball > 100);
+        assert_true(st.shadow_skipped == 2ull * (unsigned long long)ball);
+        assert_true(st.rays_shadow > 0);
+        assert_true(st.uv_skipped == (unsigned long long)hits);   /* no face needs (u,v) */
+        render_fb_free(&fb);
+        scene_free(sc);
+    }
+}
+
 static void test_render_counts_and_threads(void **state)
 {
     scene *sc = render_load("scenes/fig1.scene");
@@ -222,6 +265,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_render_goldens),
         cmocka_unit_test(test_render_counts_and_threads),
+        cmocka_unit_test(test_render_unlit_attribute_skips_shadow_rays),
         cmocka_unit_test(test_render_scale_independent),
         cmocka_unit_test(test_render_glass_modes_agree),
         cmocka_unit_test(test_render_mode_lookup),

@@ -1,0 +1,81 @@
+#!/bin/sh
+# make bench-peers: maprt (q16 and f64, one thread) against POV-Ray 3.7 on
+# the scenes of bench/peers (each .pov the same picture as its .scene,
+# checked here: share of pixels differing by more than 8/255), and f64
+# against bench/peers/minimal.c (a hand-written tracer of sphere.scene).
+# Each command runs N times (PEERS_RUNS, default 5), the commands
+# alternating so load changes hit all alike; the medians of whole-process
+# CPU seconds (user + sys) and wall seconds are printed, then the ratios
+# (maprt time / peer time: below 1 means maprt is faster).
+# Then the whole process on 1 and 2 threads (fig1 1024x1024, q16) and its
+# peak RSS. Usage: sh bench/peers/run.sh [MAPRT [MINIMAL]]
+bin=${1:-build/maprt}
+minimal=${2:-build/bench/minimal}
+runs=${PEERS_RUNS:-5}
+dir=$(dirname "$0")
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/maprt-peers-XXXXXX") || exit 3
+trap 'rm -rf "$tmp"' EXIT INT TERM
+command -v povray >/dev/null 2>&1 || { echo "bench-peers: povray (Debian povray) is not installed" >&2; exit 3; }
+
+# run LABEL CMD...: one timed run appended to $tmp/LABEL.t as "cpu wall"
+run() {
+  label=$1; shift
+  /usr/bin/time -f "%U %S %e" -o "$tmp/time" "$@" >/dev/null 2>&1 || { echo "bench-peers: $label failed: $*" >&2; exit 3; }
+  awk '{ printf "%.3f %.3f\n", $1 + $2, $3 }' "$tmp/time" >> "$tmp/$label.t"
+}
+# med LABEL COL: median of column COL (1 cpu, 2 wall)
+med() { sort -n -k"$2" "$tmp/$1.t" | awk -v c="$2" '{ v[NR] = $c } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0 ? a / b : 0) }'; }
+pov() { povray "+I$1" "+L$dir" "+O$2" "+W$3" "+H$4" +WT1 -D "File_Gamma=1.0" Display=off "$5"; }
+
+echo "scene,size,pixels_over_8,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_wall_s,f64_wall_s,pov_wall_s,q16/pov_cpu,f64/pov_cpu,q16/pov_wall,f64/pov_wall"
+for spec in sphere:bench/peers/sphere.scene:1024:768 csg1:bench/peers/csg1.scene:1024:768 \
+            csg81:bench/peers/csg81.scene:1024:768 slab8:bench/slab-8.scene:640:480; do
+  name=${spec%%:*}; rest=${spec#*:}; scene=${rest%%:*}; rest=${rest#*:}; w=${rest%%:*}; h=${rest#*:}
+  # the picture check: POV-Ray's PPM against maprt's f64 PNG
+  pov "$dir/$name.pov" "$tmp/$name.ppm" "$w" "$h" +FP >/dev/null 2>&1 || { echo "bench-peers: povray failed on $name" >&2; exit 3; }
+  "$bin" render "$scene" -o "$tmp/$name.png" --size "${w}x$h" --numeric f64 --threads 1 || exit 3
+  over=$("$bin" compare "$tmp/$name.ppm" "$tmp/$name.png" | sed -n 's/^pixels_over=//p')
+  i=0
+  while [ "$i" -lt "$runs" ]; do
+    run "$name.q16" "$bin" render "$scene" -o "$tmp/o.png" --size "${w}x$h" --numeric q16 --threads 1
+    run "$name.f64" "$bin" render "$scene" -o "$tmp/o.png" --size "${w}x$h" --numeric f64 --threads 1
+    run "$name.pov" povray "+I$dir/$name.pov" "+L$dir" "+O$tmp/p.png" "+W$w" "+H$h" +WT1 -D "File_Gamma=1.0" Display=off
+    i=$((i + 1))
+  done
+  qc=$(med "$name.q16" 1); fc=$(med "$name.f64" 1); pc=$(med "$name.pov" 1)
+  qw=$(med "$name.q16" 2); fw=$(med "$name.f64" 2); pw=$(med "$name.pov" 2)
+  echo "$name,${w}x$h,$over,$qc,$fc,$pc,$qw,$fw,$pw,$(ratio "$qc" "$pc"),$(ratio "$fc" "$pc"),$(ratio "$qw" "$pw"),$(ratio "$fw" "$pw")"
+done
+
+# at 2048x1536: /usr/bin/time counts CPU in 10 ms steps, and the minimal
+# tracer needs only a few of them at 1024x768
+echo
+echo "sphere.scene at 2048x1536 against the minimal tracer (bench/peers/minimal.c):"
+"$minimal" "$tmp/min.ppm" 2048 1536 || exit 3
+"$bin" render bench/peers/sphere.scene -o "$tmp/sphere2.png" --size 2048x1536 --numeric f64 --threads 1 || exit 3
+echo "pixels_over_8 (minimal vs maprt f64): $("$bin" compare "$tmp/min.ppm" "$tmp/sphere2.png" | sed -n 's/^pixels_over=//p')"
+i=0
+while [ "$i" -lt "$runs" ]; do
+  run min "$minimal" "$tmp/min.ppm" 2048 1536
+  run sf64 "$bin" render bench/peers/sphere.scene -o "$tmp/o.png" --size 2048x1536 --numeric f64 --threads 1
+  run sq16 "$bin" render bench/peers/sphere.scene -o "$tmp/o.png" --size 2048x1536 --numeric q16 --threads 1
+  i=$((i + 1))
+done
+echo "minimal cpu_s=$(med min 1) wall_s=$(med min 2); f64 cpu_s=$(med sf64 1) wall_s=$(med sf64 2); q16 cpu_s=$(med sq16 1)"
+echo "f64/minimal cpu=$(ratio "$(med sf64 1)" "$(med min 1)") wall=$(ratio "$(med sf64 2)" "$(med min 2)")"
+echo "q16/f64 (sphere) cpu=$(ratio "$(med sq16 1)" "$(med sf64 1)")"
+
+echo
+echo "whole process, scenes/fig1.scene 1024x1024 q16, 1 and 2 threads:"
+i=0
+while [ "$i" -lt "$runs" ]; do
+  run t1 "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 --threads 1
+  run t2 "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 --threads 2
+  run f1 "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 --threads 1 --numeric f64
+  i=$((i + 1))
+done
+echo "1 thread wall_s=$(med t1 2) cpu_s=$(med t1 1); 2 threads wall_s=$(med t2 2) cpu_s=$(med t2 1); speed-up $(ratio "$(med t1 2)" "$(med t2 2)")"
+echo "q16/f64 (fig1) cpu=$(ratio "$(med t1 1)" "$(med f1 1)")"
+/usr/bin/time -f "%M" -o "$tmp/rss" "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 >/dev/null 2>&1
+echo "peak RSS fig1 1024x1024: $(awk '{ printf "%.1f MiB", $1 / 1024 }' "$tmp/rss")"

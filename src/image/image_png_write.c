@@ -1,0 +1,233 @@
+/* image_png_write — banded, threaded PNG encoding (see image_png_write.h).
+ * Format: PNG (ISO/IEC 15948, RFC 2083): signature, IHDR, sRGB, IDAT, IEND;
+ * the IDAT data is one zlib stream (RFC 1950) of raw deflate bands (RFC
+ * 1951) each ended by a sync flush (an empty stored block), the last by
+ * the final block, followed by the Adler-32 of all filtered bytes. */
+#include "image/image_png_write.h"
+#include "util/mem.h"
+#include <omp.h>
+#include <stdint.h>
+#include <string.h>
+#include <zlib.h>
+
+#define IMAGE_PNG_WRITE_WINDOW 32768
+
+typedef struct image_png_write_band {
+    unsigned char *buf;
+    size_t len, cap;
+    uLong adler;               /* Adler-32 of this band's filtered bytes */
+    size_t raw;                /* filtered bytes in this band */
+    int failed;
+} image_png_write_band;
+
+/* Filters row cur (n bytes, bpp per pixel; prev is a row of zeros for the
+ * first row) into out[0..n]: type byte, then the bytes of the filter (0
+ * none, 1 sub, 2 up, 3 average, 4 Paeth) whose outputs, read as signed,
+ * have the least sum of magnitudes (libpng's heuristic). */
+static void image_png_write_filter(const unsigned char *cur, const unsigned char *prev, size_t n,
+                                   int bpp, unsigned char *out)
+{
+    unsigned long sum[5] = {0, 0, 0, 0, 0};
+    size_t i, k = (size_t)bpp;
+    int f, best = 0;
+    for (i = 0; i < n; i++) {
+        int x = cur[i], a = i >= k ? cur[i - k] : 0, b = prev[i], c = i >= k ? prev[i - k] : 0;
+        int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p;
+        int pc = p > c ? p - c : c - p, pr = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+        unsigned char v0 = (unsigned char)x, v1 = (unsigned char)(x - a), v2 = (unsigned char)(x - b);
+        unsigned char v3 = (unsigned char)(x - ((a + b) >> 1)), v4 = (unsigned char)(x - pr);
+        sum[0] += v0 < 128 ? v0 : 256u - v0;
+        sum[1] += v1 < 128 ? v1 : 256u - v1;
+        sum[2] += v2 < 128 ? v2 : 256u - v2;
+        sum[3] += v3 < 128 ? v3 : 256u - v3;
+        sum[4] += v4 < 128 ? v4 : 256u - v4;
+    }
+    for (f = 1; f < 5; f++)
+        if (sum[f] < sum[best])
+            best = f;
+    out[0] = (unsigned char)best;
+    out++;
+    switch (best) {
+    case 0:
+        memcpy(out, cur, n);
+        break;
+    case 1:
+        for (i = 0; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - (i >= k ? cur[i - k] : 0));
+        break;
+    case 2:
+        for (i = 0; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - prev[i]);
+        break;
+    case 3:
+        for (i = 0; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - (((i >= k ? cur[i - k] : 0) + prev[i]) >> 1));
+        break;
+    default:
+        for (i = 0; i < n; i++) {
+            int a = i >= k ? cur[i - k] : 0, b = prev[i], c = i >= k ? prev[i - k] : 0;
+            int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p;
+            int pc = p > c ? p - c : c - p;
+            out[i] = (unsigned char)(cur[i] - (pa <= pb && pa <= pc ? a : pb <= pc ? b : c));
+        }
+        break;
+    }
+}
+
+/* Appends the deflate output of z's pending input to b, growing b. */
+static int image_png_write_pump(z_stream *z, int flush, image_png_write_band *b)
+{
+    for (;;) {
+        int rc;
+        if (b->len == b->cap) {
+            size_t cap = b->cap ? 2 * b->cap : 65536;
+            unsigned char *nb = mem_realloc(b->buf, cap);
+            if (!nb)
+                return -1;
+            b->buf = nb;
+            b->cap = cap;
+        }
+        z->next_out = b->buf + b->len;
+        z->avail_out = (uInt)(b->cap - b->len);
+        rc = deflate(z, flush);
+        b->len = b->cap - z->avail_out;
+        if (rc == Z_STREAM_END)
+            return 0;
+        if (rc != Z_OK && rc != Z_BUF_ERROR)
+            return -1;
+        if (z->avail_in == 0 && z->avail_out != 0)
+            return 0;
+    }
+}
+
+/* Deflates rows [y0, y1) of img into b (raw deflate); the rows before y0
+ * (their last 32 KiB once filtered) are the dictionary. */
+static void image_png_write_band_run(const image *img, int y0, int y1, int last, int level,
+                                     image_png_write_band *b)
+{
+    size_t n = (size_t)img->width * (size_t)img->channels, rb = n + 1;
+    int bpp = img->channels, y, yd = y0 - (int)((IMAGE_PNG_WRITE_WINDOW + rb - 1) / rb);
+    unsigned char *zero = mem_calloc(1, n), *row = mem_alloc(rb), *dict = NULL;
+    z_stream z;
+    memset(&z, 0, sizeof z);
+    b->adler = adler32(0L, Z_NULL, 0);
+    if (!zero || !row || deflateInit2(&z, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
+        b->failed = 1;
+        mem_free(zero);
+        mem_free(row);
+        return;
+    }
+    if (y0 > 0) {
+        size_t dl = 0;
+        if (yd < 0)
+            yd = 0;
+        if (!(dict = mem_alloc((size_t)(y0 - yd) * rb)))
+            b->failed = 1;
+        for (y = yd; dict && y < y0; y++, dl += rb)
+            image_png_write_filter(img->px + (size_t)y * n, y ? img->px + (size_t)(y - 1) * n : zero, n,
+                                   bpp, dict + dl);
+        if (dict && dl > IMAGE_PNG_WRITE_WINDOW)
+            deflateSetDictionary(&z, dict + dl - IMAGE_PNG_WRITE_WINDOW, IMAGE_PNG_WRITE_WINDOW);
+        else if (dict)
+            deflateSetDictionary(&z, dict, (uInt)dl);
+        mem_free(dict);
+    }
+    for (y = y0; y < y1 && !b->failed; y++) {
+        image_png_write_filter(img->px + (size_t)y * n, y ? img->px + (size_t)(y - 1) * n : zero, n, bpp,
+                               row);
+        b->adler = adler32(b->adler, row, (uInt)rb);
+        b->raw += rb;
+        z.next_in = row;
+        z.avail_in = (uInt)rb;
+        if (image_png_write_pump(&z, y + 1 < y1 ? Z_NO_FLUSH : last ? Z_FINISH : Z_SYNC_FLUSH, b))
+            b->failed = 1;
+    }
+    deflateEnd(&z);
+    mem_free(zero);
+    mem_free(row);
+}
+
+static unsigned char *image_png_write_u32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)(v >> 24);
+    p[1] = (unsigned char)(v >> 16);
+    p[2] = (unsigned char)(v >> 8);
+    p[3] = (unsigned char)v;
+    return p + 4;
+}
+
+/* Writes one chunk (length, type, data, CRC) at p; returns the end. */
+static unsigned char *image_png_write_chunk(unsigned char *p, const char *type, const unsigned char *data,
+                                            size_t len)
+{
+    uLong crc;
+    p = image_png_write_u32(p, (uint32_t)len);
+    memcpy(p, type, 4);
+    if (len)
+        memmove(p + 4, data, len);
+    crc = crc32(0L, p, (uInt)(4 + len));
+    return image_png_write_u32(p + 4 + len, (uint32_t)crc);
+}
+
+int image_png_write_mem(const image *img, int threads, int level, const char *name,
+                        unsigned char **out, size_t *len, diag *err)
+{
+    static const unsigned char sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+    int nb = (img->height + IMAGE_PNG_WRITE_BAND - 1) / IMAGE_PNG_WRITE_BAND, i, failed = 0;
+    image_png_write_band *bands = mem_calloc((size_t)nb, sizeof *bands);
+    unsigned char ihdr[13], *png, *p;
+    size_t zlen = 2 + 4, total;
+    uLong adler;
+    if (!bands)
+        return diag_at(err, DIAG_IO, name, 0, 0, "out of memory encoding a PNG");
+    if (threads < 1)
+        threads = 1;
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
+    for (i = 0; i < nb; i++) {
+        int y0 = i * IMAGE_PNG_WRITE_BAND, y1 = y0 + IMAGE_PNG_WRITE_BAND;
+        image_png_write_band_run(img, y0, y1 < img->height ? y1 : img->height, i == nb - 1, level, &bands[i]);
+    }
+    adler = adler32(0L, Z_NULL, 0);
+    for (i = 0; i < nb; i++) {
+        failed |= bands[i].failed;
+        zlen += bands[i].len;
+        adler = adler32_combine(adler, bands[i].adler, (z_off_t)bands[i].raw);
+    }
+    /* one IDAT per band: the first also holds the zlib header, the last the
+     * Adler-32 trailer; 8 + 25 + 13 + 12 + 12 bytes of fixed chunks */
+    total = sizeof sig + 25 + 13 + 12 + zlen + 12 * (size_t)nb;
+    png = failed ? NULL : mem_alloc(total);
+    if (!png) {
+        for (i = 0; i < nb; i++)
+            mem_free(bands[i].buf);
+        mem_free(bands);
+        return diag_at(err, DIAG_IO, name, 0, 0, failed ? "PNG deflate failed" : "out of memory encoding a PNG");
+    }
+    memcpy(png, sig, sizeof sig);
+    image_png_write_u32(ihdr, (uint32_t)img->width);
+    image_png_write_u32(ihdr + 4, (uint32_t)img->height);
+    ihdr[8] = 8;                                     /* bit depth */
+    ihdr[9] = img->channels == 1 ? 0 : 2;            /* grey or truecolour */
+    ihdr[10] = ihdr[11] = ihdr[12] = 0;              /* deflate, adaptive filters, no interlace */
+    p = image_png_write_chunk(png + sizeof sig, "IHDR", ihdr, sizeof ihdr);
+    p = image_png_write_chunk(p, "sRGB", (const unsigned char *)"\0", 1);   /* perceptual, as libpng */
+    for (i = 0; i < nb; i++) {
+        /* assemble the chunk data in place after the 8-byte chunk header */
+        unsigned char *d = p + 8, *q = d;
+        if (i == 0) {
+            *q++ = 0x78;                             /* deflate, 32 KiB window */
+            *q++ = level <= 1 ? 0x01 : level <= 5 ? 0x5e : level == 6 ? 0x9c : 0xda;
+        }
+        memcpy(q, bands[i].buf, bands[i].len);
+        q += bands[i].len;
+        if (i == nb - 1)
+            q = image_png_write_u32(q, (uint32_t)adler);
+        p = image_png_write_chunk(p, "IDAT", d, (size_t)(q - d));
+        mem_free(bands[i].buf);
+    }
+    p = image_png_write_chunk(p, "IEND", NULL, 0);
+    mem_free(bands);
+    *out = png;
+    *len = (size_t)(p - png);
+    return 0;
+}
