@@ -113,6 +113,12 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
     return st;
 }
 
+static void cli_scene_warn(void *ctx, const diag *w)
+{
+    (void)ctx;
+    diag_print_warning(stderr, w);
+}
+
 int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
 {
     cms_deck *deck;
@@ -136,6 +142,7 @@ int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
         im.dir[0] = 0;
     ld.image = cli_images_read;
     ld.ctx = &im;
+    ld.warn = cli_scene_warn;
     st = cms_deck_open(&deck, &src, &f->disks, name, &f->decode, err);
     if (st == 0) {
         st = scene_parse_with(&src, &ld, out, err);
