@@ -61,6 +61,15 @@ $(FLAGS_STAMP): FORCE
 	@mkdir -p $(@D)
 	@echo '$(FLAGS_NOW)' | cmp -s - $@ || echo '$(FLAGS_NOW)' > $@
 
+# The git revision goes into version.o alone (maprt --version, provenance).
+GIT_REV := $(shell git describe --always --dirty 2>/dev/null)
+REV_STAMP := $(BUILD)/rev.stamp
+$(REV_STAMP): FORCE
+	@mkdir -p $(@D)
+	@echo '$(GIT_REV)' | cmp -s - $@ || echo '$(GIT_REV)' > $@
+$(BUILD)/obj/src/util/version.o: $(REV_STAMP)
+$(BUILD)/obj/src/util/version.o: MODULE_CFLAGS += $(if $(GIT_REV),-DMAPRT_REV='"$(GIT_REV)"')
+
 $(BUILD)/obj/%.o: %.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@

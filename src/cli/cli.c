@@ -1,5 +1,7 @@
 /* cli — option helpers shared by the subcommands (see cli.h). */
 #include "cli/cli.h"
+#include "util/mem.h"
+#include "util/suggest.h"
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -83,3 +85,112 @@ int cli_wants_help(int argc, char **argv)
 }
 
 int cli_is_tty(void) { return isatty(2); }
+
+/* Offers every option the help text names ("-o", "--size", ...) to sg, and
+ * notes in *prefix the one that opt abbreviates if exactly one does. */
+static void cli_offer_options(suggest *sg, const char *text, const char *opt, const char **prefix,
+                              size_t *prefix_len)
+{
+    const char *p = text;
+    size_t lo = strlen(opt);
+    int nprefix = 0;
+    while ((p = strchr(p, '-')) != NULL) {
+        const char *q = p;
+        size_t n;
+        if (p > text && !strchr(" \t\n,[(|", p[-1])) {
+            p++;
+            continue;
+        }
+        q += p[1] == '-' ? 2 : 1;
+        while ((*q >= 'a' && *q <= 'z') || (*q >= 'A' && *q <= 'Z') || (*q >= '0' && *q <= '9')
+               || (*q == '-' && q[1] != '-' && q > p + 2))
+            q++;
+        n = (size_t)(q - p);
+        if (n >= 2 && p[n - 1] != '-') {
+            suggest_try(sg, p, n);
+            if (lo > 2 && n > lo && !strncmp(p, opt, lo) && !(*prefix && *prefix_len == n
+                                                              && !strncmp(*prefix, p, n))) {
+                *prefix = p;
+                *prefix_len = n;
+                nprefix++;
+            }
+        }
+        p = q;
+    }
+    if (nprefix != 1)
+        *prefix = NULL;
+}
+
+int cli_unknown_option(const char *cmd, const char *opt, void (*help)(FILE *f))
+{
+    char *text = NULL, *near = NULL;
+    size_t size = 0, near_len = 0;
+    const char *prefix = NULL;
+    FILE *f = help ? open_memstream(&text, &size) : NULL;
+    suggest sg;
+    suggest_init(&sg, opt);
+    if (f) {
+        help(f);
+        if (fclose(f) == 0 && text) {
+            size_t plen = 0;
+            cli_offer_options(&sg, text, opt, &prefix, &plen);
+            if (prefix) {
+                near = (char *)prefix;
+                near_len = plen;
+            } else if (suggest_best(&sg)) {
+                near = (char *)sg.best;
+                near_len = sg.best_len;
+            }
+        }
+    }
+    if (near)
+        cli_usage_error(cmd, "unknown option '%s' (did you mean %.*s?)", opt, (int)near_len, near);
+    else
+        cli_usage_error(cmd, "unknown option '%s'", opt);
+    free(text);
+    return CLI_USAGE;
+}
+
+int cli_conventions(int *argc, char ***argv)
+{
+    int i, n = 0, ended = 0, version = 0;
+    char **in = *argv, **out = mem_calloc((size_t)*argc * 2 + 1, sizeof *out);
+    if (!out) {
+        *argv = NULL;
+        return 0;
+    }
+    for (i = 0; i < *argc; i++) {
+        char *a = in[i], *eq;
+        if (i == 0 || ended) {
+            if (ended && a[0] == '-' && a[1]) {
+                size_t len = strlen(a) + 3;
+                if (!(out[n] = mem_alloc(len))) {
+                    *argv = NULL;
+                    return 0;
+                }
+                snprintf(out[n++], len, "./%s", a);
+            } else {
+                out[n++] = a;
+            }
+        } else if (!strcmp(a, "--")) {
+            ended = 1;
+        } else if (!strcmp(a, "--version")) {
+            version = 1;
+        } else if (a[0] == '-' && a[1] == '-' && a[2] && (eq = strchr(a, '=')) != NULL && eq > a + 2) {
+            size_t k = (size_t)(eq - a);
+            if (!(out[n] = mem_alloc(k + 1))) {
+                *argv = NULL;
+                return 0;
+            }
+            memcpy(out[n], a, k);
+            out[n++][k] = '\0';
+            out[n++] = eq + 1;
+        } else {
+            out[n++] = a;
+        }
+    }
+    out[n] = NULL;
+    *argc = n;
+    *argv = out;
+    return version;
+}

@@ -20,6 +20,17 @@ int cli_usage_error(const char *cmd, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* The usage error for an unknown option opt of cmd, naming the option of
+ * cmd's --help text (written by help) nearest to it: "unknown option
+ * '--szie' (did you mean --size?)". Returns CLI_USAGE. */
+int cli_unknown_option(const char *cmd, const char *opt, void (*help)(FILE *f));
+/* getopt_long conventions for every subcommand, applied once in main before
+ * the subcommand parses argv[1..]: "--opt=value" becomes "--opt" "value";
+ * "--" ends the options (it is dropped, and a later argument that begins
+ * with '-' is passed as "./-..." so that it reads as a file); returns 1 if
+ * --version was given before any "--". *argv is replaced by a new array
+ * (kept for the life of the process); NULL argv on out of memory. */
+int cli_conventions(int *argc, char ***argv);
 /* The value of option argv[*i] (the next argument); advances *i. NULL (after
  * a usage error message) if missing. */
 const char *cli_value(const char *cmd, int argc, char **argv, int *i);

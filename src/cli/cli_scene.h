@@ -34,6 +34,12 @@ extern const char cli_files_help[];
  * record. */
 int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err);
 
+/* The SHA-256 of the file `name` (as `sha256sum` prints it) for a
+ * picture's provenance. 0, or a diag status. */
+int cli_file_sha256(const cli_files *f, const char *name, char hex[65], diag *err);
+
+/* Every name: a host file that exists wins over reading the name as a
+ * fileid (a file 'my deck' is not 'MY DECK A1'). */
 /* Resolves an output name to a host path: *path (mem_free it). */
 int cli_output_path(const cli_files *f, const char *name, char **path, diag *err);
 #endif

@@ -51,6 +51,8 @@ static const char usage_text[] =
     "filemode, 28 file not found, 36 disk not accessed.\n"
     "Exit status: 0 ok, 1 bad input (incl. those RCs), 2 usage, 3 I/O failure.\n";
 
+static void cms_help_print(FILE *f) { fputs(usage_text, f); }
+
 /* Which options each action takes (bit per option, see opt_names). */
 static const char *const opt_names[] = {"--disk", "--read-as", "--form", "--cp", "--read-cp",
                                         "--recfm", "--lrecl", "--to", "--tape", "--punch"};
@@ -150,7 +152,7 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
         } else if (!strcmp(a, "--punch")) {
             c->kind = CMS_IMPORT_PUNCH;
         } else if (a[0] == '-' && a[1]) {
-            return cli_usage_error("cms", "unknown option '%s'", a);
+            return cli_unknown_option("cms", a, cms_help_print);
         } else {
             if (c->npos == 3)
                 return cli_usage_error("cms", "too many arguments ('%s')", a);

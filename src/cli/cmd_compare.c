@@ -67,6 +67,8 @@ static const char compare_help[] =
     "exit status: 0 ok, 1 bad input (unreadable picture, sizes differ without\n"
     "--register, no registration found), 2 usage, 3 I/O failure\n";
 
+static void compare_help_print(FILE *f) { fputs(compare_help, f); }
+
 /* Parses "A,B,..." into n doubles; 0 or CLI_USAGE after a message. */
 static int compare_list(const char *opt, const char *s, int n, double *out)
 {
@@ -166,7 +168,7 @@ int cmd_compare(int argc, char **argv)
             o.cw = (int)d[2];
             o.ch = (int)d[3];
         } else if (a[0] == '-' && a[1] != '\0') {
-            return cli_usage_error("compare", "unknown option '%s'", a);
+            return cli_unknown_option("compare", a, compare_help_print);
         } else if (nfiles < 2) {
             files[nfiles++] = a;
         } else {

@@ -111,7 +111,7 @@ static int dl_cmd_encode(int argc, char **argv)
                 return cli_usage_error("dl", "--dac: '%s' is not 4 or 8", v);
             o.dac = v[0] - '0';
         } else if (argv[i][0] == '-' && argv[i][1]) {
-            return cli_usage_error("dl", "unknown option '%s'", argv[i]);
+            return cli_unknown_option("dl", argv[i], dl_help);
         } else if (!in) {
             in = argv[i];
         } else if (!out) {

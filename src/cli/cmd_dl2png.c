@@ -58,7 +58,7 @@ int cmd_dl2png(int argc, char **argv)
                 return cli_usage_error("dl2png", "--dac: '%s' is not 4 or 8", v);
             ro.dac = v[0] - '0';
         } else if (argv[i][0] == '-' && argv[i][1]) {
-            return cli_usage_error("dl2png", "unknown option '%s'", argv[i]);
+            return cli_unknown_option("dl2png", argv[i], dl2png_help);
         } else if (!in) {
             in = argv[i];
         } else if (!out) {

@@ -1,19 +1,21 @@
 /* cmd_render — `maprt render`: scene deck -> compiled scene for one numeric
  * mode -> tiled render -> PNG (and, later, a DL5080 display list). */
-#include "image/image_png.h"
+#include "image/image_out.h"
 #include "cli/cli.h"
 #include "cli/cli_scene.h"
 #include "render/render.h"
 #include "render/outline.h"
 #include "display5080/dl_image.h"
 #include "util/mem.h"
+#include "util/version.h"
 #include <omp.h>
 #include <string.h>
+#include <unistd.h>
 
 static void render_help(FILE *f)
 {
     fprintf(f,
-        "usage: maprt render SCENE [-o OUT.png] [--dl OUT.dl5080] [options]\n"
+        "usage: maprt render SCENE [-o OUT.png|OUT.ppm|OUT.pam|-] [--dl OUT.dl5080] [options]\n"
         "\n"
         "Ray-traces the scene deck SCENE (see docs/scene-format.md) and writes a\n"
         "true-colour PNG and/or a DL5080 display list, as the IBM 5081 would show it.\n"
@@ -21,7 +23,13 @@ static void render_help(FILE *f)
         "Outputs are written to a temporary name and renamed when complete.\n"
         "\n"
         "options:\n"
-        "  -o, --output OUT.png  write a true-colour PNG\n"
+        "  -o, --output OUT      write the picture: OUT.png a true-colour PNG, OUT.ppm\n"
+        "                        a binary PPM (P6), OUT.pam a PAM (P7); '-' standard\n"
+        "                        output (with --format). Other names are refused.\n"
+        "                        PNGs carry tEXt provenance (maprt version, deck and\n"
+        "                        its SHA-256, numeric mode, size, aa, date); PPM/PAM\n"
+        "                        the same as '#' comments\n"
+        "  --format png|ppm|pam  the format for -o - (a file's name decides its own)\n"
         "  --dl OUT.dl5080       write a DL5080 display list: the frame quantised to at\n"
         "                        most 256 colours in the DAC's colour space\n"
         "  --dac 4|8             bits per gun of the 5081 colour table (default 4)\n"
@@ -44,6 +52,25 @@ static void render_help(FILE *f)
         "A progress bar is drawn on stderr when it is a terminal.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
         RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA, cli_files_help);
+}
+
+/* What made the picture, for its tEXt chunks or comments. */
+static int render_provenance(const cli_files *files, const char *deck, const render_ops *ops,
+                             const render_opts *o, const render_fb *fb, image_meta *m, diag *err)
+{
+    char hex[65], date[32];
+    if (cli_file_sha256(files, deck, hex, err))
+        return err->status;
+    image_meta_date(date);
+    image_meta_init(m);
+    image_meta_add(m, "Software", "maprt %s", version_string());
+    image_meta_add(m, "Creation Time", "%s", date);
+    image_meta_add(m, "maprt:deck", "%s", deck);
+    image_meta_add(m, "maprt:deck-sha256", "%s", hex);
+    image_meta_add(m, "maprt:numeric", "%s", ops->name);
+    image_meta_add(m, "maprt:size", "%dx%d", fb->img.width, fb->img.height);
+    image_meta_add(m, "maprt:aa", "%d", o->aa);
+    return 0;
 }
 
 /* Progress bar on stderr (a terminal), redrawn after every tile. */
@@ -108,6 +135,8 @@ static int render_write_dl(const char *path, const render_fb *fb, dl_image_opts 
 int cmd_render(int argc, char **argv)
 {
     const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *mode = "q16", *v;
+    const char *format = NULL;
+    image_out_format pic_format = IMAGE_OUT_NONE;
     char *png_path = NULL, *dl_path = NULL;
     const render_ops *ops = NULL;
     render_opts o;
@@ -144,6 +173,11 @@ int cmd_render(int argc, char **argv)
             continue;
         if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
             if (!(out_png = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--format")) {
+            if (!(format = cli_value("render", argc, argv, &i)))
+                status = CLI_USAGE;
+            else if (!image_out_parse(format))
+                status = cli_usage_error("render", "--format: '%s' is not png, ppm or pam", format);
         } else if (!strcmp(a, "--dl")) {
             if (!(out_dl = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--dac")) {
@@ -177,7 +211,7 @@ int cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--stats")) {
             stats = 1;
         } else if (a[0] == '-' && a[1]) {
-            status = cli_usage_error("render", "unknown option '%s'", a);
+            status = cli_unknown_option("render", a, render_help);
         } else if (scene_name) {
             status = cli_usage_error("render", "more than one SCENE ('%s', '%s')", scene_name, a);
         } else {
@@ -188,6 +222,12 @@ int cmd_render(int argc, char **argv)
         status = cli_usage_error("render", "no SCENE given");
     if (!status && !out_png && !out_dl)
         status = cli_usage_error("render", "no output: give -o OUT.png and/or --dl OUT.dl5080");
+    if (!status && format && !out_png)
+        status = cli_usage_error("render", "--format applies to -o");
+    if (!status && out_png && !strcmp(out_png, "-") && stats)
+        status = cli_usage_error("render", "--stats writes to standard output, so it cannot go with -o -");
+    if (!status && out_png && !strcmp(out_png, "-") && isatty(1))
+        status = cli_usage_error("render", "-o -: standard output is a terminal; redirect it to a file or a pipe");
     if (!status && !(ops = render_ops_find(mode)))
         status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32 or f64", mode);
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
@@ -198,7 +238,10 @@ int cmd_render(int argc, char **argv)
     }
 
     /* Resolve every name before the long work, so a bad fileid fails fast. */
-    if ((out_png && cli_output_path(&files, out_png, &png_path, &err))
+    if ((out_png && strcmp(out_png, "-") && cli_output_path(&files, out_png, &png_path, &err))
+        || (out_png && image_out_choose(png_path ? png_path : "-", format ? image_out_parse(format)
+                                                                          : IMAGE_OUT_NONE,
+                                        &pic_format, &err))
         || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
         || cli_scene_load(&files, scene_name, &sc, &err))
         goto done;
@@ -212,8 +255,12 @@ int cmd_render(int argc, char **argv)
     if (render_scene(sc, ops, &o, &fb, &st, &err))
         goto done;
     rendered = 1;
-    if (png_path && image_write_png(png_path, &fb.img, &err))
-        goto done;
+    if (out_png) {
+        image_meta meta;
+        if (render_provenance(&files, scene_name, ops, &o, &fb, &meta, &err)
+            || image_out_write(png_path ? png_path : "-", pic_format, &fb.img, &meta, &err))
+            goto done;
+    }
     if (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
         goto done;
     if (stats) {

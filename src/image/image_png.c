@@ -6,35 +6,61 @@
 #include <png.h>
 #include <string.h>
 
-/* Encodes a prepared png_image to memory, then commits it through outfile. */
+/* Encodes a prepared png_image to memory: *buf (mem_free it) and *size. */
+static int image_png_encode(const char *name, png_image *pi, const void *px, int row_stride,
+                            const void *colormap, void **buf, size_t *size, diag *err)
+{
+    png_alloc_size_t n = 0;
+    void *b;
+    if (!png_image_write_to_memory(pi, NULL, &n, 0, px, row_stride, colormap))
+        return diag_at(err, DIAG_IO, name, 0, 0, "PNG encoding failed: %s", pi->message);
+    b = mem_alloc(n);
+    if (!b)
+        return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
+    if (!png_image_write_to_memory(pi, b, &n, 0, px, row_stride, colormap)) {
+        mem_free(b);
+        return diag_at(err, DIAG_IO, name, 0, 0, "PNG encoding failed: %s", pi->message);
+    }
+    *buf = b;
+    *size = n;
+    return 0;
+}
+
+/* Encodes a prepared png_image, then commits it through outfile. */
 static int image_png_commit(const char *path, png_image *pi, const void *px, int row_stride,
                             const void *colormap, diag *err)
 {
-    png_alloc_size_t size = 0;
     void *buf;
-    int rc;
-    if (!png_image_write_to_memory(pi, NULL, &size, 0, px, row_stride, colormap))
-        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
-    buf = mem_alloc(size);
-    if (!buf)
-        return diag_at(err, DIAG_IO, path, 0, 0, "out of memory");
-    if (!png_image_write_to_memory(pi, buf, &size, 0, px, row_stride, colormap)) {
-        mem_free(buf);
-        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
-    }
+    size_t size;
+    int rc = image_png_encode(path, pi, px, row_stride, colormap, &buf, &size, err);
+    if (rc)
+        return rc;
     rc = outfile_write_all(path, buf, size, err);
     mem_free(buf);
     return rc;
 }
 
+/* Prepares img (8-bit grey or RGB) for the simplified writer. */
+static void image_png_prepare(png_image *pi, const image *img)
+{
+    memset(pi, 0, sizeof *pi);
+    pi->version = PNG_IMAGE_VERSION;
+    pi->width = (png_uint_32)img->width;
+    pi->height = (png_uint_32)img->height;
+    pi->format = img->channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+}
+
+int image_encode_png(const image *img, void **buf, size_t *size, diag *err)
+{
+    png_image pi;
+    image_png_prepare(&pi, img);
+    return image_png_encode("PNG", &pi, img->px, img->width * img->channels, NULL, buf, size, err);
+}
+
 int image_write_png(const char *path, const image *img, diag *err)
 {
     png_image pi;
-    memset(&pi, 0, sizeof pi);
-    pi.version = PNG_IMAGE_VERSION;
-    pi.width = (png_uint_32)img->width;
-    pi.height = (png_uint_32)img->height;
-    pi.format = img->channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+    image_png_prepare(&pi, img);
     return image_png_commit(path, &pi, img->px, img->width * img->channels, NULL, err);
 }
 

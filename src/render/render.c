@@ -4,6 +4,7 @@
 #include "util/mem.h"
 #include <omp.h>
 #include <string.h>
+#include <strings.h>
 
 const render_ops *render_ops_find(const char *name)
 {
@@ -11,7 +12,7 @@ const render_ops *render_ops_find(const char *name)
                                             &f32_render_ops, &f64_render_ops};
     size_t i;
     for (i = 0; name && i < sizeof all / sizeof all[0]; i++)
-        if (!strcmp(all[i]->name, name))
+        if (!strcasecmp(all[i]->name, name))
             return all[i];
     return NULL;
 }
