@@ -28,6 +28,9 @@ test libgles-dev         OpenGL ES headers for the EGL backend
 test libgl1-mesa-dri     Mesa software rasteriser for the GL backends
 test libegl-mesa0        Mesa EGL driver (surfaceless context)
 test gnuplot-nox         bench --plot (tests/cli/bench_plot.sh)
+test libjpeg62-turbo-dev compare reads JPEG (mk/image.mk)
+test libtiff-dev         compare reads TIFF (mk/image.mk)
+test imagemagick         writes the JPEG/TIFF test pictures (tests/cli/compare_formats.sh)
 fuzz clang               libFuzzer targets (make fuzz-smoke)
 fuzz libclang-rt-14-dev  libFuzzer and sanitizer runtimes for clang
 fuzz libomp-dev          OpenMP for the clang builds

@@ -4,7 +4,8 @@
 #define CLI_H
 #include <stdio.h>
 
-enum { CLI_OK = 0, CLI_INPUT = 1, CLI_USAGE = 2, CLI_IO = 3 };
+enum { CLI_OK = 0, CLI_INPUT = 1, CLI_USAGE = 2, CLI_IO = 3,
+       CLI_MISMATCH = 4 /* compare: measured, but the pair does not match */ };
 
 /* Each subcommand: argv[0] is the subcommand name. */
 int cmd_render(int argc, char **argv);

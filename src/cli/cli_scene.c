@@ -1,5 +1,6 @@
 /* cli_scene — file naming and deck loading for the CLI (see cli_scene.h). */
 #include "cli/cli_scene.h"
+#include "util/sniff.h"
 #include "cli/cli.h"
 #include "image/image_png.h"
 #include "scene/scene_parse.h"
@@ -149,6 +150,11 @@ int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err
     if (st) {
         mem_free(owned);
         return st;
+    }
+    if (sniff_refuse(cn.path, cn.label, 1u << SNIFF_TEXT, "a scene deck", err)) {
+        cms_name_free(&cn);
+        mem_free(owned);
+        return err->status;
     }
     im.files = f;
     im.mode = cn.is_fileid ? cn.id.mode : 0;

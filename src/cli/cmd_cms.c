@@ -3,6 +3,7 @@
  * punch decks, EBCDIC card images, V streams) and host directories mapped to
  * CMS disks, and shows them the way LISTFILE and TYPE would. */
 #include "cli/cli.h"
+#include "util/sniff.h"
 #include "util/diag.h"
 #include "vm_cms_shim/cms_file.h"
 #include "vm_cms_shim/cms_import.h"
@@ -187,6 +188,9 @@ static int cms_do_import(cms_cli *c)
     o.cp = c->cp_set ? c->cp : CMS_CP_AUTO;
     o.disk = c->to ? c->to : 'A';
     diag_init(&d);
+    /* card decks of any form and tapes; a picture or display list is named */
+    if (sniff_refuse(c->pos[0], c->pos[0], 1u << SNIFF_TEXT | 1u << SNIFF_AWS, "a card deck or a tape", &d))
+        return cli_fail(&d);
     rc = cms_import(&c->disks, c->pos[0], &o, import_report, NULL, &n, &d);
     if (rc)
         return cli_fail(&d);
@@ -211,6 +215,13 @@ static int list_one(void *ctx, const char *path, const cms_fileid *id)
     o.cp = l->c->cp_set ? l->c->cp : CMS_CP_AUTO;
     diag_init(&d);
     if (cms_file_stat(&l->c->disks, path, &o, &info, &d)) {
+        sniff_kind k = sniff_file(path);
+        if (k != SNIFF_UNKNOWN && k != SNIFF_TEXT) {
+            /* a host file that is no CMS file at all: noted, not an error */
+            fprintf(stderr, "maprt: note: %s skipped: %s, not a CMS file\n",
+                    cms_fileid_format(id, t, sizeof t), sniff_name(k));
+            return 0;
+        }
         snprintf(d.file, sizeof d.file, "%s", cms_fileid_format(id, t, sizeof t));
         diag_print(stderr, &d);
         l->bad = d.status;

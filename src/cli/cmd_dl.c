@@ -1,6 +1,7 @@
 /* cmd_dl — `maprt dl dump|validate|encode`: list a DL5080 display list one
  * element a line, check one, or turn any PNG into one. */
 #include "cli/cli.h"
+#include "util/sniff.h"
 #include "display5080/dl_dump.h"
 #include "display5080/dl_image.h"
 #include "display5080/dl_validate.h"
@@ -42,6 +43,8 @@ static void dl_stdout(void *ctx, const void *data, size_t len)
 
 static int dl_read(const char *path, char **data, size_t *len, diag *err)
 {
+    if (sniff_refuse(path, path, 1u << SNIFF_DL5080, "a DL5080 display list", err))
+        return err->status;
     return infile_read_all(path, DL_CLI_MAX_INPUT, data, len, err);
 }
 
@@ -123,7 +126,8 @@ static int dl_cmd_encode(int argc, char **argv)
     if (!in || !out)
         return cli_usage_error("dl", "encode needs IN.png and OUT.dl5080");
     diag_init(&err);
-    if ((rc = image_read_png(in, 3, &img, &err)) == 0) {
+    if ((rc = sniff_refuse(in, in, 1u << SNIFF_PNG, "a PNG image", &err)) == 0
+        && (rc = image_read_png(in, 3, &img, &err)) == 0) {
         rc = dl_image_write(out, &img, &o, &st, &err);
         image_free(&img);
     }

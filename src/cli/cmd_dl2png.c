@@ -1,6 +1,7 @@
 /* cmd_dl2png — `maprt dl2png IN.dl5080 OUT.png`: draws a DL5080 display list
  * on a chosen backend and writes what the 5081 would show as a PNG. */
 #include "cli/cli.h"
+#include "util/sniff.h"
 #include "display5080/dl_render.h"
 #include "util/mem.h"
 #include "util/outfile.h"
@@ -72,7 +73,8 @@ int cmd_dl2png(int argc, char **argv)
     if (!(b = dl_backend_find(bname)))
         return cli_usage_error("dl2png", "--backend: '%s' is not png, osmesa or egl", bname);
     diag_init(&err);
-    if ((rc = infile_read_all(in, DL2PNG_MAX_INPUT, &data, &len, &err)) == 0) {
+    if ((rc = sniff_refuse(in, in, 1u << SNIFF_DL5080, "a DL5080 display list", &err)) == 0
+        && (rc = infile_read_all(in, DL2PNG_MAX_INPUT, &data, &len, &err)) == 0) {
         if ((rc = dl_render((const uint8_t *)data, len, in, b, &ro, &frame, &err)) == 0) {
             rc = dl_frame_write_png(out, &frame, truecolor, &err);
             dl_frame_free(&frame);

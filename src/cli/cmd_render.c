@@ -2,6 +2,7 @@
  * mode -> tiled render -> PNG (and, later, a DL5080 display list). */
 #include "image/image_out.h"
 #include "cli/cli.h"
+#include "cli/cli_progress.h"
 #include "cli/cli_scene.h"
 #include "render/render.h"
 #include "render/outline.h"
@@ -10,6 +11,7 @@
 #include "util/version.h"
 #include <omp.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 static void render_help(FILE *f)
@@ -49,7 +51,13 @@ static void render_help(FILE *f)
         "%s"
         "  -h, --help            show this help\n"
         "\n"
-        "A progress bar is drawn on stderr when it is a terminal.\n"
+        "  --progress            show progress on stderr even when it is not a terminal\n"
+        "  --quiet               show neither progress nor the closing summary\n"
+        "\n"
+        "On a terminal (or with --progress) stderr shows the share done, elapsed\n"
+        "time, ETA and rays/s, the share weighted by each tile's cost as measured\n"
+        "before the render so that it runs linearly in time, and one closing line:\n"
+        "time (wall and CPU), rays/s and the outputs written.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
         RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA, cli_files_help);
 }
@@ -73,15 +81,21 @@ static int render_provenance(const cli_files *files, const char *deck, const ren
     return 0;
 }
 
-/* Progress bar on stderr (a terminal), redrawn after every tile. */
-static void render_progress(void *ctx, long done, long total)
+/* The closing line: what was rendered, the time it took, the rate, and
+ * the outputs written. */
+static void render_summary(const char *deck, const render_opts *o, const render_fb *fb,
+                           const render_ops *ops, const render_stats *st, clock_t cpu0,
+                           const char *png, const char *dl)
 {
-    int width = 40, fill = (int)(done * width / total);
-    (void)ctx;
-    fprintf(stderr, "\rrender [%.*s%*s] %3ld%%", fill,
-            "########################################", width - fill, "", done * 100 / total);
-    if (done == total)
-        fputc('\n', stderr);
+    char wall[24], cpu[24], rate[32];
+    double secs = st->time_compile_s + st->time_render_s;
+    unsigned long long rays = st->rays_primary + st->rays_shadow + st->rays_reflected + st->rays_refracted;
+    cli_progress_time(secs, wall, sizeof wall);
+    cli_progress_time((double)(clock() - cpu0) / CLOCKS_PER_SEC, cpu, sizeof cpu);
+    cli_progress_rate(st->time_render_s > 0 ? (double)rays / st->time_render_s : 0, rate, sizeof rate);
+    fprintf(stderr, "maprt: %s: %dx%d, aa %d, %s: %s (CPU %s), %.3g Mrays, %s; wrote %s%s%s\n", deck,
+            fb->img.width, fb->img.height, o->aa, ops->name, wall, cpu, (double)rays / 1e6, rate,
+            png ? (strcmp(png, "-") ? png : "standard output") : "", png && dl ? ", " : "", dl ? dl : "");
 }
 
 /* Outline segments of the rendered primitives as 2-point polylines in
@@ -148,7 +162,9 @@ int cmd_render(int argc, char **argv)
     scene *sc = NULL;
     diag err;
     long n;
-    int i, stats = 0, wireframe = 0, status = 0, rendered = 0;
+    int i, stats = 0, wireframe = 0, status = 0, rendered = 0, progress = -1;
+    cli_progress bar;
+    clock_t cpu0 = clock();
 
     if (cli_wants_help(argc, argv)) {
         render_help(stdout);
@@ -210,6 +226,8 @@ int cmd_render(int argc, char **argv)
                 o.aa = (int)n;
         } else if (!strcmp(a, "--stats")) {
             stats = 1;
+        } else if (!strcmp(a, "--progress") || !strcmp(a, "--quiet")) {
+            progress = a[2] == 'p';
         } else if (a[0] == '-' && a[1]) {
             status = cli_unknown_option("render", a, render_help);
         } else if (scene_name) {
@@ -250,8 +268,13 @@ int cmd_render(int argc, char **argv)
         diag_at(&err, DIAG_USAGE, out_dl, 0, 0, "a display list holds at most 4096x4096 pixels");
         goto done;
     }
-    if (cli_is_tty())
-        o.progress = render_progress;
+    if (progress < 0)
+        progress = cli_is_tty();
+    if (progress) {
+        cli_progress_init(&bar);
+        o.progress = cli_progress_update;
+        o.progress_ctx = &bar;
+    }
     if (render_scene(sc, ops, &o, &fb, &st, &err))
         goto done;
     rendered = 1;
@@ -263,6 +286,8 @@ int cmd_render(int argc, char **argv)
     }
     if (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
         goto done;
+    if (progress)
+        render_summary(scene_name, &o, &fb, ops, &st, cpu0, out_png, out_dl);
     if (stats) {
         printf("numeric=%s\n", ops->name);
         render_stats_print(stdout, &st);
