@@ -61,14 +61,19 @@ $(FLAGS_STAMP): FORCE
 	@mkdir -p $(@D)
 	@echo '$(FLAGS_NOW)' | cmp -s - $@ || echo '$(FLAGS_NOW)' > $@
 
-# The git revision goes into version.o alone (maprt --version, provenance).
+# Build facts compiled into one object each, rebuilt when they change: the
+# git revision (version.o: --version, provenance) and where the shipped
+# scenes are (cli_data.o: PREFIX/share/maprt after install, else this tree).
 GIT_REV := $(shell git describe --always --dirty 2>/dev/null)
-REV_STAMP := $(BUILD)/rev.stamp
-$(REV_STAMP): FORCE
+DATADIR := $(PREFIX)/share/maprt
+INFO_NOW = $(GIT_REV) $(DATADIR) $(CURDIR)
+INFO_STAMP := $(BUILD)/info.stamp
+$(INFO_STAMP): FORCE
 	@mkdir -p $(@D)
-	@echo '$(GIT_REV)' | cmp -s - $@ || echo '$(GIT_REV)' > $@
-$(BUILD)/obj/src/util/version.o: $(REV_STAMP)
+	@echo '$(INFO_NOW)' | cmp -s - $@ || echo '$(INFO_NOW)' > $@
+$(BUILD)/obj/src/util/version.o $(BUILD)/obj/src/cli/cli_data.o: $(INFO_STAMP)
 $(BUILD)/obj/src/util/version.o: MODULE_CFLAGS += $(if $(GIT_REV),-DMAPRT_REV='"$(GIT_REV)"')
+$(BUILD)/obj/src/cli/cli_data.o: MODULE_CFLAGS += -DMAPRT_DATADIR='"$(DATADIR)"' -DMAPRT_SRCDIR='"$(CURDIR)"'
 
 $(BUILD)/obj/%.o: %.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
@@ -120,13 +125,21 @@ bench: deps-demo all
 	@sh bench/run.sh $(BIN)
 
 # --- install ---------------------------------------------------------------
+# The binary, the man page, and under PREFIX/share/maprt the scenes (with
+# the images they name; `maprt render fig1` finds them there), the docs and
+# the README.
+SHARE_SCENES := $(wildcard scenes/*.scene scenes/*.png scenes/*.sh)
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
+	  $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/docs
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/maprt
 	install -m 644 docs/maprt.1 $(DESTDIR)$(PREFIX)/share/man/man1/maprt.1
+	install -m 644 $(SHARE_SCENES) $(DESTDIR)$(DATADIR)/scenes
+	install -m 644 docs/*.md README.md $(DESTDIR)$(DATADIR)/docs
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/maprt $(DESTDIR)$(PREFIX)/share/man/man1/maprt.1
+	rm -rf $(DESTDIR)$(DATADIR)
 
 clean:
 	rm -rf build build-asan build-fuzz out

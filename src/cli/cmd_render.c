@@ -2,6 +2,7 @@
  * mode -> tiled render -> PNG (and, later, a DL5080 display list). */
 #include "image/image_out.h"
 #include "cli/cli.h"
+#include "cli/cli_data.h"
 #include "cli/cli_progress.h"
 #include "cli/cli_scene.h"
 #include "render/render.h"
@@ -14,14 +15,19 @@
 #include <time.h>
 #include <unistd.h>
 
+#define MAPRT_SHARE_HINT "PREFIX/share/maprt/scenes"
+
 static void render_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt render SCENE [-o OUT.png|OUT.ppm|OUT.pam|-] [--dl OUT.dl5080] [options]\n"
+        "       maprt render --list\n"
         "\n"
         "Ray-traces the scene deck SCENE (see docs/scene-format.md) and writes a\n"
         "true-colour PNG and/or a DL5080 display list, as the IBM 5081 would show it.\n"
-        "SCENE and every output may be a host path or a CMS fileid ('FIG1 SCENE A').\n"
+        "SCENE and every output may be a host path or a CMS fileid ('FIG1 SCENE A');\n"
+        "SCENE may also name a scene shipped with maprt ('fig1'; see --list), found\n"
+        "in $MAPRT_SCENES, " MAPRT_SHARE_HINT " or the source tree.\n"
         "Outputs are written to a temporary name and renamed when complete.\n"
         "\n"
         "options:\n"
@@ -49,6 +55,7 @@ static void render_help(FILE *f)
         "                        time.compile_s time.render_s (and dl.colours dl.bytes\n"
         "                        dl.psnr with --dl)\n"
         "%s"
+        "  --list                list the shipped scenes and exit\n"
         "  -h, --help            show this help\n"
         "\n"
         "  --progress            show progress on stderr even when it is not a terminal\n"
@@ -151,7 +158,7 @@ int cmd_render(int argc, char **argv)
     const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *mode = "q16", *v;
     const char *format = NULL;
     image_out_format pic_format = IMAGE_OUT_NONE;
-    char *png_path = NULL, *dl_path = NULL;
+    char *png_path = NULL, *dl_path = NULL, *shipped = NULL;
     const render_ops *ops = NULL;
     render_opts o;
     render_stats st;
@@ -170,6 +177,9 @@ int cmd_render(int argc, char **argv)
         render_help(stdout);
         return CLI_OK;
     }
+    for (i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--list"))
+            return cli_data_list(stdout);
     diag_init(&err);
     if (cli_files_init(&files, &err)) {
         diag_print(stderr, &err);
@@ -256,6 +266,8 @@ int cmd_render(int argc, char **argv)
     }
 
     /* Resolve every name before the long work, so a bad fileid fails fast. */
+    if (cli_data_scene(scene_name, &shipped))
+        scene_name = shipped;
     if ((out_png && strcmp(out_png, "-") && cli_output_path(&files, out_png, &png_path, &err))
         || (out_png && image_out_choose(png_path ? png_path : "-", format ? image_out_parse(format)
                                                                           : IMAGE_OUT_NONE,
@@ -301,6 +313,7 @@ done:
     scene_free(sc);
     mem_free(png_path);
     mem_free(dl_path);
+    mem_free(shipped);
     cli_files_free(&files);
     if (err.status) {
         diag_print(stderr, &err);
