@@ -38,6 +38,7 @@ MODULE_LIBS   :=
 .DEFAULT_GOAL := all
 -include mk/*.mk
 
+quant-bench: deps-bench
 .PHONY: all test demo bench install uninstall clean deps deps-demo deps-test deps-fuzz unit-tests asan-test fuzz-smoke
 all: $(BIN)
 
@@ -117,7 +118,7 @@ fuzz-smoke: deps-fuzz
 demo: deps-demo
 	@$(MAKE) --no-print-directory all
 	@mkdir -p out
-	$(BIN) render scenes/fig1.scene -o out/fig1.png --dl out/fig1.dl5080 --size 1024x1024
+	$(BIN) render scenes/fig1.scene -o out/fig1.png --dl out/fig1.dl5080 --size 1024x1024 --aa 4
 	@if [ -s out/fig1.dl5080 ]; then $(BIN) dl2png out/fig1.dl5080 out/fig1-5081.png; fi
 	@ls -l out
 

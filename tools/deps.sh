@@ -5,6 +5,7 @@
 #   sh tools/deps.sh test   ... and what the tests use; tests whose package is
 #                           missing are skipped and counted (tests/run.sh)
 #   sh tools/deps.sh fuzz   ... and what `make fuzz-smoke` needs
+#   sh tools/deps.sh bench  ... and what the optional benches need
 #   sh tools/deps.sh all    every package (CI: nothing may be skipped)
 #   sh tools/deps.sh list [GROUP]  prints the table
 #
@@ -13,7 +14,7 @@
 # missing optional one (the test group for `test`) prints it as a note only.
 #
 # The table: one package a line, "GROUP PACKAGE what needs it". Add a line
-# for a new package; GROUP is demo, test or fuzz.
+# for a new package; GROUP is demo, test, bench or fuzz.
 DEPS_TABLE='
 demo gcc                 the C99 compiler, with OpenMP
 demo make                the build
@@ -31,6 +32,7 @@ test gnuplot-nox         bench --plot (tests/cli/bench_plot.sh)
 test libjpeg62-turbo-dev compare reads JPEG (mk/image.mk)
 test libtiff-dev         compare reads TIFF (mk/image.mk)
 test imagemagick         writes the JPEG/TIFF test pictures (tests/cli/compare_formats.sh)
+bench libimagequant-dev  the colour-table bench against median cut (make quant-bench)
 fuzz clang               libFuzzer targets (make fuzz-smoke)
 fuzz libclang-rt-14-dev  libFuzzer and sanitizer runtimes for clang
 fuzz libomp-dev          OpenMP for the clang builds
@@ -59,9 +61,10 @@ case $what in
   demo) need=demo; want= ;;
   test) need=demo; want=test ;;
   fuzz) need="demo fuzz"; want= ;;
-  all)  need="demo test fuzz"; want= ;;
+  bench) need="demo bench"; want= ;;
+  all)  need="demo test bench fuzz"; want= ;;
   list) printf '%s\n' "$DEPS_TABLE" | awk -v g="${2:-}" 'NF && (g == "" || $1 == g)'; exit 0 ;;
-  *) echo "usage: sh tools/deps.sh demo|test|fuzz|all|list [GROUP]" >&2; exit 2 ;;
+  *) echo "usage: sh tools/deps.sh demo|test|bench|fuzz|all|list [GROUP]" >&2; exit 2 ;;
 esac
 need_pkgs=$(for g in $need; do deps_group "$g"; done)
 want_pkgs=$(for g in $want; do deps_group "$g"; done)
