@@ -39,7 +39,7 @@ MODULE_LIBS   :=
 -include mk/*.mk
 
 quant-bench: deps-bench
-.PHONY: all test demo bench install uninstall clean deps deps-demo deps-test deps-fuzz unit-tests asan-test fuzz-smoke
+.PHONY: all test demo bench install uninstall clean deps deps-demo deps-test deps-bench deps-fuzz unit-tests asan-test fuzz-smoke
 all: $(BIN)
 
 # --- packages --------------------------------------------------------------
@@ -48,8 +48,9 @@ all: $(BIN)
 # tests use, and `make deps` checks (or installs) everything.
 deps:
 	@sh tools/deps.sh all
-deps-%:
-	@sh tools/deps.sh $*
+# (explicit, not a pattern rule: make does not search patterns for .PHONY targets)
+deps-demo deps-test deps-bench deps-fuzz:
+	@sh tools/deps.sh $(@:deps-%=%)
 
 # --- compile ---------------------------------------------------------------
 # Objects depend on the flags they are built with, so that a package found
