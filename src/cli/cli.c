@@ -151,46 +151,73 @@ int cli_unknown_option(const char *cmd, const char *opt, void (*help)(FILE *f))
     return CLI_USAGE;
 }
 
+/* The rewritten argv and the strings made for it (freed by
+ * cli_conventions_free). */
+static char **cli_argv, **cli_owned;
+static int cli_nowned;
+
+/* A new string of the first n bytes of a, prefixed by prefix, recorded in
+ * cli_owned; NULL when out of memory. */
+static char *cli_own(const char *prefix, const char *a, size_t n)
+{
+    size_t k = strlen(prefix);
+    char *p = mem_alloc(k + n + 1);
+    if (!p)
+        return NULL;
+    memcpy(p, prefix, k);
+    memcpy(p + k, a, n);
+    p[k + n] = '\0';
+    cli_owned[cli_nowned++] = p;
+    return p;
+}
+
 int cli_conventions(int *argc, char ***argv)
 {
     int i, n = 0, ended = 0, version = 0;
-    char **in = *argv, **out = mem_calloc((size_t)*argc * 2 + 1, sizeof *out);
-    if (!out) {
+    char **in = *argv;
+    cli_argv = mem_calloc((size_t)*argc * 2 + 1, sizeof *cli_argv);
+    cli_owned = mem_calloc((size_t)*argc + 1, sizeof *cli_owned);
+    if (!cli_argv || !cli_owned) {
+        cli_conventions_free();
         *argv = NULL;
         return 0;
     }
     for (i = 0; i < *argc; i++) {
         char *a = in[i], *eq;
-        if (i == 0 || ended) {
-            if (ended && a[0] == '-' && a[1]) {
-                size_t len = strlen(a) + 3;
-                if (!(out[n] = mem_alloc(len))) {
-                    *argv = NULL;
-                    return 0;
-                }
-                snprintf(out[n++], len, "./%s", a);
-            } else {
-                out[n++] = a;
-            }
+        if (i == 0 || (ended && !(a[0] == '-' && a[1]))) {
+            cli_argv[n++] = a;
+        } else if (ended) {
+            if (!(cli_argv[n++] = cli_own("./", a, strlen(a))))
+                goto oom;
         } else if (!strcmp(a, "--")) {
             ended = 1;
         } else if (!strcmp(a, "--version")) {
             version = 1;
         } else if (a[0] == '-' && a[1] == '-' && a[2] && (eq = strchr(a, '=')) != NULL && eq > a + 2) {
-            size_t k = (size_t)(eq - a);
-            if (!(out[n] = mem_alloc(k + 1))) {
-                *argv = NULL;
-                return 0;
-            }
-            memcpy(out[n], a, k);
-            out[n++][k] = '\0';
-            out[n++] = eq + 1;
+            if (!(cli_argv[n++] = cli_own("", a, (size_t)(eq - a))))
+                goto oom;
+            cli_argv[n++] = eq + 1;
         } else {
-            out[n++] = a;
+            cli_argv[n++] = a;
         }
     }
-    out[n] = NULL;
+    cli_argv[n] = NULL;
     *argc = n;
-    *argv = out;
+    *argv = cli_argv;
     return version;
+oom:
+    cli_conventions_free();
+    *argv = NULL;
+    return 0;
+}
+
+void cli_conventions_free(void)
+{
+    int i;
+    for (i = 0; i < cli_nowned; i++)
+        mem_free(cli_owned[i]);
+    mem_free(cli_owned);
+    mem_free(cli_argv);
+    cli_owned = cli_argv = NULL;
+    cli_nowned = 0;
 }

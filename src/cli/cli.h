@@ -29,9 +29,10 @@ int cli_unknown_option(const char *cmd, const char *opt, void (*help)(FILE *f));
  * the subcommand parses argv[1..]: "--opt=value" becomes "--opt" "value";
  * "--" ends the options (it is dropped, and a later argument that begins
  * with '-' is passed as "./-..." so that it reads as a file); returns 1 if
- * --version was given before any "--". *argv is replaced by a new array
- * (kept for the life of the process); NULL argv on out of memory. */
+ * --version was given before any "--". *argv is replaced by a new array,
+ * released by cli_conventions_free; NULL argv on out of memory. */
 int cli_conventions(int *argc, char ***argv);
+void cli_conventions_free(void);
 /* The value of option argv[*i] (the next argument); advances *i. NULL (after
  * a usage error message) if missing. */
 const char *cli_value(const char *cmd, int argc, char **argv, int *i);

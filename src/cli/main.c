@@ -49,6 +49,7 @@ int main(int argc, char **argv)
     /* --opt=value, --, --version: once here for every subcommand */
     if (cli_conventions(&argc, &argv)) {
         printf("maprt %s\n", version_string());
+        cli_conventions_free();
         return CLI_OK;
     }
     if (!argv) {
@@ -56,12 +57,16 @@ int main(int argc, char **argv)
         return CLI_IO;
     }
     if (argc < 2) {
+        cli_conventions_free();
         usage(stderr);
         return CLI_USAGE;
     }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name))
-            return commands[i].run(argc - 1, argv + 1);
+        if (!strcmp(argv[1], commands[i].name)) {
+            int rc = commands[i].run(argc - 1, argv + 1);
+            cli_conventions_free();
+            return rc;
+        }
     {
         suggest sg;
         suggest_init(&sg, argv[1]);
@@ -73,6 +78,7 @@ int main(int argc, char **argv)
         else
             fprintf(stderr, "maprt: error: unknown command '%s'\n", argv[1]);
     }
+    cli_conventions_free();
     usage(stderr);
     return CLI_USAGE;
 }
