@@ -49,10 +49,10 @@ deps_missing() {   # the uninstalled ones among $@
 }
 
 deps_install() {   # installs $@ as root; 0 ok
-  echo "deps: installing$*"
+  echo "deps: installing $*"
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq && apt-get install -y -qq --no-install-recommends "$@" >/dev/null && return 0
-  echo "deps: apt-get failed; run: apt-get install -y$*" >&2
+  echo "deps: apt-get failed; run: apt-get install -y $*" >&2
   return 1
 }
 
