@@ -2,6 +2,7 @@
 #include "cli/cli_scene.h"
 #include "util/sniff.h"
 #include "cli/cli.h"
+#include "cli/cli_data.h"
 #include "image/image_png.h"
 #include "scene/scene_parse.h"
 #include "util/mem.h"
@@ -143,17 +144,22 @@ int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err
     cms_name cn;
     cli_images im;
     scene_loader ld;
-    char *slash, buf[256], *owned;
-    const char *name = cli_host_first(given, buf, sizeof buf, &owned);
-    int st = name ? cms_name_input(&f->disks, name, &cn, err)
-                  : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
+    char *slash, buf[256], *owned, *shipped = NULL;
+    const char *name;
+    int st;
+    if (cli_data_scene(given, &shipped))      /* "fig1": a shipped scene */
+        given = shipped;
+    name = cli_host_first(given, buf, sizeof buf, &owned);
+    st = name ? cms_name_input(&f->disks, name, &cn, err) : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
     if (st) {
         mem_free(owned);
+        mem_free(shipped);
         return st;
     }
     if (sniff_refuse(cn.path, cn.label, 1u << SNIFF_TEXT, "a scene deck", err)) {
         cms_name_free(&cn);
         mem_free(owned);
+        mem_free(shipped);
         return err->status;
     }
     im.files = f;
@@ -176,6 +182,7 @@ int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err
     }
     mem_free(im.dir);
     mem_free(owned);
+    mem_free(shipped);
     return st;
 }
 
@@ -198,14 +205,18 @@ int cli_output_path(const cli_files *f, const char *given, char **path, diag *er
 int cli_file_sha256(const cli_files *f, const char *given, char hex[65], diag *err)
 {
     cms_name cn;
-    char nbuf[256], buf[4096], *owned;
-    const char *name = cli_host_first(given, nbuf, sizeof nbuf, &owned);
+    char nbuf[256], buf[4096], *owned, *shipped = NULL;
+    const char *name;
     sha256 h;
     FILE *fp;
     size_t n;
-    int st = name ? cms_name_input(&f->disks, name, &cn, err)
-                  : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
+    int st;
+    if (cli_data_scene(given, &shipped))
+        given = shipped;
+    name = cli_host_first(given, nbuf, sizeof nbuf, &owned);
+    st = name ? cms_name_input(&f->disks, name, &cn, err) : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
     mem_free(owned);
+    mem_free(shipped);
     if (st)
         return st;
     if (!(fp = fopen(cn.path, "rb"))) {

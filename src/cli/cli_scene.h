@@ -27,7 +27,8 @@ int cli_files_option(cli_files *f, const char *cmd, int argc, char **argv, int *
 /* The help text lines for the shared options. */
 extern const char cli_files_help[];
 
-/* Reads and parses the deck `name`. Images the deck names are read beside
+/* Reads and parses the deck `name` (a name such as "fig1" that is neither a
+ * host file nor a fileid is a shipped scene, cli_data.h). Images the deck names are read beside
  * it: relative to its host directory, and for a deck read by fileid also as
  * fileid "FN FT m" on its disk for an image written FN.FT. 0 and *out
  * (scene_free it), or a diag status with err naming the file or fileid and

@@ -31,6 +31,10 @@ cp "$src/scenes/csg.scene" "$tmp/fig1"
 (cd "$tmp" && $MAPRT render fig1 -o host.ppm --size 32x24) || fail "host file fig1"
 grep -a -qx "# maprt:deck: fig1" "$tmp/host.ppm" && grep -a -qx "# maprt:deck-sha256: $sum" "$tmp/host.ppm" \
   || fail "host file fig1 not used"
+# every command that reads a deck takes the name (bench here)
+(cd "$tmp" && env -u MAPRT_SCENES $MAPRT bench csg --size 16x16 --modes q16,f64 --threads 1 > bench.out) \
+  || fail "bench csg from $tmp"
+grep -q '^csg  *f64 ' "$tmp/bench.out" || fail "bench csg: $(cat "$tmp/bench.out")"
 # an unknown name is still an error naming it
 (cd "$tmp" && $MAPRT render nosuchscene -o x.png) 2> "$tmp/err"; [ $? -eq 1 ] || fail "unknown scene should exit 1"
 exit 0
