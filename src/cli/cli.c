@@ -7,6 +7,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 int cli_usage_error(const char *cmd, const char *fmt, ...)
@@ -73,6 +74,14 @@ int cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, i
     *w = (int)lw;
     *h = (int)lh;
     return 0;
+}
+
+int cli_png_name(const char *cmd, const char *opt, const char *name)
+{
+    size_t n = strlen(name);
+    if (n > 4 && !strcasecmp(name + n - 4, ".png"))
+        return 0;
+    return cli_usage_error(cmd, "%s '%s': this output is a PNG, so its name must end in .png", opt, name);
 }
 
 int cli_wants_help(int argc, char **argv)

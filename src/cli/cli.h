@@ -42,6 +42,9 @@ int cli_long(const char *cmd, const char *opt, const char *s, long lo, long hi, 
 int cli_double(const char *cmd, const char *opt, const char *s, double *out);
 /* Parses "WxH" with 1 <= W,H <= max; 0 ok, else CLI_USAGE after a message. */
 int cli_size(const char *cmd, const char *opt, const char *s, int max, int *w, int *h);
+/* 0 if name ends in .png (any case); else a usage error saying so, before
+ * the work (CLI_USAGE). For outputs that are always PNG. */
+int cli_png_name(const char *cmd, const char *opt, const char *name);
 /* 1 if argv contains -h or --help. */
 int cli_wants_help(int argc, char **argv);
 /* 1 when stderr is a terminal (progress bars go there only then). */

@@ -181,6 +181,9 @@ int cmd_compare(int argc, char **argv)
     }
     if (nfiles != 2)
         return cli_usage_error("compare", "need REFERENCE and TEST pictures");
+    if ((o.diff_path && cli_png_name("compare", "--diff", o.diff_path))
+        || (o.sbs_path && cli_png_name("compare", "--side-by-side", o.sbs_path)))
+        return CLI_USAGE;
     diag_init(&err);
     rc = compare_files(files[0], files[1], &o, &r, &err);
     if (rc) {

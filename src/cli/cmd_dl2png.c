@@ -70,6 +70,8 @@ int cmd_dl2png(int argc, char **argv)
     }
     if (!in || !out)
         return cli_usage_error("dl2png", "needs IN.dl5080 and OUT.png");
+    if (cli_png_name("dl2png", "OUT", out))
+        return CLI_USAGE;
     if (!(b = dl_backend_find(bname)))
         return cli_usage_error("dl2png", "--backend: '%s' is not png, osmesa or egl", bname);
     diag_init(&err);

@@ -38,6 +38,12 @@ done
 r -o "$tmp/x.PNG" || fail "the ending is case-insensitive"
 r -o "$tmp/c.png" --format ppm 2> "$tmp/err"; [ $? -eq 2 ] || fail "contradicting --format should exit 2"
 
+# outputs that are always PNG (dl2png, compare's pictures) must be named so
+r --dl "$tmp/a.dl5080" || fail "render --dl"
+$MAPRT dl2png "$tmp/a.dl5080" "$tmp/v.jpg" 2> "$tmp/err"; [ $? -eq 2 ] || fail "dl2png to .jpg should exit 2"
+grep -q "this output is a PNG, so its name must end in .png" "$tmp/err" && [ ! -e "$tmp/v.jpg" ] || fail "dl2png .jpg"
+$MAPRT compare "$tmp/a.png" "$tmp/a.png" --diff "$tmp/d.tif" 2> /dev/null; [ $? -eq 2 ] || fail "--diff .tif should exit 2"
+
 # provenance: the version, deck and its SHA-256, mode, size, aa, date
 SOURCE_DATE_EPOCH=0 $MAPRT render scenes/csg.scene --size 16x12 --aa 2 --numeric F64 -o "$tmp/p.png" \
   || fail "provenance render"
