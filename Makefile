@@ -27,6 +27,10 @@ BIN         := $(BUILD)/maprt
 
 TEST_SRC    := $(wildcard tests/unit/test_*.c)
 TEST_BIN    := $(TEST_SRC:tests/unit/%.c=$(BUILD)/tests/%)
+# The unit tests need cmocka; without it `make test` runs the rest and
+# tests/run.sh counts the unit tests as skipped. `make HAVE_CMOCKA=` pretends.
+HAVE_CMOCKA ?= $(shell printf '\043include <stdarg.h>\n\043include <stddef.h>\n\043include <setjmp.h>\n\043include <cmocka.h>\n' \
+                 | $(CC) -E -x c - -o /dev/null 2>/dev/null && echo yes)
 
 MODULE_CFLAGS :=
 MODULE_LIBS   :=
@@ -34,12 +38,19 @@ MODULE_LIBS   :=
 .DEFAULT_GOAL := all
 -include mk/*.mk
 
-.PHONY: all test demo bench install uninstall clean deps unit-tests asan-test fuzz-smoke check-deps
+quant-bench: deps-bench
+.PHONY: all test demo bench install uninstall clean deps deps-demo deps-test deps-bench deps-fuzz unit-tests asan-test fuzz-smoke check-deps
 all: $(BIN)
 
 # --- packages --------------------------------------------------------------
+# tools/deps.sh groups the packages by what needs them: `make demo` checks
+# only the demo group, `make test` also notes (or as root installs) what the
+# tests use, and `make deps` checks (or installs) everything.
 deps:
-	@sh tools/deps.sh
+	@sh tools/deps.sh all
+# (explicit, not a pattern rule: make does not search patterns for .PHONY targets)
+deps-demo deps-test deps-bench deps-fuzz:
+	@sh tools/deps.sh $(@:deps-%=%)
 
 # --- compile ---------------------------------------------------------------
 # Objects depend on the flags they are built with, so that a package found
@@ -51,6 +62,20 @@ FORCE:
 $(FLAGS_STAMP): FORCE
 	@mkdir -p $(@D)
 	@echo '$(FLAGS_NOW)' | cmp -s - $@ || echo '$(FLAGS_NOW)' > $@
+
+# Build facts compiled into one object each, rebuilt when they change: the
+# git revision (version.o: --version, provenance) and where the shipped
+# scenes are (cli_data.o: PREFIX/share/maprt after install, else this tree).
+GIT_REV := $(shell git describe --always --dirty 2>/dev/null)
+DATADIR := $(PREFIX)/share/maprt
+INFO_NOW = $(GIT_REV) $(DATADIR) $(CURDIR)
+INFO_STAMP := $(BUILD)/info.stamp
+$(INFO_STAMP): FORCE
+	@mkdir -p $(@D)
+	@echo '$(INFO_NOW)' | cmp -s - $@ || echo '$(INFO_NOW)' > $@
+$(BUILD)/obj/src/util/version.o $(BUILD)/obj/src/cli/cli_data.o: $(INFO_STAMP)
+$(BUILD)/obj/src/util/version.o: MODULE_CFLAGS += $(if $(GIT_REV),-DMAPRT_REV='"$(GIT_REV)"')
+$(BUILD)/obj/src/cli/cli_data.o: MODULE_CFLAGS += -DMAPRT_DATADIR='"$(DATADIR)"' -DMAPRT_SRCDIR='"$(CURDIR)"'
 
 $(BUILD)/obj/%.o: %.c $(FLAGS_STAMP)
 	@mkdir -p $(@D)
@@ -75,44 +100,52 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIB)
 	@mkdir -p $(@D)
 	$(CC) $(CPPFLAGS) -Itests $(ALL_CFLAGS) $(LDFLAGS) -o $@ $< tests/support.c $(LIB) $(LIBS) -lcmocka
 
-unit-tests: $(TEST_BIN) $(BIN)
+unit-tests: $(if $(HAVE_CMOCKA),$(TEST_BIN)) $(BIN)
 
 # The include graph follows the rooms of docs/architecture.md.
 check-deps:
 	@sh tools/check_deps.sh
 
-test: deps check-deps
+test: deps-test check-deps
 	@$(MAKE) --no-print-directory unit-tests $(TEST_EXTRA)
 	@sh tests/run.sh $(BUILD)
 
 # Sanitizer build: the whole suite again under ASan+UBSan in its own tree.
-asan-test: deps
+asan-test: deps-test
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
 	  LDFLAGS="-fsanitize=address,undefined" test
 
-fuzz-smoke: deps
+fuzz-smoke: deps-fuzz
 	@sh tests/fuzz/run.sh $(FUZZ_SECONDS)
 
 # --- demo and bench --------------------------------------------------------
-demo: deps
+demo: deps-demo
 	@$(MAKE) --no-print-directory all
 	@mkdir -p out
-	$(BIN) render scenes/fig1.scene -o out/fig1.png --dl out/fig1.dl5080 --size 1024x1024
+	$(BIN) render scenes/fig1.scene -o out/fig1.png --dl out/fig1.dl5080 --size 1024x1024 --aa 4
 	@if [ -s out/fig1.dl5080 ]; then $(BIN) dl2png out/fig1.dl5080 out/fig1-5081.png; fi
 	@ls -l out
 
-bench: deps all
+bench: deps-demo all
 	@sh bench/run.sh $(BIN)
 
 # --- install ---------------------------------------------------------------
+# The binary, the man page, and under PREFIX/share/maprt the scenes (with
+# the images they name; `maprt render fig1` finds them there), the docs and
+# the README.
+SHARE_SCENES := $(wildcard scenes/*.scene scenes/*.png scenes/*.sh)
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
+	  $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/docs
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/maprt
 	install -m 644 docs/maprt.1 $(DESTDIR)$(PREFIX)/share/man/man1/maprt.1
+	install -m 644 $(SHARE_SCENES) $(DESTDIR)$(DATADIR)/scenes
+	install -m 644 docs/*.md README.md $(DESTDIR)$(DATADIR)/docs
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/maprt $(DESTDIR)$(PREFIX)/share/man/man1/maprt.1
+	rm -rf $(DESTDIR)$(DATADIR)
 
 clean:
 	rm -rf build build-asan build-fuzz out

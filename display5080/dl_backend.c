@@ -3,6 +3,7 @@
 #include "display5080/dl_raster.h"
 #include "util/mem.h"
 #include <string.h>
+#include <strings.h>
 
 static int dl_backend_png_open(int width, int height, void **dev, diag *err)
 {
@@ -47,7 +48,7 @@ const dl_backend *dl_backend_find(const char *name)
     static const dl_backend *const all[] = {&dl_backend_png, &dl_backend_osmesa, &dl_backend_egl};
     size_t i;
     for (i = 0; i < sizeof all / sizeof all[0]; i++)
-        if (!strcmp(all[i]->name, name))
+        if (!strcasecmp(all[i]->name, name))
             return all[i];
     return NULL;
 }

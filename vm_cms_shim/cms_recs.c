@@ -2,6 +2,7 @@
 #include "vm_cms_shim/cms_recs.h"
 #include "util/mem.h"
 #include <string.h>
+#include <strings.h>
 
 /* Characters (UTF-8 code points) in n bytes of host text: the column count
  * of a record, which is what LRECL limits. */
@@ -24,7 +25,7 @@ int cms_form_parse(const char *s, cms_form *f)
 {
     unsigned i;
     for (i = 0; i < sizeof recs_form_names / sizeof recs_form_names[0]; i++)
-        if (!strcmp(s, recs_form_names[i])) {
+        if (!strcasecmp(s, recs_form_names[i])) {
             *f = (cms_form)i;
             return 1;
         }

@@ -243,8 +243,17 @@ int cli_mpi_render(const scene *sc, const render_ops *ops, const render_opts *o,
         }
         done++;
         if (opt.progress) {
+            /* bands finished: a band's cost is not known ahead, so the
+             * fraction counts bands (docs/cluster.md) */
+            render_progress pr;
             long tiles_per_band = (opt.width + RENDER_TILE - 1) / RENDER_TILE;
-            opt.progress(opt.progress_ctx, done * tiles_per_band, nb * tiles_per_band);
+            pr.tiles_done = done * tiles_per_band;
+            pr.tiles = nb * tiles_per_band;
+            pr.fraction = (double)done / nb;
+            pr.elapsed_s = MPI_Wtime() - t0;
+            pr.rays = total.rays_primary + total.rays_shadow + total.rays_reflected +
+                      total.rays_refracted;
+            opt.progress(opt.progress_ctx, &pr);
         }
     }
     total.time_render_s = MPI_Wtime() - t0;

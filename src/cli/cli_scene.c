@@ -1,9 +1,12 @@
 /* cli_scene — file naming and deck loading for the CLI (see cli_scene.h). */
 #include "cli/cli_scene.h"
+#include "util/sniff.h"
 #include "cli/cli.h"
+#include "cli/cli_data.h"
 #include "image/image_png.h"
 #include "scene/scene_parse.h"
 #include "util/mem.h"
+#include "util/sha256.h"
 #include "vm_cms_shim/cms_cp.h"
 #include "vm_cms_shim/cms_deck.h"
 #include "vm_cms_shim/cms_fileid.h"
@@ -113,17 +116,52 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
     return st;
 }
 
-int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
+static void cli_scene_warn(void *ctx, const diag *w)
+{
+    (void)ctx;
+    diag_print_warning(stderr, w);
+}
+
+/* name, or "./name" when a host file of that name exists and the name
+ * would otherwise read as a fileid ('my deck' is not 'MY DECK A1' then):
+ * into buf, or *owned (mem_free it) when longer. NULL when out of memory. */
+static const char *cli_host_first(const char *name, char *buf, size_t cap, char **owned)
+{
+    size_t n = strlen(name) + 3;
+    *owned = NULL;
+    if (strchr(name, '/') || access(name, F_OK) != 0 || !cms_fileid_is_fileid(name))
+        return name;
+    if (n > cap && !(buf = *owned = mem_alloc(n)))
+        return NULL;
+    snprintf(buf, n, "./%s", name);
+    return buf;
+}
+
+int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err)
 {
     cms_deck *deck;
     recsrc src;
     cms_name cn;
     cli_images im;
     scene_loader ld;
-    char *slash;
-    int st = cms_name_input(&f->disks, name, &cn, err);
-    if (st)
+    char *slash, buf[256], *owned, *shipped = NULL;
+    const char *name;
+    int st;
+    if (cli_data_scene(given, &shipped))      /* "fig1": a shipped scene */
+        given = shipped;
+    name = cli_host_first(given, buf, sizeof buf, &owned);
+    st = name ? cms_name_input(&f->disks, name, &cn, err) : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
+    if (st) {
+        mem_free(owned);
+        mem_free(shipped);
         return st;
+    }
+    if (sniff_refuse(cn.path, cn.label, 1u << SNIFF_TEXT, "a scene deck", err)) {
+        cms_name_free(&cn);
+        mem_free(owned);
+        mem_free(shipped);
+        return err->status;
+    }
     im.files = f;
     im.mode = cn.is_fileid ? cn.id.mode : 0;
     im.dir = cn.path;
@@ -136,23 +174,64 @@ int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
         im.dir[0] = 0;
     ld.image = cli_images_read;
     ld.ctx = &im;
+    ld.warn = cli_scene_warn;
     st = cms_deck_open(&deck, &src, &f->disks, name, &f->decode, err);
     if (st == 0) {
         st = scene_parse_with(&src, &ld, out, err);
         cms_deck_close(deck);
     }
     mem_free(im.dir);
+    mem_free(owned);
+    mem_free(shipped);
     return st;
 }
 
-int cli_output_path(const cli_files *f, const char *name, char **path, diag *err)
+int cli_output_path(const cli_files *f, const char *given, char **path, diag *err)
 {
     cms_name n;
-    int st = cms_name_output(&f->disks, name, &n, err);
+    char buf[256], *owned;
+    const char *name = cli_host_first(given, buf, sizeof buf, &owned);
+    int st = name ? cms_name_output(&f->disks, name, &n, err)
+                  : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
+    mem_free(owned);
     if (st)
         return st;
     *path = n.path;
     n.path = NULL;
     cms_name_free(&n);
     return 0;
+}
+
+int cli_file_sha256(const cli_files *f, const char *given, char hex[65], diag *err)
+{
+    cms_name cn;
+    char nbuf[256], buf[4096], *owned, *shipped = NULL;
+    const char *name;
+    sha256 h;
+    FILE *fp;
+    size_t n;
+    int st;
+    if (cli_data_scene(given, &shipped))
+        given = shipped;
+    name = cli_host_first(given, nbuf, sizeof nbuf, &owned);
+    st = name ? cms_name_input(&f->disks, name, &cn, err) : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
+    mem_free(owned);
+    mem_free(shipped);
+    if (st)
+        return st;
+    if (!(fp = fopen(cn.path, "rb"))) {
+        st = diag_at(err, DIAG_IO, cn.label, 0, 0, "cannot open to checksum it");
+        cms_name_free(&cn);
+        return st;
+    }
+    sha256_init(&h);
+    while ((n = fread(buf, 1, sizeof buf, fp)) > 0)
+        sha256_update(&h, buf, n);
+    if (ferror(fp))
+        st = diag_at(err, DIAG_IO, cn.label, 0, 0, "read error while checksumming");
+    fclose(fp);
+    cms_name_free(&cn);
+    if (!st)
+        sha256_hex(&h, hex);
+    return st;
 }

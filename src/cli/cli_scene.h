@@ -27,13 +27,20 @@ int cli_files_option(cli_files *f, const char *cmd, int argc, char **argv, int *
 /* The help text lines for the shared options. */
 extern const char cli_files_help[];
 
-/* Reads and parses the deck `name`. Images the deck names are read beside
+/* Reads and parses the deck `name` (a name such as "fig1" that is neither a
+ * host file nor a fileid is a shipped scene, cli_data.h). Images the deck names are read beside
  * it: relative to its host directory, and for a deck read by fileid also as
  * fileid "FN FT m" on its disk for an image written FN.FT. 0 and *out
  * (scene_free it), or a diag status with err naming the file or fileid and
  * record. */
 int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err);
 
+/* The SHA-256 of the file `name` (as `sha256sum` prints it) for a
+ * picture's provenance. 0, or a diag status. */
+int cli_file_sha256(const cli_files *f, const char *name, char hex[65], diag *err);
+
+/* Every name: a host file that exists wins over reading the name as a
+ * fileid (a file 'my deck' is not 'MY DECK A1'). */
 /* Resolves an output name to a host path: *path (mem_free it). */
 int cli_output_path(const cli_files *f, const char *name, char **path, diag *err);
 #endif

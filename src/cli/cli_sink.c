@@ -3,6 +3,7 @@
 #include "cli/cli_sink.h"
 #include "render/outline.h"
 #include "util/mem.h"
+#include "util/version.h"
 
 /* Outline segments of the rendered primitives as 2-point polylines in
  * device coordinates (lower-left origin) for the display list. */
@@ -50,4 +51,24 @@ int cli_sink_dl(const char *path, const render_fb *fb, dl_image_opts *dlo, int w
     mem_free(xy);
     mem_free(lines);
     return st;
+}
+
+int cli_sink_provenance(const cli_files *files, const char *deck, const char *mode, int aa,
+                        const render_fb *fb, image_meta *m, diag *err)
+{
+    char hex[65], date[32];
+    if (deck && cli_file_sha256(files, deck, hex, err))
+        return err->status;
+    image_meta_date(date);
+    image_meta_init(m);
+    image_meta_add(m, "Software", "maprt %s", version_string());
+    image_meta_add(m, "Creation Time", "%s", date);
+    if (deck) {
+        image_meta_add(m, "maprt:deck", "%s", deck);
+        image_meta_add(m, "maprt:deck-sha256", "%s", hex);
+    }
+    image_meta_add(m, "maprt:numeric", "%s", mode);
+    image_meta_add(m, "maprt:size", "%dx%d", fb->img.width, fb->img.height);
+    image_meta_add(m, "maprt:aa", "%d", aa);
+    return 0;
 }

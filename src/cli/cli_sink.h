@@ -4,7 +4,9 @@
  * (--wireframe, from the pid map). */
 #ifndef CLI_SINK_H
 #define CLI_SINK_H
+#include "cli/cli_scene.h"
 #include "display5080/dl_image.h"
+#include "image/image_meta.h"
 #include "render/render.h"
 #include "util/diag.h"
 
@@ -12,4 +14,10 @@
  * colour count, size and PSNR. 0 or the diag status. */
 int cli_sink_dl(const char *path, const render_fb *fb, dl_image_opts *dlo, int wireframe,
                  dl_image_stats *dls, diag *err);
+/* What made the picture, for its PNG tEXt chunks or PPM/PAM comments:
+ * maprt's version, the date (SOURCE_DATE_EPOCH when set), the deck's name
+ * and SHA-256 (none when deck is NULL), the numeric mode, size and aa.
+ * render and merge write the same, so merged parts give the same bytes. */
+int cli_sink_provenance(const cli_files *files, const char *deck, const char *mode, int aa,
+                        const render_fb *fb, image_meta *m, diag *err);
 #endif

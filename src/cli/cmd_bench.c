@@ -347,7 +347,7 @@ int cmd_bench(int argc, char **argv)
             if (!(plot = cli_value("bench", argc, argv, &i)))
                 goto usage;
         } else if (a[0] == '-' && a[1]) {
-            cli_usage_error("bench", "unknown option '%s'", a);
+            cli_unknown_option("bench", a, bench_help);
             goto usage;
         } else {
             scenes[nscenes++] = a;

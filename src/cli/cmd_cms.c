@@ -3,6 +3,7 @@
  * punch decks, EBCDIC card images, V streams) and host directories mapped to
  * CMS disks, and shows them the way LISTFILE and TYPE would. */
 #include "cli/cli.h"
+#include "util/sniff.h"
 #include "util/diag.h"
 #include "vm_cms_shim/cms_file.h"
 #include "vm_cms_shim/cms_import.h"
@@ -72,6 +73,8 @@ static const char usage_text[] =
     "Errors carry CMS return codes: 20 invalid character in fileid, 24 invalid\n"
     "filemode, 28 file not found, 36 disk not accessed.\n"
     "Exit status: 0 ok, 1 bad input (incl. those RCs), 2 usage, 3 I/O failure.\n";
+
+static void cms_help_print(FILE *f) { fputs(usage_text, f); }
 
 /* Which options each action takes (bit per option, see opt_names); the
  * first CMS_OPT_VALUED take a value. */
@@ -241,7 +244,7 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
             break;
         default:
             if (a[0] == '-' && a[1])
-                return cli_usage_error("cms", "unknown option '%s'", a);
+                return cli_unknown_option("cms", a, cms_help_print);
             c->pos[c->npos++] = a;
         }
     }
@@ -311,6 +314,9 @@ static int cms_do_import(cms_cli *c)
     o.replace = c->replace;
     o.warn = &w;
     diag_init(&d);
+    /* card decks of any form and tapes; a picture or display list is named */
+    if (sniff_refuse(c->pos[0], c->pos[0], 1u << SNIFF_TEXT | 1u << SNIFF_AWS, "a card deck or a tape", &d))
+        return cli_fail(&d);
     rc = cms_import(&c->disks, c->pos[0], &o, import_report, NULL, &n, &d);
     if (rc)
         return cli_fail(&d);
@@ -333,6 +339,13 @@ static int list_one(void *ctx, const char *path, const cms_fileid *id)
     cms_cli_decode_opts(l->c, &o, l->c->cp_set, l->c->cp);
     diag_init(&d);
     if (cms_file_stat(&l->c->disks, path, &o, &info, &d)) {
+        sniff_kind k = sniff_file(path);
+        if (k != SNIFF_UNKNOWN && k != SNIFF_TEXT) {
+            /* a host file that is no CMS file at all: noted, not an error */
+            fprintf(stderr, "maprt: note: %s skipped: %s, not a CMS file\n",
+                    cms_fileid_format(id, t, sizeof t), sniff_name(k));
+            return 0;
+        }
         snprintf(d.file, sizeof d.file, "%s", cms_fileid_format(id, t, sizeof t));
         diag_print(stderr, &d);
         l->bad = d.status;

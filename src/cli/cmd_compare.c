@@ -11,7 +11,8 @@ static const char compare_help[] =
     "usage: maprt compare REFERENCE TEST [options]\n"
     "\n"
     "Measures TEST (e.g. a maprt render) against REFERENCE (e.g. a scan of the\n"
-    "paper's Figure 1). Both may be PNG or PNM (P2 P3 P5 P6, maxval 1..65535),\n"
+    "paper's Figure 1). Both may be PNG, PNM (P2 P3 P5 P6, maxval 1..65535),\n"
+    "JPEG or TIFF (any depth; the first image),\n"
     "files of up to 64 Mpixels; at most 16 Mpixels of each are compared (the\n"
     "reference after --crop). All figures are computed in the reference's\n"
     "pixel frame, over the pixels the test covers.\n"
@@ -65,7 +66,12 @@ static const char compare_help[] =
     "                  register_score is the edge-map correlation (-1..1)\n"
     "\n"
     "exit status: 0 ok, 1 bad input (unreadable picture, sizes differ without\n"
-    "--register, no registration found), 2 usage, 3 I/O failure\n";
+    "--register, no registration found), 2 usage, 3 I/O failure, 4 measured\n"
+    "but the pair does not look like the same picture: with --register a\n"
+    "register_score below 0.78, or an ssim below 0.30 (a warning on stderr says\n"
+    "which; the figures are printed as usual)\n";
+
+static void compare_help_print(FILE *f) { fputs(compare_help, f); }
 
 /* Parses "A,B,..." into n doubles; 0 or CLI_USAGE after a message. */
 static int compare_list(const char *opt, const char *s, int n, double *out)
@@ -166,7 +172,7 @@ int cmd_compare(int argc, char **argv)
             o.cw = (int)d[2];
             o.ch = (int)d[3];
         } else if (a[0] == '-' && a[1] != '\0') {
-            return cli_usage_error("compare", "unknown option '%s'", a);
+            return cli_unknown_option("compare", a, compare_help_print);
         } else if (nfiles < 2) {
             files[nfiles++] = a;
         } else {
@@ -175,6 +181,9 @@ int cmd_compare(int argc, char **argv)
     }
     if (nfiles != 2)
         return cli_usage_error("compare", "need REFERENCE and TEST pictures");
+    if ((o.diff_path && cli_png_name("compare", "--diff", o.diff_path))
+        || (o.sbs_path && cli_png_name("compare", "--side-by-side", o.sbs_path)))
+        return CLI_USAGE;
     diag_init(&err);
     rc = compare_files(files[0], files[1], &o, &r, &err);
     if (rc) {
@@ -182,5 +191,14 @@ int cmd_compare(int argc, char **argv)
         return rc;
     }
     compare_print(&o, &r);
+    {
+        char why[96];
+        if (compare_mismatch(&r, why, sizeof why)) {
+            fflush(stdout);
+            fprintf(stderr, "maprt: %s: warning: %s and %s do not look like the same picture (%s); "
+                    "check the --side-by-side picture\n", files[1], files[0], files[1], why);
+            return CLI_MISMATCH;
+        }
+    }
     return CLI_OK;
 }

@@ -3,6 +3,7 @@
  * into one. */
 #include "cli/cli.h"
 #include "cli/cli_dl.h"
+#include "util/sniff.h"
 #include "display5080/dl_dump.h"
 #include "display5080/dl_image.h"
 #include "display5080/dl_render.h"
@@ -47,8 +48,12 @@ static void cmd_dl_stdout(void *ctx, const void *data, size_t len)
     fwrite(data, 1, len, stdout);
 }
 
-static int cmd_dl_read(const char *path, char **data, size_t *len, diag *err)
+/* A raw MegaPel stream has no header to recognise, so only a DL5080 list is
+ * sniffed. */
+static int cmd_dl_read(const char *path, int raw, char **data, size_t *len, diag *err)
 {
+    if (!raw && sniff_refuse(path, path, 1u << SNIFF_DL5080, "a DL5080 display list", err))
+        return err->status;
     return infile_read_all(path, DL_CLI_MAX_INPUT, data, len, err);
 }
 
@@ -73,7 +78,7 @@ static int cmd_dl_dump(const cli_dl_args *a)
     diag err;
     int rc;
     diag_init(&err);
-    if ((rc = cmd_dl_read(a->file[0], &data, &len, &err)) == 0) {
+    if ((rc = cmd_dl_read(a->file[0], a->raw, &data, &len, &err)) == 0) {
         rc = dl_dump((const uint8_t *)data, len, a->file[0], &d, cmd_dl_stdout, NULL, &err);
         mem_free(data);
     }
@@ -92,7 +97,7 @@ static int cmd_dl_validate(const cli_dl_args *a)
     diag err;
     int rc, i;
     diag_init(&err);
-    if ((rc = cmd_dl_read(a->file[0], &data, &len, &err)) == 0) {
+    if ((rc = cmd_dl_read(a->file[0], a->raw, &data, &len, &err)) == 0) {
         rc = dl_validate((const uint8_t *)data, len, a->file[0], &d, &s, &err);
         mem_free(data);
     }
@@ -124,7 +129,8 @@ static int cmd_dl_encode(const cli_dl_args *a)
     o.dac = a->dac ? a->dac : 4;
     o.dither = a->dither;
     diag_init(&err);
-    if ((rc = image_read_png(a->file[0], 3, &img, &err)) == 0) {
+    if ((rc = sniff_refuse(a->file[0], a->file[0], 1u << SNIFF_PNG, "a PNG image", &err)) == 0
+        && (rc = image_read_png(a->file[0], 3, &img, &err)) == 0) {
         rc = dl_image_write(a->file[1], &img, &o, &st, &err);
         image_free(&img);
     }

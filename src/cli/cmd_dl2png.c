@@ -3,6 +3,7 @@
  * would show as a PNG. */
 #include "cli/cli.h"
 #include "cli/cli_dl.h"
+#include "util/sniff.h"
 #include "display5080/dl_render.h"
 #include "util/mem.h"
 #include "util/outfile.h"
@@ -57,6 +58,8 @@ int cmd_dl2png(int argc, char **argv)
                            CLI_DL_DAC | CLI_DL_RAW | CLI_DL_TRUECOLOR | CLI_DL_BACKEND, 2,
                            "IN.dl5080 and OUT.png", &a)))
         return rc;
+    if (cli_png_name("dl2png", "OUT", a.file[1]))
+        return CLI_USAGE;
     if (!(b = dl_backend_find(a.backend ? a.backend : "png")))
         return cli_usage_error("dl2png", "--backend: '%s' is not png, osmesa or egl", a.backend);
     memset(&ro, 0, sizeof ro);
@@ -65,7 +68,9 @@ int cmd_dl2png(int argc, char **argv)
     ro.width = a.width;
     ro.height = a.height;
     diag_init(&err);
-    if ((rc = infile_read_all(a.file[0], DL2PNG_MAX_INPUT, &data, &len, &err)) == 0) {
+    if ((a.raw || (rc = sniff_refuse(a.file[0], a.file[0], 1u << SNIFF_DL5080,
+                                     "a DL5080 display list", &err)) == 0)
+        && (rc = infile_read_all(a.file[0], DL2PNG_MAX_INPUT, &data, &len, &err)) == 0) {
         if ((rc = dl_render((const uint8_t *)data, len, a.file[0], b, &ro, &frame, &err)) == 0) {
             if (frame.src_blts)
                 fprintf(stderr,

@@ -4,6 +4,8 @@
  * outputs a single `maprt render` would have written, byte for byte. */
 #include "cli/cli.h"
 #include "cli/cli_sink.h"
+#include "cli/cli_scene.h"
+#include "image/image_out.h"
 #include "image/image_png.h"
 #include "render/render_part.h"
 #include "util/mem.h"
@@ -13,15 +15,19 @@
 static void cmd_merge_help(FILE *f)
 {
     fprintf(f,
-        "usage: maprt merge PART... [-o OUT.png] [--dl OUT.dl5080 [--dac 4|8] [--dither]\n"
-        "                   [--wireframe]] [--stats]\n"
+        "usage: maprt merge PART... [-o OUT.png|OUT.ppm|OUT.pam] [--deck SCENE]\n"
+        "                   [--dl OUT.dl5080 [--dac 4|8] [--dither] [--wireframe]] [--stats]\n"
         "\n"
         "Assembles region files written by 'maprt render SCENE --region X0,Y0,X1,Y1\n"
         "--part FILE' into the whole image and writes it as 'maprt render' would: the\n"
         "same PNG and DL5080 bytes. The parts must come from one scene, size, --aa and\n"
         "--numeric, and cover every pixel exactly once.\n"
         "\n"
-        "  -o OUT.png     write the true-colour PNG\n"
+        "  -o OUT         write the picture (.png, .ppm or .pam, as render does)\n"
+        "  --deck SCENE   the deck the parts were rendered from: its name and SHA-256\n"
+        "                 go into the picture's provenance, as render writes them\n"
+        "                 (without it they are left out, and the PNG differs from\n"
+        "                 render's in those chunks only)\n"
         "  --dl OUT       write a DL5080 display list (--dac, --dither, --wireframe as\n"
         "                 for render)\n"
         "  --stats        print the counters summed over the parts (time.render_s: the\n"
@@ -76,7 +82,9 @@ done:
 
 int cmd_merge(int argc, char **argv)
 {
-    const char *out_png = NULL, *out_dl = NULL, *v;
+    const char *out_png = NULL, *out_dl = NULL, *deck = NULL, *v;
+    image_out_format pic_format = IMAGE_OUT_NONE;
+    cli_files files;
     render_part_info first;
     render_fb fb;
     render_stats total;
@@ -102,6 +110,8 @@ int cmd_merge(int argc, char **argv)
             if (!(out_png = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--dl")) {
             if (!(out_dl = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--deck")) {
+            if (!(deck = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--dac")) {
             if (!(v = cli_value("merge", argc, argv, &i)) || cli_long("merge", a, v, 4, 8, &n)
                 || (n != 4 && n != 8))
@@ -126,11 +136,21 @@ int cmd_merge(int argc, char **argv)
         status = cli_usage_error("merge", "no output: give -o OUT.png and/or --dl OUT.dl5080");
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
         status = cli_usage_error("merge", "--dac, --dither and --wireframe need --dl");
+    if (!status && out_png && image_out_choose(out_png, IMAGE_OUT_NONE, &pic_format, &err)) {
+        diag_print(stderr, &err);
+        status = CLI_USAGE;
+    }
     if (status)
         return status;
+    if (cli_files_init(&files, &err)) {
+        diag_print(stderr, &err);
+        cli_files_free(&files);
+        return CLI_USAGE;
+    }
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "--dl") || !strcmp(a, "--dac")) {
+        if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "--dl") || !strcmp(a, "--dac")
+            || !strcmp(a, "--deck")) {
             i++;
             continue;
         }
@@ -147,8 +167,12 @@ int cmd_merge(int argc, char **argv)
                 "uncovered", k % (size_t)first.width, k / (size_t)first.width);
         goto done;
     }
-    if (out_png && image_write_png(out_png, &fb.img, &err))
-        goto done;
+    if (out_png) {
+        image_meta meta;
+        if (cli_sink_provenance(&files, deck, first.mode, first.aa, &fb, &meta, &err)
+            || image_out_write(out_png, pic_format, &fb.img, &meta, &err))
+            goto done;
+    }
     if (out_dl && cli_sink_dl(out_dl, &fb, &dlo, wireframe, &dls, &err))
         goto done;
     if (stats) {
@@ -161,6 +185,7 @@ int cmd_merge(int argc, char **argv)
 done:
     render_fb_free(&fb);
     mem_free(covered);
+    cli_files_free(&files);
     if (err.status) {
         diag_print(stderr, &err);
         return err.status;

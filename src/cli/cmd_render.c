@@ -1,9 +1,11 @@
 /* cmd_render — `maprt render`: scene deck -> compiled scene for one numeric
  * mode -> tiled render -> PNG (and, later, a DL5080 display list). */
-#include "image/image_png.h"
+#include "image/image_out.h"
 #include "cli/cli.h"
 #include "cli/cli_sink.h"
 #include "cli/cli_mpi.h"
+#include "cli/cli_data.h"
+#include "cli/cli_progress.h"
 #include "cli/cli_scene.h"
 #include "render/render.h"
 #include "render/render_part.h"
@@ -11,21 +13,36 @@
 #include "display5080/dl_format.h"
 #include "display5080/dl_image.h"
 #include "util/mem.h"
+#include "util/version.h"
 #include <omp.h>
 #include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#define MAPRT_SHARE_HINT "PREFIX/share/maprt/scenes"
 
 static void render_help(FILE *f)
 {
     fprintf(f,
-        "usage: maprt render SCENE [-o OUT.png] [--dl OUT.dl5080] [--ids OUT.ids] [options]\n"
+        "usage: maprt render SCENE [-o OUT.png|OUT.ppm|OUT.pam|-] [--dl OUT.dl5080]\n"
+        "                    [--ids OUT.ids] [--part OUT.part [--region X0,Y0,X1,Y1]] [options]\n"
+        "       maprt render --list\n"
         "\n"
         "Ray-traces the scene deck SCENE (see docs/scene-format.md) and writes a\n"
         "true-colour PNG and/or a DL5080 display list, as the IBM 5081 would show it.\n"
-        "SCENE and every output may be a host path or a CMS fileid ('FIG1 SCENE A').\n"
+        "SCENE and every output may be a host path or a CMS fileid ('FIG1 SCENE A');\n"
+        "SCENE may also name a scene shipped with maprt ('fig1'; see --list), found\n"
+        "in $MAPRT_SCENES, " MAPRT_SHARE_HINT " or the source tree.\n"
         "Outputs are written to a temporary name and renamed when complete.\n"
         "\n"
         "options:\n"
-        "  -o, --output OUT.png  write a true-colour PNG\n"
+        "  -o, --output OUT      write the picture: OUT.png a true-colour PNG, OUT.ppm\n"
+        "                        a binary PPM (P6), OUT.pam a PAM (P7); '-' standard\n"
+        "                        output (with --format). Other names are refused.\n"
+        "                        PNGs carry tEXt provenance (maprt version, deck and\n"
+        "                        its SHA-256, numeric mode, size, aa, date); PPM/PAM\n"
+        "                        the same as '#' comments\n"
+        "  --format png|ppm|pam  the format for -o - (a file's name decides its own)\n"
         "  --part OUT.part       write the rendered pixels as a region file for 'maprt\n"
         "                        merge' (docs/cluster.md)\n"
         "  --region X0,Y0,X1,Y1  render only pixels [X0,X1) x [Y0,Y1) (with --part), e.g.\n"
@@ -55,9 +72,16 @@ static void render_help(FILE *f)
         "                        dl.colours dl.bytes dl.psnr with --dl); any overflow\n"
         "                        or range.cut is also reported on stderr\n"
         "%s"
+        "  --list                list the shipped scenes and exit\n"
         "  -h, --help            show this help\n"
         "\n"
-        "A progress bar is drawn on stderr when it is a terminal. Under 'mpirun -n N'\n"
+        "  --progress            show progress on stderr even when it is not a terminal\n"
+        "  --quiet               show neither progress nor the closing summary\n"
+        "\n"
+        "On a terminal (or with --progress) stderr shows the share done, elapsed\n"
+        "time, ETA and rays/s, the share weighted by each tile's cost as measured\n"
+        "before the render so that it runs linearly in time, and one closing line:\n"
+        "time (wall and CPU), rays/s and the outputs written. Under 'mpirun -n N'\n"
         "(a build with MPI) the ranks share the image and rank 0 writes the outputs\n"
         "(--stats adds mpi.ranks and each rank's share).\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
@@ -65,15 +89,22 @@ static void render_help(FILE *f)
         cli_files_help);
 }
 
-/* Progress bar on stderr (a terminal), redrawn after every tile. */
-static void render_progress(void *ctx, long done, long total)
+
+/* The closing line: what was rendered, the time it took, the rate, and
+ * the outputs written. */
+static void render_summary(const char *deck, const render_opts *o, const render_fb *fb,
+                           const render_ops *ops, const render_stats *st, clock_t cpu0,
+                           const char *png, const char *dl)
 {
-    int width = 40, fill = (int)(done * width / total);
-    (void)ctx;
-    fprintf(stderr, "\rrender [%.*s%*s] %3ld%%", fill,
-            "########################################", width - fill, "", done * 100 / total);
-    if (done == total)
-        fputc('\n', stderr);
+    char wall[24], cpu[24], rate[32];
+    double secs = st->time_compile_s + st->time_render_s;
+    unsigned long long rays = st->rays_primary + st->rays_shadow + st->rays_reflected + st->rays_refracted;
+    cli_progress_time(secs, wall, sizeof wall);
+    cli_progress_time((double)(clock() - cpu0) / CLOCKS_PER_SEC, cpu, sizeof cpu);
+    cli_progress_rate(st->time_render_s > 0 ? (double)rays / st->time_render_s : 0, rate, sizeof rate);
+    fprintf(stderr, "maprt: %s: %dx%d, aa %d, %s: %s (CPU %s), %.3g Mrays, %s; wrote %s%s%s\n", deck,
+            fb->img.width, fb->img.height, o->aa, ops->name, wall, cpu, (double)rays / 1e6, rate,
+            png ? (strcmp(png, "-") ? png : "standard output") : "", png && dl ? ", " : "", dl ? dl : "");
 }
 
 /* Writes the rendered region (the whole image without --region) as a
@@ -109,7 +140,9 @@ int cmd_render(int argc, char **argv)
 {
     const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *out_part = NULL;
     const char *out_ids = NULL, *mode = "q16", *v;
-    char *png_path = NULL, *dl_path = NULL, *part_path = NULL, *ids_path = NULL;
+    const char *format = NULL;
+    image_out_format pic_format = IMAGE_OUT_NONE;
+    char *png_path = NULL, *dl_path = NULL, *part_path = NULL, *ids_path = NULL, *shipped = NULL;
     cli_mpi_share share[CLI_MPI_MAX_RANKS];
     const render_ops *ops = NULL;
     render_opts o;
@@ -122,11 +155,17 @@ int cmd_render(int argc, char **argv)
     diag err;
     long n;
     int i, stats = 0, wireframe = 0, status = 0, rendered = 0, quiet = 0, root_status = 0;
+    int progress = -1;
+    cli_progress bar;
+    clock_t cpu0 = clock();
 
     if (cli_wants_help(argc, argv)) {
         render_help(stdout);
         return CLI_OK;
     }
+    for (i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--list"))
+            return cli_data_list(stdout);
     diag_init(&err);
     if (cli_files_init(&files, &err)) {
         diag_print(stderr, &err);
@@ -146,6 +185,11 @@ int cmd_render(int argc, char **argv)
             continue;
         if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
             if (!(out_png = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--format")) {
+            if (!(format = cli_value("render", argc, argv, &i)))
+                status = CLI_USAGE;
+            else if (!image_out_parse(format))
+                status = cli_usage_error("render", "--format: '%s' is not png, ppm or pam", format);
         } else if (!strcmp(a, "--dl")) {
             if (!(out_dl = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--part")) {
@@ -185,8 +229,10 @@ int cmd_render(int argc, char **argv)
                 o.aa = (int)n;
         } else if (!strcmp(a, "--stats")) {
             stats = 1;
+        } else if (!strcmp(a, "--progress") || !strcmp(a, "--quiet")) {
+            progress = a[2] == 'p';
         } else if (a[0] == '-' && a[1]) {
-            status = cli_usage_error("render", "unknown option '%s'", a);
+            status = cli_unknown_option("render", a, render_help);
         } else if (scene_name) {
             status = cli_usage_error("render", "more than one SCENE ('%s', '%s')", scene_name, a);
         } else {
@@ -204,6 +250,12 @@ int cmd_render(int argc, char **argv)
     if (!status && out_ids && (out_part || cli_mpi_size() > 1))
         status = cli_usage_error("render", "--ids is written by single-process renders only "
                                  "(not with --part or under mpirun)");
+    if (!status && format && !out_png)
+        status = cli_usage_error("render", "--format applies to -o");
+    if (!status && out_png && !strcmp(out_png, "-") && stats)
+        status = cli_usage_error("render", "--stats writes to standard output, so it cannot go with -o -");
+    if (!status && out_png && !strcmp(out_png, "-") && isatty(1))
+        status = cli_usage_error("render", "-o -: standard output is a terminal; redirect it to a file or a pipe");
     if (!status && !(ops = render_ops_find(mode)))
         status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32, f64, hfp32 or hfp64", mode);
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
@@ -214,7 +266,12 @@ int cmd_render(int argc, char **argv)
     }
 
     /* Resolve every name before the long work, so a bad fileid fails fast. */
-    if ((out_png && cli_output_path(&files, out_png, &png_path, &err))
+    if (cli_data_scene(scene_name, &shipped))
+        scene_name = shipped;
+    if ((out_png && strcmp(out_png, "-") && cli_output_path(&files, out_png, &png_path, &err))
+        || (out_png && image_out_choose(png_path ? png_path : "-", format ? image_out_parse(format)
+                                                                          : IMAGE_OUT_NONE,
+                                        &pic_format, &err))
         || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
         || (out_part && cli_output_path(&files, out_part, &part_path, &err))
         || (out_ids && cli_output_path(&files, out_ids, &ids_path, &err))
@@ -235,8 +292,13 @@ int cmd_render(int argc, char **argv)
                 DL_MAX_SIDE, DL_MAX_SIDE);
         goto done;
     }
-    if (cli_is_tty() && cli_mpi_rank() == 0)
-        o.progress = render_progress;
+    if (progress < 0)
+        progress = cli_is_tty();
+    if (progress && cli_mpi_rank() == 0) {
+        cli_progress_init(&bar);
+        o.progress = cli_progress_update;
+        o.progress_ctx = &bar;
+    }
     o.ids = out_ids != NULL;
     if (cli_mpi_render(sc, ops, &o, &fb, &st, share, &err))
         goto done;
@@ -252,12 +314,18 @@ int cmd_render(int argc, char **argv)
                                          : "try --numeric q32 or f64");
     if (part_path && render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
         goto done;
-    if (png_path && image_write_png_mt(png_path, &fb.img, o.threads, &err))
-        goto done;
+    if (out_png) {
+        image_meta meta;
+        if (cli_sink_provenance(&files, scene_name, ops->name, o.aa, &fb, &meta, &err)
+            || image_out_write(png_path ? png_path : "-", pic_format, &fb.img, &meta, &err))
+            goto done;
+    }
     if (dl_path && cli_sink_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
         goto done;
     if (ids_path && idmap_write(ids_path, &fb.ids, &err))
         goto done;
+    if (progress)
+        render_summary(scene_name, &o, &fb, ops, &st, cpu0, out_png, out_dl);
     if (stats) {
         printf("numeric=%s\n", ops->name);
         render_stats_print(stdout, &st);
@@ -275,6 +343,7 @@ done:
     mem_free(dl_path);
     mem_free(part_path);
     mem_free(ids_path);
+    mem_free(shipped);
     cli_files_free(&files);
     if (err.status) {
         if (!quiet)

@@ -1,6 +1,8 @@
 /* main — maprt's entry point: dispatches git-style subcommands. */
 #include "cli/cli.h"
 #include "cli/cli_mpi.h"
+#include "util/suggest.h"
+#include "util/version.h"
 #include <string.h>
 
 typedef struct cli_command {
@@ -30,6 +32,9 @@ static void usage(FILE *f)
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
     fprintf(f, "\n'maprt COMMAND --help' describes each command.\n"
+               "Options follow getopt_long conventions: --opt=value or --opt value, '--'\n"
+               "ends the options, values such as --numeric Q16 in any case; --version\n"
+               "prints the version.\n"
                "exit status: 0 ok, 1 bad input, 2 usage, 3 I/O or internal failure\n");
 }
 
@@ -45,10 +50,39 @@ static int run(int argc, char **argv)
         usage(stdout);
         return CLI_OK;
     }
+    /* --opt=value, --, --version: once here for every subcommand */
+    if (cli_conventions(&argc, &argv)) {
+        printf("maprt %s\n", version_string());
+        cli_conventions_free();
+        return CLI_OK;
+    }
+    if (!argv) {
+        fprintf(stderr, "maprt: error: out of memory\n");
+        return CLI_IO;
+    }
+    if (argc < 2) {
+        cli_conventions_free();
+        usage(stderr);
+        return CLI_USAGE;
+    }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name))
-            return commands[i].run(argc - 1, argv + 1);
-    fprintf(stderr, "maprt: error: unknown command '%s'\n", argv[1]);
+        if (!strcmp(argv[1], commands[i].name)) {
+            int rc = commands[i].run(argc - 1, argv + 1);
+            cli_conventions_free();
+            return rc;
+        }
+    {
+        suggest sg;
+        suggest_init(&sg, argv[1]);
+        for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
+            suggest_try(&sg, commands[i].name, 0);
+        if (suggest_best(&sg))
+            fprintf(stderr, "maprt: error: unknown command '%s' (did you mean %s?)\n", argv[1],
+                    suggest_best(&sg));
+        else
+            fprintf(stderr, "maprt: error: unknown command '%s'\n", argv[1]);
+    }
+    cli_conventions_free();
     usage(stderr);
     return CLI_USAGE;
 }

@@ -6,6 +6,7 @@
 #include "compare/metrics.h"
 #include "compare/ssim.h"
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 void compare_opts_init(compare_opts *o)
@@ -275,4 +276,17 @@ int compare_files(const char *ref_path, const char *test_path, const compare_opt
     image_free(&ref);
     image_free(&test);
     return rc;
+}
+
+int compare_mismatch(const compare_result *r, char *why, size_t cap)
+{
+    if (r->registered && r->register_score < COMPARE_MATCH_MIN_SCORE) {
+        snprintf(why, cap, "register_score %.4f < %.2f", r->register_score, COMPARE_MATCH_MIN_SCORE);
+        return 1;
+    }
+    if (r->ssim_windows > 0 && r->ssim < COMPARE_MATCH_MIN_SSIM) {
+        snprintf(why, cap, "ssim %.4f < %.2f", r->ssim, COMPARE_MATCH_MIN_SSIM);
+        return 1;
+    }
+    return 0;
 }

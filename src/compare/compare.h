@@ -40,6 +40,16 @@ typedef struct compare_result {
     double gain[3], offset[3]; /* when levels: test' = gain * test + offset */
 } compare_result;
 
+/* Below these a pair very likely shows two different things (figures
+ * measured on renders of the shipped scenes against each other, in
+ * docs/compare.md): the registration's edge correlation, and SSIM. */
+#define COMPARE_MATCH_MIN_SCORE 0.78
+#define COMPARE_MATCH_MIN_SSIM 0.30
+
+/* 1 when r says the two pictures do not show the same thing, with the
+ * reason ("register_score 0.45 < 0.78") in why; 0 otherwise. */
+int compare_mismatch(const compare_result *r, char *why, size_t cap);
+
 /* Sets the documented defaults. */
 void compare_opts_init(compare_opts *o);
 

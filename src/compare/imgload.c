@@ -1,7 +1,10 @@
-/* imgload — PNG or PNM by content (see imgload.h). */
+/* imgload — PNG, PNM, JPEG or TIFF by content (see imgload.h). */
 #include "image/image_png.h"
 #include "compare/imgload.h"
+#include "image/image_jpeg.h"
+#include "image/image_tiff.h"
 #include "image/pnm.h"
+#include "util/sniff.h"
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <errno.h>
@@ -19,7 +22,7 @@ int imgload_memory(const char *name, const void *data, size_t len, size_t max_pi
     static const unsigned char png_sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     const unsigned char *p = data;
     if (len == 0)
-        return diag_at(err, DIAG_INPUT, name, 0, 0, "empty file (not a PNG or PNM image)");
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "empty file (not a PNG, PNM, JPEG or TIFF image)");
     if (len >= 8 && !memcmp(data, png_sig, 8)) {
         /* the size is in the IHDR chunk, which must come first; anything
          * else is left for libpng to report */
@@ -39,7 +42,17 @@ int imgload_memory(const char *name, const void *data, size_t len, size_t max_pi
             return imgload_too_large(name, (unsigned long)info.width, (unsigned long)info.height, max_pixels, err);
         return pnm_read_memory(name, data, len, 3, out, err);
     }
-    return diag_at(err, DIAG_INPUT, name, 0, 0, "not a PNG or PNM image");
+    switch (sniff_data(data, len)) {
+    case SNIFF_JPEG:
+        return image_read_jpeg_memory(name, data, len, 3, max_pixels, out, err);
+    case SNIFF_TIFF:
+        return image_read_tiff_memory(name, data, len, 3, max_pixels, out, err);
+    default:
+        break;
+    }
+    if (sniff_refuse_data(data, len, name, 0, "a picture (PNG, PNM, JPEG or TIFF)", err))
+        return err->status;
+    return diag_at(err, DIAG_INPUT, name, 0, 0, "not a PNG, PNM, JPEG or TIFF image");
 }
 
 int imgload_read(const char *path, size_t max_pixels, image *out, diag *err)

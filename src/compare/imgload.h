@@ -1,6 +1,7 @@
-/* imgload — reads a picture for compare from a host file, PNG or PNM
- * (P2 P3 P5 P6), recognised by its first bytes, as 8-bit RGB (grey files are
- * replicated into the three channels). */
+/* imgload — reads a picture for compare from a host file, PNG, PNM
+ * (P2 P3 P5 P6), JPEG or TIFF (image_jpeg.h, image_tiff.h: where built with
+ * them), recognised by its first bytes, as 8-bit RGB (grey files are
+ * replicated into the three channels). Any other kind is named (util/sniff). */
 #ifndef IMGLOAD_H
 #define IMGLOAD_H
 #include "image/image.h"

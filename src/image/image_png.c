@@ -8,22 +8,35 @@
 #include <png.h>
 #include <string.h>
 
-/* Encodes a prepared png_image to memory, then commits it through outfile. */
+/* Encodes a prepared png_image to memory: *buf (mem_free it) and *size. */
+static int image_png_encode(const char *name, png_image *pi, const void *px, int row_stride,
+                            const void *colormap, void **buf, size_t *size, diag *err)
+{
+    png_alloc_size_t n = 0;
+    void *b;
+    if (!png_image_write_to_memory(pi, NULL, &n, 0, px, row_stride, colormap))
+        return diag_at(err, DIAG_IO, name, 0, 0, "PNG encoding failed: %s", pi->message);
+    b = mem_alloc(n);
+    if (!b)
+        return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
+    if (!png_image_write_to_memory(pi, b, &n, 0, px, row_stride, colormap)) {
+        mem_free(b);
+        return diag_at(err, DIAG_IO, name, 0, 0, "PNG encoding failed: %s", pi->message);
+    }
+    *buf = b;
+    *size = n;
+    return 0;
+}
+
+/* Encodes a prepared png_image, then commits it through outfile. */
 static int image_png_commit(const char *path, png_image *pi, const void *px, int row_stride,
                             const void *colormap, diag *err)
 {
-    png_alloc_size_t size = 0;
-    void *buf;
-    int rc;
-    if (!png_image_write_to_memory(pi, NULL, &size, 0, px, row_stride, colormap))
-        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
-    buf = mem_alloc(size);
-    if (!buf)
-        return diag_at(err, DIAG_IO, path, 0, 0, "out of memory");
-    if (!png_image_write_to_memory(pi, buf, &size, 0, px, row_stride, colormap)) {
-        mem_free(buf);
-        return diag_at(err, DIAG_IO, path, 0, 0, "PNG encoding failed: %s", pi->message);
-    }
+    void *buf = NULL;
+    size_t size = 0;
+    int rc = image_png_encode(path, pi, px, row_stride, colormap, &buf, &size, err);
+    if (rc)
+        return rc;
     rc = outfile_write_all(path, buf, size, err);
     mem_free(buf);
     return rc;
@@ -41,6 +54,19 @@ int image_write_png_mt(const char *path, const image *img, int threads, diag *er
     rc = outfile_write_all(path, buf, size, err);
     mem_free(buf);
     return rc;
+}
+
+/* To memory through the same threaded encoder (image_png_write.c), for
+ * writers that add chunks of their own (image_out: tEXt provenance). */
+int image_encode_png(const image *img, void **buf, size_t *size, diag *err)
+{
+    unsigned char *b;
+    if (img->channels != 1 && img->channels != 3)
+        return diag_at(err, DIAG_USAGE, "PNG", 0, 0, "internal: bad channel count");
+    if (image_png_write_mem(img, omp_get_max_threads(), IMAGE_PNG_WRITE_LEVEL, "PNG", &b, size, err))
+        return err->status;
+    *buf = b;
+    return 0;
 }
 
 int image_write_png(const char *path, const image *img, diag *err)

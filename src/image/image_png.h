@@ -14,6 +14,8 @@
  * default count. */
 int image_write_png_mt(const char *path, const image *img, int threads, diag *err);
 int image_write_png(const char *path, const image *img, diag *err);
+/* Encodes img the same way into memory: *buf (mem_free it) and *size. */
+int image_encode_png(const image *img, void **buf, size_t *size, diag *err);
 /* Writes an 8-bit palette PNG: index has width*height entries (top row
  * first); palette holds ncolors RGB triples (1..256). */
 int image_write_png_palette(const char *path, int width, int height, const uint8_t *index,

@@ -1,6 +1,7 @@
 /* pnm — strict, bounded Netpbm P2/P3/P5/P6 reader (see pnm.h). */
 #include "image/pnm.h"
 #include "util/mem.h"
+#include <stdio.h>
 #include <string.h>
 
 /* A cursor over the file that tracks line and column for diagnostics. */
@@ -221,5 +222,31 @@ int pnm_read_memory(const char *name, const void *data, size_t len, int channels
         pnm_store(img.px + i * (size_t)channels, channels, in_ch, v);
     }
     *out = img;
+    return 0;
+}
+
+int pnm_encode(const image *img, int pam, const char *comments, void **buf, size_t *len, diag *err)
+{
+    char head[160];
+    size_t hn, cn = comments ? strlen(comments) : 0;
+    size_t raster = (size_t)img->width * (size_t)img->height * (size_t)img->channels;
+    unsigned char *o;
+    int grey = img->channels == 1;
+    if (pam)
+        hn = (size_t)snprintf(head, sizeof head, "WIDTH %d\nHEIGHT %d\nDEPTH %d\nMAXVAL 255\n"
+                              "TUPLTYPE %s\nENDHDR\n", img->width, img->height, img->channels,
+                              grey ? "GRAYSCALE" : "RGB");
+    else
+        hn = (size_t)snprintf(head, sizeof head, "%d %d\n255\n", img->width, img->height);
+    if (!(o = mem_alloc(3 + cn + hn + raster)))
+        return diag_at(err, DIAG_IO, "PNM", 0, 0, "out of memory");
+    o[0] = 'P';
+    o[1] = pam ? '7' : grey ? '5' : '6';
+    o[2] = '\n';
+    memcpy(o + 3, comments ? comments : "", cn);
+    memcpy(o + 3 + cn, head, hn);
+    memcpy(o + 3 + cn + hn, img->px, raster);
+    *buf = o;
+    *len = 3 + cn + hn + raster;
     return 0;
 }

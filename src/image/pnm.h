@@ -1,5 +1,7 @@
 /* pnm — reading Netpbm greymaps and pixmaps (P2 P3 P5 P6) into an 8-bit
- * image. Used by compare, whose references are often scans saved as PNM.
+ * image, and writing binary PPM/PGM (P6/P5) or PAM (P7) for pipelines.
+ * Read by compare, whose references are often scans saved as PNM; written
+ * by render -o x.ppm / x.pam / - --format.
  * Strict: the header is magic, width, height, maxval (1..65535) separated by
  * whitespace and '#' comments, then exactly one whitespace character before a
  * binary raster; samples above maxval, short rasters and absurd sizes are
@@ -31,4 +33,10 @@ int pnm_read_header(const char *name, const void *data, size_t len, pnm_info *in
  * out is written only on success (free it with image_free). */
 int pnm_read_memory(const char *name, const void *data, size_t len, int channels,
                     image *out, diag *err);
+
+/* Encodes img (1 or 3 channels) as binary PGM/PPM (P5/P6, maxval 255) or,
+ * with pam, as PAM (P7, TUPLTYPE GRAYSCALE or RGB). comments, if not NULL,
+ * is inserted after the magic: lines that each start with '#'. *buf
+ * (mem_free it) and *len; DIAG_IO when out of memory. */
+int pnm_encode(const image *img, int pam, const char *comments, void **buf, size_t *len, diag *err);
 #endif

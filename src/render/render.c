@@ -5,6 +5,8 @@
 #include "util/mem.h"
 #include <omp.h>
 #include <string.h>
+#include <time.h>
+#include <strings.h>
 
 const render_ops *render_ops_find(const char *name)
 {
@@ -12,7 +14,7 @@ const render_ops *render_ops_find(const char *name)
                                             &f64_render_ops, &hfp32_render_ops, &hfp64_render_ops};
     size_t i;
     for (i = 0; name && i < sizeof all / sizeof all[0]; i++)
-        if (!strcmp(all[i]->name, name))
+        if (!strcasecmp(all[i]->name, name))
             return all[i];
     return NULL;
 }
@@ -81,6 +83,73 @@ int render_region_check(const int region[4], int width, int height)
            region[1] >= 0 && region[1] < region[3] && region[3] <= height ? 0 : -1;
 }
 
+static unsigned long long render_rays(const render_stats *st)
+{
+    return st->rays_primary + st->rays_shadow + st->rays_reflected + st->rays_refracted;
+}
+
+/* CPU seconds of the calling thread: unlike wall time, not inflated when
+ * the thread is descheduled on a loaded machine. */
+static double render_thread_cpu(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0)
+        return omp_get_wtime();
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Estimates each tile's cost for a progress display that is linear in
+ * time: times (in thread CPU time) a 4x4 grid of one-sample pixels in the tile (about 1/64 of
+ * its pixels at --aa 1) and scales by the tile's pixel count. The pixels
+ * are drawn into the framebuffer, which the render then overwrites. */
+/* Tile k of the ntx-wide grid whose first tile is (tx0, ty0), on the image's
+ * 32-pixel grid and clipped to o->region: pixels [r0,r2) x [r1,r3). */
+static void render_tile_rect(const render_opts *o, long tx0, long ty0, long ntx, long k, int r[4])
+{
+    r[0] = (int)(tx0 + k % ntx) * RENDER_TILE;
+    r[1] = (int)(ty0 + k / ntx) * RENDER_TILE;
+    r[2] = r[0] + RENDER_TILE > o->region[2] ? o->region[2] : r[0] + RENDER_TILE;
+    r[3] = r[1] + RENDER_TILE > o->region[3] ? o->region[3] : r[1] + RENDER_TILE;
+    if (r[0] < o->region[0])
+        r[0] = o->region[0];
+    if (r[1] < o->region[1])
+        r[1] = o->region[1];
+}
+
+static void render_tile_costs(const void *cs, void **tcs, const render_ops *ops, const render_opts *o,
+                              long tx0, long ty0, long ntx, long ntiles, int nthreads,
+                              render_fb *out, double *cost)
+{
+    render_opts one = *o;
+    double sum = 0, floor_cost;
+    long k;
+    one.aa = 1;
+    one.progress = NULL;
+#pragma omp parallel for schedule(dynamic, 4) num_threads(nthreads)
+    for (k = 0; k < ntiles; k++) {
+        render_stats scratch;
+        int r[4], x0, y0, x1, y1, x, y, n = 0;
+        double t = render_thread_cpu();
+        render_tile_rect(o, tx0, ty0, ntx, k, r);
+        x0 = r[0]; y0 = r[1]; x1 = r[2]; y1 = r[3];
+        memset(&scratch, 0, sizeof scratch);
+        for (y = y0 + RENDER_TILE / 8; y < y1; y += RENDER_TILE / 4)
+            for (x = x0 + RENDER_TILE / 8; x < x1; x += RENDER_TILE / 4, n++)
+                ops->render_tile(cs, tcs[omp_get_thread_num()], &one, x, y, x + 1, y + 1, out, &scratch);
+        if (!n) {   /* a sliver of a tile at the edge */
+            ops->render_tile(cs, tcs[omp_get_thread_num()], &one, x0, y0, x0 + 1, y0 + 1, out, &scratch);
+            n = 1;
+        }
+        cost[k] = (render_thread_cpu() - t) / n * (double)((x1 - x0) * (y1 - y0));
+    }
+    for (k = 0; k < ntiles; k++)
+        sum += cost[k];
+    /* no tile is free: a floor keeps timer noise from zeroing one */
+    floor_cost = sum > 0 ? 0.02 * sum / (double)ntiles : 1;
+    for (k = 0; k < ntiles; k++)
+        cost[k] += floor_cost;
+}
+
 int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
                  render_fb *fb, render_stats *st, diag *err)
 {
@@ -89,7 +158,8 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     render_stats total;
     void *cs = NULL, **tcs = NULL;
     unsigned long ov0, hfp0[HFP_EXC_N];
-    double t0;
+    double t0, tstart = omp_get_wtime(), *cost = NULL, cost_total = 0, cost_done = 0;
+    unsigned long long rays_done = 0;
     long tx0, ty0, ntx, nty, ntiles, done = 0;
     int i, status = 0, nthreads;
 
@@ -144,6 +214,16 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     ntx = (opt.region[2] + RENDER_TILE - 1) / RENDER_TILE - tx0;
     nty = (opt.region[3] + RENDER_TILE - 1) / RENDER_TILE - ty0;
     ntiles = ntx * nty;
+    if (opt.progress) {
+        long k;
+        if (!(cost = mem_calloc((size_t)ntiles, sizeof *cost))) {
+            status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for the tile costs");
+            goto done;
+        }
+        render_tile_costs(cs, tcs, ops, &opt, tx0, ty0, ntx, ntiles, nthreads, &out, cost);
+        for (k = 0; k < ntiles; k++)
+            cost_total += cost[k];
+    }
     t0 = omp_get_wtime();
 #pragma omp parallel num_threads(nthreads)
     {
@@ -155,19 +235,23 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
         memcpy(hbefore, hfp_exc, sizeof hbefore);
 #pragma omp for schedule(dynamic, 1)
         for (k = 0; k < ntiles; k++) {
-            int x0 = (int)(tx0 + k % ntx) * RENDER_TILE, y0 = (int)(ty0 + k / ntx) * RENDER_TILE;
-            int x1 = x0 + RENDER_TILE > opt.region[2] ? opt.region[2] : x0 + RENDER_TILE;
-            int y1 = y0 + RENDER_TILE > opt.region[3] ? opt.region[3] : y0 + RENDER_TILE;
-            if (x0 < opt.region[0])
-                x0 = opt.region[0];
-            if (y0 < opt.region[1])
-                y0 = opt.region[1];
-            ops->render_tile(cs, tcs[me], &opt, x0, y0, x1, y1, &out, &mine);
+            int r[4];
+            unsigned long long before_rays = render_rays(&mine);
+            render_tile_rect(&opt, tx0, ty0, ntx, k, r);
+            ops->render_tile(cs, tcs[me], &opt, r[0], r[1], r[2], r[3], &out, &mine);
             if (opt.progress) {
 #pragma omp critical(render_progress)
                 {
+                    render_progress pr;
                     done++;
-                    opt.progress(opt.progress_ctx, done, ntiles);
+                    cost_done += cost[k];
+                    rays_done += render_rays(&mine) - before_rays;
+                    pr.tiles_done = done;
+                    pr.tiles = ntiles;
+                    pr.fraction = done == ntiles ? 1.0 : cost_done / cost_total;
+                    pr.elapsed_s = omp_get_wtime() - tstart;
+                    pr.rays = rays_done;
+                    opt.progress(opt.progress_ctx, &pr);
                 }
             }
         }
@@ -178,6 +262,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     total.time_render_s = omp_get_wtime() - t0;
 
 done:
+    mem_free(cost);
     if (tcs) {
         for (i = 0; i < nthreads; i++)
             if (tcs[i])

@@ -31,6 +31,18 @@ typedef struct render_stats {
     double time_compile_s, time_render_s;
 } render_stats;
 
+/* Where a render stands, for a progress display. */
+typedef struct render_progress {
+    long tiles_done, tiles;
+    /* The share of the work done, 0..1: finished tiles weighted by their
+     * cost, measured before the render by timing a few one-sample pixels of
+     * each tile, so that it grows linearly in time (a tile of sky costs
+     * less than one of glass). */
+    double fraction;
+    double elapsed_s;         /* since render_scene began (compile included) */
+    unsigned long long rays;  /* rays traced so far, of every kind */
+} render_progress;
+
 typedef struct render_opts {
     int width, height;        /* image size; 0 = the scene view's size */
     int threads;              /* worker threads, >= 1 */
@@ -40,8 +52,9 @@ typedef struct render_opts {
      * outside it are left 0 in the framebuffer (pid 0 too). */
     int region[4];
     int ids;                  /* also fill render_fb.ids */
-    /* Called (serialised) after each finished tile; may be NULL. */
-    void (*progress)(void *ctx, long done, long total);
+    /* Called (serialised) after each finished tile; may be NULL (and then
+     * no tile costs are measured). */
+    void (*progress)(void *ctx, const render_progress *p);
     void *progress_ctx;
 } render_opts;
 

@@ -1,16 +1,70 @@
 /* scene_lex — card images to statements (see scene_lex.h). */
 #include "scene/scene_lex.h"
+#include <stdio.h>
 #include <string.h>
 
 void scene_lex_init(scene_lex *lx, const recsrc *src)
 {
     lx->src = src;
     lx->recno = 0;
+    lx->warn = NULL;
+    lx->warn_ctx = NULL;
 }
 
 static int scene_lex_blank(char c)
 {
     return c == ' ' || c == '\t';
+}
+
+/* 1 when columns 73-80 of the card are a sequence number: all eight
+ * punched, letters and digits only (a deck tag then a number, as CMS SERIAL
+ * and scenes/cardseq.sh write it), ending in a digit. */
+static int scene_lex_seqno(const char *rec, size_t n)
+{
+    size_t i;
+    if (n < 80)
+        return 0;
+    for (i = 72; i < 80; i++) {
+        unsigned char c = (unsigned char)rec[i];
+        if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')))
+            return 0;
+    }
+    return rec[79] >= '0' && rec[79] <= '9';
+}
+
+/* Columns 73-80 are not part of the statement, so an item running from
+ * column 72 into 73 would be cut there. That is an error (at the item's
+ * column) unless 73-80 hold a sequence number, which may just follow an
+ * item that ends in column 72: then a warning. Returns 0 or DIAG_INPUT. */
+static int scene_lex_col72(scene_lex *lx, const char *rec, size_t n, diag *err)
+{
+    size_t start = 71, end = 72;
+    char item[81];
+    diag w;
+    if (n <= 72 || rec[0] == '*' || scene_lex_blank(rec[71]) || scene_lex_blank(rec[72]))
+        return 0;
+    while (start > 0 && !scene_lex_blank(rec[start - 1]))
+        start--;
+    if (scene_lex_seqno(rec, n)) {
+        if (!lx->warn)
+            return 0;
+        diag_init(&w);
+        diag_at(&w, DIAG_INPUT, lx->src->name, lx->recno, (long)start + 1,
+                "item '%.*s' ends in column 72, against the sequence number '%.8s' in "
+                "columns 73-80; if it was meant to be longer it has been cut (columns "
+                "73-80 are not read)", (int)(72 - start), rec + start, rec + 72);
+        w.status = 0;
+        lx->warn(lx->warn_ctx, &w);
+        return 0;
+    }
+    while (end < n && end < 80 && !scene_lex_blank(rec[end]))
+        end++;
+    snprintf(item, sizeof item, "%.*s", (int)(end - start), rec + start);
+    return diag_at(err, DIAG_INPUT, lx->src->name, lx->recno, (long)start + 1,
+                   "item '%s' runs past column 72 and would be cut to '%.*s' (columns "
+                   "73-80 are the sequence field, not read); end it by column 72, or end "
+                   "the card with ' -' and go on on the next card",
+                   item, (int)(72 - start), rec + start);
 }
 
 /* Appends the items of one card (already cut to its significant columns)
@@ -79,6 +133,8 @@ int scene_lex_next(scene_lex *lx, scene_lex_stmt *st, diag *err)
             return 0;
         }
         lx->recno++;
+        if (scene_lex_col72(lx, rec, len, err))
+            return -1;
         if (len > SCENE_LEX_COLUMNS)
             len = SCENE_LEX_COLUMNS;
         if (len > 0 && rec[0] == '*')

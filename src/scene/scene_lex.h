@@ -1,6 +1,7 @@
 /* scene_lex — card images to statements for the scene parser.
  * Reads records from a recsrc, keeps columns 1-72 (73-80 carry sequence
- * numbers and are ignored), drops comment cards (`*` in column 1) and blank
+ * numbers and are ignored; an item running from 72 into 73 is refused, or
+ * only warned about when 73-80 hold a sequence number), drops comment cards (`*` in column 1) and blank
  * cards, joins continued cards (a card whose last item is a lone `-`; comment
  * cards may come between, blank cards may not) and
  * splits the result into blank-separated items, each with the record and
@@ -30,13 +31,19 @@ typedef struct scene_lex_stmt {
 typedef struct scene_lex {
     const recsrc *src;
     long recno;               /* records read so far */
+    /* Called with each warning (status 0, location and text); may be NULL. */
+    void (*warn)(void *ctx, const diag *w);
+    void *warn_ctx;
 } scene_lex;
 
 void scene_lex_init(scene_lex *lx, const recsrc *src);
 
+/* warn and warn_ctx start NULL; set them after init to receive warnings. */
 /* Reads the next statement into *st. Returns 1 with a statement, 0 at the
  * end of the deck, or -1 with err filled (DIAG_INPUT for the deck's faults,
  * DIAG_IO for a read error of the recsrc). Errors: a character outside printable ASCII,
+ * an item that crosses from column 72 into 73 (a warning instead when
+ * columns 73-80 hold a sequence number, which may simply follow it),
  * a statement of more than SCENE_LEX_MAX_ITEMS items, a continuation
  * followed by a blank card or the end of the deck. */
 int scene_lex_next(scene_lex *lx, scene_lex_stmt *st, diag *err);

@@ -15,6 +15,7 @@
 #include <string.h>
 #include "scene/scene_xform.h"
 #include "util/mem.h"
+#include "util/suggest.h"
 
 /* ---- shared helpers ------------------------------------------------------ */
 
@@ -709,6 +710,21 @@ static const scene_parse_stmt *scene_parse_find(const scene_parse_stmt *const *t
     return NULL;
 }
 
+/* The keyword nearest to a mistyped one: of the open block's body if there
+ * is one, else of the statement tables; NULL if none is close. */
+static const char *scene_parse_nearest(const scene_parse_stmt *body, const char *word)
+{
+    const scene_parse_stmt *const inside[] = { body, NULL };
+    const scene_parse_stmt *const *tables = body ? inside : scene_parse_tables;
+    suggest sg;
+    size_t t, i;
+    suggest_init(&sg, word);
+    for (t = 0; tables[t]; t++)
+        for (i = 0; tables[t][i].keyword; i++)
+            suggest_try(&sg, tables[t][i].canon, 0);
+    return suggest_best(&sg);
+}
+
 /* The handler for statement kw: inside an open block only the block's body
  * statements, elsewhere the statement tables. NULL with the error recorded
  * for anything else (a keyword known in another place is named as such). */
@@ -733,8 +749,11 @@ static const scene_parse_stmt *scene_parse_lookup(scene_parser *p, const scene_l
             diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
                     "%s: allowed only inside a PDS block", e->canon);
     }
-    if (!e)
-        diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col, "unknown statement %s", kw->text);
+    if (!e) {
+        const char *near = scene_parse_nearest(b->body, kw->text);
+        diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col, "unknown statement %s%s%s%s",
+                kw->text, near ? " (did you mean " : "", near ? near : "", near ? "?)" : "");
+    }
     return NULL;
 }
 
@@ -800,6 +819,10 @@ int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, dia
     p->loader = ld;
     scene_names_init(&p->names);
     scene_lex_init(&p->lex, src);
+    if (ld) {
+        p->lex.warn = ld->warn;
+        p->lex.warn_ctx = ld->ctx;
+    }
     p->s = mem_calloc(1, sizeof *p->s);
     if (!p->s || !(p->s->source = mem_strdup(file))) {
         r = diag_at(err, DIAG_IO, file, 0, 0, "out of memory");

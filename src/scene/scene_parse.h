@@ -14,10 +14,13 @@
  * image `name` as written in the deck into *out with `channels` (1 or 3)
  * channels, or IMAGE_INDEXED for one channel of palette indices (see
  * image_read_png), or returns a diag status with err saying why; the parser
- * adds the record and column. */
+ * adds the record and column. warn(), if not NULL, receives each warning
+ * (a diag with status 0: location and text), e.g. an item that ends in
+ * column 72 against a sequence number. */
 typedef struct scene_loader {
     int (*image)(void *ctx, const char *name, int channels, image *out, diag *err);
     void *ctx;
+    void (*warn)(void *ctx, const diag *w);
 } scene_loader;
 
 /* Parses a scene deck. On success *out owns a new scene and 0 is returned;

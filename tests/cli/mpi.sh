@@ -12,6 +12,8 @@ command -v mpirun >/dev/null 2>&1 || { echo "mpi.sh: skipped: no mpirun (apt-get
 ldd "$MAPRT" 2>/dev/null | grep -q libmpi || { echo "mpi.sh: skipped: $MAPRT built without MPI (apt-get install libopenmpi-dev)"; exit 77; }
 # Open MPI refuses root unless told; leak checkers do not know its caches.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=detect_leaks=0
+# The pictures carry their date in their provenance: one date for all.
+export SOURCE_DATE_EPOCH=536457600
 mpi() { mpirun --oversubscribe -n 3 "$@"; }
 deck=scenes/fig1.scene
 for m in q16 f64; do

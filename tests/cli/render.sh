@@ -45,10 +45,10 @@ $MAPRT render scenes/fig1.scene --dl "$tmp/x.dl5080" --dac 6 2> "$tmp/err"; [ $?
 $MAPRT render scenes/fig1.scene --dl "$tmp/x.dl5080" --size 5000x10 2> "$tmp/err"; [ $? -eq 2 ] || fail "oversize --dl should exit 2"
 grep -q "at most 4096x4096" "$tmp/err" || fail "oversize message"
 # An output name that is a FIFO or a directory is refused, not replaced.
-mkfifo "$tmp/fifo" && mkdir "$tmp/dir"
-$MAPRT render scenes/csg.scene -o "$tmp/fifo" --size 8x8 2> "$tmp/err"; [ $? -eq 3 ] || fail "FIFO output should exit 3"
-grep -q "not a regular file" "$tmp/err" && [ -p "$tmp/fifo" ] || fail "FIFO replaced: $(cat "$tmp/err")"
-$MAPRT render scenes/csg.scene -o "$tmp/dir" --size 8x8 2> /dev/null; [ $? -eq 3 ] && [ -d "$tmp/dir" ] || fail "directory output should exit 3"
+mkfifo "$tmp/fifo.png" && mkdir "$tmp/dir.png"
+$MAPRT render scenes/csg.scene -o "$tmp/fifo.png" --size 8x8 2> "$tmp/err"; [ $? -eq 3 ] || fail "FIFO output should exit 3"
+grep -q "not a regular file" "$tmp/err" && [ -p "$tmp/fifo.png" ] || fail "FIFO replaced: $(cat "$tmp/err")"
+$MAPRT render scenes/csg.scene -o "$tmp/dir.png" --size 8x8 2> /dev/null; [ $? -eq 3 ] && [ -d "$tmp/dir.png" ] || fail "directory output should exit 3"
 # --ids: the identity map, 16 + 24 bytes a pixel (docs/idmap.md), alone or
 # with a PNG; a precision event is reported on stderr without --stats; a
 # primitive beyond the mode's limits is refused before rendering.

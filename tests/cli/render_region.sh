@@ -6,6 +6,8 @@ set -u
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "render_region.sh: $*" >&2; exit 1; }
+# The pictures carry their date in their provenance: one date for all.
+export SOURCE_DATE_EPOCH=536457600
 deck=scenes/fig1.scene
 $MAPRT render $deck -o "$tmp/one.png" --dl "$tmp/one.dl" --size 90x70 --aa 2 --numeric f64 \
   --stats > "$tmp/one.st" || fail "whole render failed"
@@ -13,7 +15,7 @@ for r in 0,0,90,33 0,33,41,70 41,33,90,70; do
   $MAPRT render $deck --size 90x70 --aa 2 --numeric f64 --region $r --part "$tmp/p-$r" \
     || fail "region $r failed"
 done
-$MAPRT merge "$tmp"/p-* -o "$tmp/m.png" --dl "$tmp/m.dl" --stats > "$tmp/m.st" || fail "merge failed"
+$MAPRT merge "$tmp"/p-* --deck $deck -o "$tmp/m.png" --dl "$tmp/m.dl" --stats > "$tmp/m.st" || fail "merge failed"
 cmp -s "$tmp/one.png" "$tmp/m.png" || fail "merged PNG differs from the whole render"
 cmp -s "$tmp/one.dl" "$tmp/m.dl" || fail "merged DL5080 differs from the whole render"
 for k in rays.primary rays.shadow rays.reflected pds.lookups tests.prim fx.overflows; do
@@ -22,7 +24,7 @@ for k in rays.primary rays.shadow rays.reflected pds.lookups tests.prim fx.overf
 done
 # A whole-image part merges to the same bytes too.
 $MAPRT render $deck --size 90x70 --aa 2 --numeric f64 --part "$tmp/all" || fail "--part alone"
-$MAPRT merge "$tmp/all" -o "$tmp/m2.png" && cmp -s "$tmp/one.png" "$tmp/m2.png" || fail "whole part"
+$MAPRT merge "$tmp/all" --deck $deck -o "$tmp/m2.png" && cmp -s "$tmp/one.png" "$tmp/m2.png" || fail "whole part"
 
 # Refusals, each with its reason.
 $MAPRT merge "$tmp/p-0,0,90,33" -o "$tmp/x.png" 2> "$tmp/e"; [ $? -eq 1 ] || fail "gap: exit"

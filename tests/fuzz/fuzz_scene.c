@@ -35,7 +35,7 @@ static int fuzz_image(void *ctx, const char *name, int channels, image *out, dia
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static const scene_loader ld = { fuzz_image, NULL };
+    static const scene_loader ld = { fuzz_image, NULL, NULL };
     recsrc src;
     recsrc_mem m;
     scene *s = NULL;

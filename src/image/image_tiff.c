@@ -1,0 +1,145 @@
+/* image_tiff — TIFF input through libtiff (see image_tiff.h). */
+#include "image/image_tiff.h"
+
+#ifdef IMAGE_HAVE_TIFF
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include <tiffio.h>
+#include "util/mem.h"
+
+int image_tiff_available(void) { return 1; }
+
+/* A read-only TIFF stream over memory, and the first error libtiff reports. */
+typedef struct image_tiff_mem {
+    const unsigned char *p;
+    toff_t len, pos;
+    char msg[256];
+} image_tiff_mem;
+
+static tmsize_t image_tiff_read(thandle_t h, void *buf, tmsize_t n)
+{
+    image_tiff_mem *m = (image_tiff_mem *)h;
+    toff_t left = m->pos < m->len ? m->len - m->pos : 0;
+    if (n < 0)
+        return 0;
+    if ((toff_t)n > left)
+        n = (tmsize_t)left;
+    memcpy(buf, m->p + m->pos, (size_t)n);
+    m->pos += (toff_t)n;
+    return n;
+}
+
+static tmsize_t image_tiff_write(thandle_t h, void *buf, tmsize_t n) { (void)h; (void)buf; (void)n; return 0; }
+
+static toff_t image_tiff_seek(thandle_t h, toff_t off, int whence)
+{
+    image_tiff_mem *m = (image_tiff_mem *)h;
+    toff_t base = whence == SEEK_CUR ? m->pos : whence == SEEK_END ? m->len : 0;
+    m->pos = base + off;
+    return m->pos;
+}
+
+static int image_tiff_close(thandle_t h) { (void)h; return 0; }
+static toff_t image_tiff_size(thandle_t h) { return ((image_tiff_mem *)h)->len; }
+
+static int image_tiff_map(thandle_t h, void **base, toff_t *size)
+{
+    image_tiff_mem *m = (image_tiff_mem *)h;
+    *base = (void *)m->p;
+    *size = m->len;
+    return 1;
+}
+
+static void image_tiff_unmap(thandle_t h, void *base, toff_t size) { (void)h; (void)base; (void)size; }
+
+static int image_tiff_on_error(TIFF *tif, void *user, const char *module, const char *fmt, va_list ap)
+{
+    image_tiff_mem *m = user;
+    (void)tif;
+    (void)module;
+    if (!m->msg[0])
+        vsnprintf(m->msg, sizeof m->msg, fmt, ap);
+    return 1;
+}
+
+static int image_tiff_on_warning(TIFF *tif, void *user, const char *module, const char *fmt, va_list ap)
+{
+    (void)tif; (void)user; (void)module; (void)fmt; (void)ap;
+    return 1;
+}
+
+int image_read_tiff_memory(const char *name, const void *data, size_t len, int channels,
+                           size_t max_pixels, image *out, diag *err)
+{
+    image_tiff_mem m;
+    TIFFOpenOptions *opts;
+    TIFF *tif;
+    uint32_t w = 0, h = 0, *rgba;
+    image img;
+    size_t i, n;
+    int st;
+    memset(&m, 0, sizeof m);
+    m.p = data;
+    m.len = (toff_t)len;
+    if (!(opts = TIFFOpenOptionsAlloc()))
+        return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
+    TIFFOpenOptionsSetErrorHandlerExtR(opts, image_tiff_on_error, &m);
+    TIFFOpenOptionsSetWarningHandlerExtR(opts, image_tiff_on_warning, &m);
+    tif = TIFFClientOpenExt(name, "rm", (thandle_t)&m, image_tiff_read, image_tiff_write, image_tiff_seek,
+                            image_tiff_close, image_tiff_size, image_tiff_map, image_tiff_unmap, opts);
+    TIFFOpenOptionsFree(opts);
+    if (!tif)
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "TIFF: %s", m.msg[0] ? m.msg : "cannot be read");
+    TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w);
+    TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
+    if (w < 1 || h < 1 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE || (size_t)w * h > max_pixels) {
+        TIFFClose(tif);
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "%ux%u pixels is %s; scale it down", (unsigned)w,
+                       (unsigned)h, w && h ? "over what this command reads" : "no picture");
+    }
+    n = (size_t)w * h;
+    if (!(rgba = mem_alloc(n * sizeof *rgba))) {
+        TIFFClose(tif);
+        return diag_at(err, DIAG_IO, name, 0, 0, "out of memory for %ux%u pixels", (unsigned)w, (unsigned)h);
+    }
+    if (!TIFFReadRGBAImageOriented(tif, w, h, rgba, ORIENTATION_TOPLEFT, 0)) {
+        st = diag_at(err, DIAG_INPUT, name, 0, 0, "TIFF: %s", m.msg[0] ? m.msg : "cannot decode the picture");
+        mem_free(rgba);
+        TIFFClose(tif);
+        return st;
+    }
+    TIFFClose(tif);
+    if ((st = image_alloc(&img, (int)w, (int)h, channels, name, err)) != 0) {
+        mem_free(rgba);
+        return st;
+    }
+    for (i = 0; i < n; i++) {
+        /* libtiff's RGBA is premultiplied: over black it is the colour as is */
+        unsigned r = TIFFGetR(rgba[i]), g = TIFFGetG(rgba[i]), b = TIFFGetB(rgba[i]);
+        if (channels == 1) {
+            img.px[i] = (uint8_t)((299 * r + 587 * g + 114 * b + 500) / 1000);
+        } else {
+            img.px[3 * i] = (uint8_t)r;
+            img.px[3 * i + 1] = (uint8_t)g;
+            img.px[3 * i + 2] = (uint8_t)b;
+        }
+    }
+    mem_free(rgba);
+    *out = img;
+    return 0;
+}
+
+#else
+
+int image_tiff_available(void) { return 0; }
+
+int image_read_tiff_memory(const char *name, const void *data, size_t len, int channels,
+                           size_t max_pixels, image *out, diag *err)
+{
+    (void)data; (void)len; (void)channels; (void)max_pixels; (void)out;
+    return diag_at(err, DIAG_INPUT, name, 0, 0,
+                   "a TIFF image, and this maprt was built without TIFF support "
+                   "(apt-get install -y libtiff-dev, then rebuild)");
+}
+#endif
