@@ -48,7 +48,7 @@ int cms_attr_write(const char *path, const cms_attr *a, diag *err)
 }
 
 /* One "key value" line (s, len bytes, no line end) into *a. */
-static int attr_line(cms_attr *a, const char *s, size_t len, const char *name, long line,
+static int cms_attr_line(cms_attr *a, const char *s, size_t len, const char *name, long line,
                      diag *err)
 {
     char key[16], val[32];
@@ -121,7 +121,7 @@ int cms_attr_parse(const char *data, size_t len, const char *name, cms_attr *a, 
             continue;
         }
         if (n)
-            rc = attr_line(&r, s, n, name, line, err);
+            rc = cms_attr_line(&r, s, n, name, line, err);
     }
     if (!rc && line == 0)
         rc = diag_at(err, DIAG_INPUT, name, 0, 0, "empty attribute file");

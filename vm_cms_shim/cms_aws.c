@@ -46,7 +46,7 @@ void cms_aws_free(cms_aws *a)
 }
 
 /* Inflates a HET record (method 1 zlib, 2 bzip2) into a->out. */
-static int aws_inflate(cms_aws *a, unsigned method, size_t have, long long start,
+static int cms_aws_inflate(cms_aws *a, unsigned method, size_t have, long long start,
                        const unsigned char **rec, size_t *len, diag *err)
 {
     if (!a->out && !(a->out = mem_alloc((size_t)CMS_AWS_MAX_RECORD)))
@@ -185,7 +185,7 @@ int cms_aws_next(cms_aws *a, const unsigned char **rec, size_t *len, long long *
             *offset = start;
             if (method) {
                 a->compressed = 1;
-                return aws_inflate(a, method, have, start, rec, len, err) ? -1 : CMS_AWS_RECORD;
+                return cms_aws_inflate(a, method, have, start, rec, len, err) ? -1 : CMS_AWS_RECORD;
             }
             *rec = a->rec;
             *len = have;
@@ -213,7 +213,7 @@ void cms_aws_writer_free(cms_aws_writer *w)
     w->tmpcap = 0;
 }
 
-static void aws_header(cms_aws_writer *w, size_t cur, unsigned f1)
+static void cms_aws_header(cms_aws_writer *w, size_t cur, unsigned f1)
 {
     unsigned char h[AWS_HDR];
     h[0] = (unsigned char)(cur & 0xFF);
@@ -228,7 +228,7 @@ static void aws_header(cms_aws_writer *w, size_t cur, unsigned f1)
 
 /* Compresses rec into w->tmp; 1 when the result is smaller (then *out and *olen
  * are the compressed bytes), 0 to keep the record raw, -1 on failure. */
-static int aws_deflate(cms_aws_writer *w, const unsigned char *rec, size_t len,
+static int cms_aws_deflate(cms_aws_writer *w, const unsigned char *rec, size_t len,
                        const unsigned char **out, size_t *olen)
 {
     size_t need = len + len / 100 + 600;   /* bzip2's documented worst case, zlib's is less */
@@ -265,7 +265,7 @@ int cms_aws_put(cms_aws_writer *w, const void *rec, size_t len, diag *err)
     if (w->comp != CMS_AWS_PLAIN) {
         const unsigned char *c;
         size_t clen;
-        int k = aws_deflate(w, p, len, &c, &clen);
+        int k = cms_aws_deflate(w, p, len, &c, &clen);
         if (k < 0)
             return diag_at(err, DIAG_IO, "", 0, 0, "%s compression failed",
                            w->comp == CMS_AWS_ZLIB ? "zlib" : "bzip2");
@@ -279,7 +279,7 @@ int cms_aws_put(cms_aws_writer *w, const void *rec, size_t len, diag *err)
         size_t n = len < w->chunk ? len : w->chunk;
         if (n == len)
             flags |= AWS_EOR;
-        aws_header(w, n, flags);
+        cms_aws_header(w, n, flags);
         w->sink(w->ctx, p, n);
         p += n;
         len -= n;
@@ -290,6 +290,6 @@ int cms_aws_put(cms_aws_writer *w, const void *rec, size_t len, diag *err)
 
 void cms_aws_put_mark(cms_aws_writer *w)
 {
-    aws_header(w, 0, AWS_MARK);
+    cms_aws_header(w, 0, AWS_MARK);
     w->prev = 0;
 }

@@ -8,7 +8,7 @@ static cms_cp cp_1047 = {CMS_CP_1047, {0}, {0}};
 static int cp_ready037, cp_ready1047;
 
 /* Fills cp's tables by converting each byte with iconv. */
-static int cp_build(cms_cp *cp, const char *name, diag *err)
+static int cms_cp_build(cms_cp *cp, const char *name, diag *err)
 {
     unsigned char seen[256];
     iconv_t h = iconv_open("ISO-8859-1", name);
@@ -37,14 +37,14 @@ static int cp_build(cms_cp *cp, const char *name, diag *err)
 int cms_cp_get(cms_cp_id id, const cms_cp **cp, diag *err)
 {
     if (id == CMS_CP_037) {
-        if (!cp_ready037 && cp_build(&cp_037, "IBM037", err))
+        if (!cp_ready037 && cms_cp_build(&cp_037, "IBM037", err))
             return DIAG_IO;
         cp_ready037 = 1;
         *cp = &cp_037;
         return 0;
     }
     if (id == CMS_CP_1047) {
-        if (!cp_ready1047 && cp_build(&cp_1047, "IBM1047", err))
+        if (!cp_ready1047 && cms_cp_build(&cp_1047, "IBM1047", err))
             return DIAG_IO;
         cp_ready1047 = 1;
         *cp = &cp_1047;

@@ -7,7 +7,7 @@ struct cms_deck {
     cms_file_info info;
 };
 
-static int deck_next(void *ctx, const char **rec, size_t *len, diag *err)
+static int cms_deck_next(void *ctx, const char **rec, size_t *len, diag *err)
 {
     cms_deck *dk = ctx;
     (void)err;   /* records are decoded at open; reading cannot fail */
@@ -26,7 +26,7 @@ int cms_deck_open(cms_deck **deck, recsrc *src, const cms_disks *d, const char *
         return rc;
     }
     cms_file_state(dk->file, &dk->info);
-    src->next = deck_next;
+    src->next = cms_deck_next;
     src->ctx = dk;
     src->name = dk->info.label;
     *deck = dk;

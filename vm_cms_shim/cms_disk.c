@@ -23,7 +23,7 @@ void cms_disks_free(cms_disks *d)
     memset(d, 0, sizeof *d);
 }
 
-static int disk_put(cms_disks *d, int i, const char *dir, diag *err)
+static int cms_disk_put(cms_disks *d, int i, const char *dir, diag *err)
 {
     char *copy = mem_strdup(dir);
     if (!copy)
@@ -41,7 +41,7 @@ int cms_disks_from_env(cms_disks *d, diag *err)
         const char *v;
         name[11] = (char)('A' + i);
         v = getenv(name);
-        if (v && *v && disk_put(d, i, v, err))
+        if (v && *v && cms_disk_put(d, i, v, err))
             return DIAG_IO;
     }
     return 0;
@@ -55,7 +55,7 @@ int cms_disks_set(cms_disks *d, const char *spec, diag *err)
     if (!(l >= 'A' && l <= 'Z') || spec[1] != '=' || !spec[2])
         return diag_at(err, DIAG_USAGE, "", 0, 0,
                        "--disk '%s': expected LETTER=DIRECTORY, e.g. A=scenes", spec);
-    return disk_put(d, l - 'A', spec + 2, err);
+    return cms_disk_put(d, l - 'A', spec + 2, err);
 }
 
 char *cms_disks_join(const char *dir, const char *name)
@@ -70,7 +70,7 @@ char *cms_disks_join(const char *dir, const char *name)
     return p;
 }
 
-static int disk_not_accessed(const cms_fileid *id, char letter, const char *dir, diag *err)
+static int cms_disk_not_accessed(const cms_fileid *id, char letter, const char *dir, diag *err)
 {
     char t[CMS_FILEID_TEXT_MAX];
     cms_fileid_format(id, t, sizeof t);
@@ -89,7 +89,7 @@ static int disk_not_accessed(const cms_fileid *id, char letter, const char *dir,
  * if found, 0 if not, -1 if the directory cannot be read, -2 out of memory.
  * Among several case variants the byte-wise smallest name wins, so the choice
  * does not depend on directory order. */
-static int disk_lookup(const char *dir, const cms_fileid *id, char **name)
+static int cms_disk_lookup(const char *dir, const cms_fileid *id, char **name)
 {
     char want[2 * CMS_NAME_MAX + 2];
     char *best = NULL;
@@ -123,17 +123,17 @@ static int disk_lookup(const char *dir, const cms_fileid *id, char **name)
 /* Resolves id on one disk: 0 with *found 1 (and *path set) or 0 (not
  * there), else DIAG_INPUT (disk not accessed) or DIAG_IO. A disk that is not
  * accessed counts as "not there" when quiet_missing_dir (a '*' search). */
-static int disk_find_on(const cms_disks *d, int i, const cms_fileid *id, char **path,
+static int cms_disk_find_on(const cms_disks *d, int i, const cms_fileid *id, char **path,
                         int quiet_missing_dir, int *found, diag *err)
 {
     char *name = NULL, *p;
     int r;
     *found = 0;
     if (!d->dir[i])
-        return quiet_missing_dir ? 0 : disk_not_accessed(id, (char)('A' + i), NULL, err);
-    r = disk_lookup(d->dir[i], id, &name);
+        return quiet_missing_dir ? 0 : cms_disk_not_accessed(id, (char)('A' + i), NULL, err);
+    r = cms_disk_lookup(d->dir[i], id, &name);
     if (r == -1)
-        return quiet_missing_dir ? 0 : disk_not_accessed(id, (char)('A' + i), d->dir[i], err);
+        return quiet_missing_dir ? 0 : cms_disk_not_accessed(id, (char)('A' + i), d->dir[i], err);
     if (r == -2)
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
     if (r == 0)
@@ -160,7 +160,7 @@ int cms_disks_find(const cms_disks *d, const cms_fileid *id, char **path,
         lo = hi = id->mode - 'A';
     }
     for (i = lo; i <= hi; i++) {
-        int hit, rc = disk_find_on(d, i, id, path, id->mode == '*', &hit, err);
+        int hit, rc = cms_disk_find_on(d, i, id, path, id->mode == '*', &hit, err);
         if (rc)
             return rc;
         if (d->dir[i])
@@ -173,7 +173,7 @@ int cms_disks_find(const cms_disks *d, const cms_fileid *id, char **path,
         }
     }
     if (!any)
-        return disk_not_accessed(id, '*', NULL, err);
+        return cms_disk_not_accessed(id, '*', NULL, err);
     diag_at(err, DIAG_INPUT, cms_fileid_format(id, t, sizeof t), 0, 0,
             "file not found (RC 28)");
     err->rc = CMS_RC_NOTFOUND;
@@ -192,7 +192,7 @@ int cms_disks_output_path(const cms_disks *d, const cms_fileid *id, char **path,
         return DIAG_INPUT;
     }
     i = id->mode - 'A';
-    if ((r = disk_find_on(d, i, id, path, 0, &found, err)) != 0)
+    if ((r = cms_disk_find_on(d, i, id, path, 0, &found, err)) != 0)
         return r;
     if (found)
         return 0;
@@ -205,13 +205,13 @@ int cms_disks_output_path(const cms_disks *d, const cms_fileid *id, char **path,
     return 0;
 }
 
-static int disk_name_cmp(const void *a, const void *b)
+static int cms_disk_name_cmp(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
 /* Reads "fn.ft" host names into a fileid on disk letter; 0 if not one. */
-static int disk_host_fileid(const char *name, char letter, cms_fileid *id)
+static int cms_disk_host_fileid(const char *name, char letter, cms_fileid *id)
 {
     const char *dot = strchr(name, '.');
     char fn[CMS_NAME_MAX + 1], ft[CMS_NAME_MAX + 1], fm[3];
@@ -250,13 +250,13 @@ int cms_disks_list(const cms_disks *d, char letter,
     strcpy(id.fn, "*");
     strcpy(id.ft, "*");
     if (letter < 'A' || letter > 'Z' || !d->dir[letter - 'A'])
-        return disk_not_accessed(&id, letter, NULL, err);
+        return cms_disk_not_accessed(&id, letter, NULL, err);
     if (!(dh = opendir(d->dir[letter - 'A'])))
-        return disk_not_accessed(&id, letter, d->dir[letter - 'A'], err);
+        return cms_disk_not_accessed(&id, letter, d->dir[letter - 'A'], err);
     while ((e = readdir(dh)) != NULL && n < CMS_DISK_MAX_ENTRIES) {
         cms_fileid fid;
         char *c;
-        if (!disk_host_fileid(e->d_name, letter, &fid))
+        if (!cms_disk_host_fileid(e->d_name, letter, &fid))
             continue;
         if (mem_grow((void **)&names, &cap, n + 1, sizeof *names) || !(c = mem_strdup(e->d_name))) {
             rc = diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
@@ -266,14 +266,14 @@ int cms_disks_list(const cms_disks *d, char letter,
     }
     closedir(dh);
     if (!rc && n)
-        qsort(names, n, sizeof *names, disk_name_cmp);
+        qsort(names, n, sizeof *names, cms_disk_name_cmp);
     for (i = 0; i < n && !rc; i++) {
         char *p = cms_disks_join(d->dir[letter - 'A'], names[i]);
         if (!p) {
             rc = diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
             break;
         }
-        disk_host_fileid(names[i], letter, &id);
+        cms_disk_host_fileid(names[i], letter, &id);
         rc = fn(ctx, p, &id);
         mem_free(p);
     }

@@ -21,7 +21,7 @@ struct cms_file {
 
 /* A text file's records fit a sidecar's RECFM/LRECL (F: every record exactly
  * LRECL columns; V: none longer). */
-static int file_attr_fits(const cms_recs *r, char recfm, long lrecl)
+static int cms_file_attr_fits(const cms_recs *r, char recfm, long lrecl)
 {
     size_t i;
     for (i = 0; i < r->count; i++) {
@@ -35,7 +35,7 @@ static int file_attr_fits(const cms_recs *r, char recfm, long lrecl)
     return 1;
 }
 
-static void file_info_from_name(cms_file_info *info, const cms_name *n)
+static void cms_file_info_from_name(cms_file_info *info, const cms_name *n)
 {
     memset(info, 0, sizeof *info);
     snprintf(info->label, sizeof info->label, "%s", n->label);
@@ -58,7 +58,7 @@ int cms_file_open_read(cms_file **f, const cms_disks *d, const char *arg,
         cms_name_free(&n);
         return diag_at(err, DIAG_IO, arg, 0, 0, "out of memory");
     }
-    file_info_from_name(&r->info, &n);
+    cms_file_info_from_name(&r->info, &n);
     if ((rc = infile_read_all(n.path, (size_t)CMS_FILE_MAX_BYTES, &data, &len, err)) != 0) {
         if (n.is_fileid)   /* name the fileid, not the host path */
             snprintf(err->file, sizeof err->file, "%s", n.label);
@@ -78,7 +78,7 @@ int cms_file_open_read(cms_file **f, const cms_disks *d, const char *arg,
     } else if (!rc) {
         rc = cms_recs_decode((const unsigned char *)data, len, o, r->info.label, &r->recs, err);
         if (!rc && attr.present && attr.recfm && attr.lrecl &&
-            file_attr_fits(&r->recs, attr.recfm, attr.lrecl)) {
+            cms_file_attr_fits(&r->recs, attr.recfm, attr.lrecl)) {
             r->recs.recfm = attr.recfm;
             r->recs.lrecl = attr.lrecl;
         }
@@ -142,7 +142,7 @@ int cms_file_open_write(cms_file **f, const cms_disks *d, const char *arg, char 
         cms_name_free(&n);
         return diag_at(err, DIAG_IO, arg, 0, 0, "out of memory");
     }
-    file_info_from_name(&w->info, &n);
+    cms_file_info_from_name(&w->info, &n);
     w->writing = 1;
     w->info.recfm = recfm;
     w->info.lrecl = lrecl;
@@ -264,7 +264,7 @@ typedef struct file_mem {
     int failed;
 } file_mem;
 
-static void file_mem_sink(void *ctx, const void *data, size_t len)
+static void cms_file_mem_sink(void *ctx, const void *data, size_t len)
 {
     file_mem *m = ctx;
     if (m->failed || !len)
@@ -295,9 +295,9 @@ int cms_file_stream(const cms_file *f, cms_cp_id cp_id, unsigned char **data, si
         size_t n;
         const char *rec = cms_recs_at(&f->recs, i, &n);
         rc = f->recs.binary
-             ? cms_recs_encode_binary(form, f->info.recfm, f->info.lrecl, rec, n, file_mem_sink, &m,
+             ? cms_recs_encode_binary(form, f->info.recfm, f->info.lrecl, rec, n, cms_file_mem_sink, &m,
                                       f->info.label, (long)i + 1, err)
-             : cms_recs_encode_record(form, f->info.recfm, f->info.lrecl, cp, rec, n, file_mem_sink,
+             : cms_recs_encode_record(form, f->info.recfm, f->info.lrecl, cp, rec, n, cms_file_mem_sink,
                                       &m, f->info.label, (long)i + 1, err);
         if (rc) {
             mem_free(m.p);

@@ -9,11 +9,11 @@ int cms_fileid_char_ok(int c)
            (c != 0 && strchr("$#@+-:_", c) != NULL);
 }
 
-static char fileid_upper(char c) { return (c >= 'a' && c <= 'z') ? (char)(c - 'a' + 'A') : c; }
+static char cms_fileid_upper(char c) { return (c >= 'a' && c <= 'z') ? (char)(c - 'a' + 'A') : c; }
 
 /* Copies one name token (n bytes at s) into out, fileid_upper-cased, after checking
  * length and characters. what is "filename" or "filetype" for messages. */
-static int fileid_name(const char *s, size_t n, char *out, const char *what,
+static int cms_fileid_name(const char *s, size_t n, char *out, const char *what,
                        const char *text, diag *err)
 {
     size_t i;
@@ -37,16 +37,16 @@ static int fileid_name(const char *s, size_t n, char *out, const char *what,
             err->rc = CMS_RC_BADCHAR;
             return CMS_RC_BADCHAR;
         }
-        out[i] = fileid_upper(s[i]);
+        out[i] = cms_fileid_upper(s[i]);
     }
     out[n] = '\0';
     return 0;
 }
 
 /* Parses a filemode token: "*", a letter, or a letter and a digit 0-6. */
-static int fileid_mode(const char *s, size_t n, cms_fileid *id, const char *text, diag *err)
+static int cms_fileid_mode(const char *s, size_t n, cms_fileid *id, const char *text, diag *err)
 {
-    char l = n ? fileid_upper(s[0]) : 0;
+    char l = n ? cms_fileid_upper(s[0]) : 0;
     if (n == 1 && s[0] == '*') {
         id->mode = '*';
         id->num = '1';
@@ -92,11 +92,11 @@ int cms_fileid_parse(const char *text, cms_fileid *id, diag *err)
         err->rc = CMS_RC_BADCHAR;
         return CMS_RC_BADCHAR;
     }
-    if ((rc = fileid_name(tok[0], len[0], r.fn, "filename", text, err)) ||
-        (rc = fileid_name(tok[1], len[1], r.ft, "filetype", text, err)))
+    if ((rc = cms_fileid_name(tok[0], len[0], r.fn, "filename", text, err)) ||
+        (rc = cms_fileid_name(tok[1], len[1], r.ft, "filetype", text, err)))
         return rc;
     if (ntok == 3) {
-        if ((rc = fileid_mode(tok[2], len[2], &r, text, err)))
+        if ((rc = cms_fileid_mode(tok[2], len[2], &r, text, err)))
             return rc;
     } else {
         r.mode = 'A';
@@ -107,7 +107,7 @@ int cms_fileid_parse(const char *text, cms_fileid *id, diag *err)
 }
 
 /* Length of a blank-padded field of at most max bytes. */
-static size_t fileid_field_len(const char *s, size_t max)
+static size_t cms_fileid_field_len(const char *s, size_t max)
 {
     size_t n = 0;
     while (n < max && s[n] && s[n] != ' ')
@@ -121,16 +121,16 @@ int cms_fileid_from_fields(const char *fn8, const char *ft8, const char *fm2,
     char text[40];
     cms_fileid r;
     int rc;
-    size_t nfn = fileid_field_len(fn8, 8), nft = fileid_field_len(ft8, 8), nfm = fileid_field_len(fm2, 2);
+    size_t nfn = cms_fileid_field_len(fn8, 8), nft = cms_fileid_field_len(ft8, 8), nfm = cms_fileid_field_len(fm2, 2);
     memset(&r, 0, sizeof r);
     snprintf(text, sizeof text, "%.8s %.8s %.2s", fn8, ft8, fm2);
-    if ((rc = fileid_name(fn8, nfn, r.fn, "filename", text, err)) ||
-        (rc = fileid_name(ft8, nft, r.ft, "filetype", text, err)))
+    if ((rc = cms_fileid_name(fn8, nfn, r.fn, "filename", text, err)) ||
+        (rc = cms_fileid_name(ft8, nft, r.ft, "filetype", text, err)))
         return rc;
     if (nfm == 0) {
         r.mode = 'A';
         r.num = '1';
-    } else if ((rc = fileid_mode(fm2, nfm, &r, text, err)) != 0) {
+    } else if ((rc = cms_fileid_mode(fm2, nfm, &r, text, err)) != 0) {
         return rc;
     } else if (r.mode == '*') {
         diag_at(err, DIAG_INPUT, text, 0, 0, "invalid filemode (RC 24): '*' in a stored fileid");

@@ -26,7 +26,7 @@ typedef struct import_map {
     size_t cap, n;        /* cap: a power of two, at least 2n */
 } import_map;
 
-static size_t import_hash(const char *s)
+static size_t cms_import_hash(const char *s)
 {
     size_t h = 2166136261u;
     while (*s)
@@ -34,7 +34,7 @@ static size_t import_hash(const char *s)
     return h;
 }
 
-static void import_map_free(import_map *m)
+static void cms_import_map_free(import_map *m)
 {
     mem_free(m->key);
     mem_free(m->val);
@@ -42,9 +42,9 @@ static void import_map_free(import_map *m)
 }
 
 /* Slot of key: its index when present (*found = 1), else the empty slot. */
-static size_t import_map_slot(const import_map *m, const char *key, int *found)
+static size_t cms_import_map_slot(const import_map *m, const char *key, int *found)
 {
-    size_t i = import_hash(key) & (m->cap - 1);
+    size_t i = cms_import_hash(key) & (m->cap - 1);
     while (m->key[i][0]) {
         if (!strcmp(m->key[i], key)) {
             *found = 1;
@@ -56,38 +56,38 @@ static size_t import_map_slot(const import_map *m, const char *key, int *found)
     return i;
 }
 
-static int import_map_grow(import_map *m)
+static int cms_import_map_grow(import_map *m)
 {
     import_map g;
     size_t i;
     memset(&g, 0, sizeof g);
     g.cap = m->cap ? 2 * m->cap : 64;
     if (!(g.key = mem_calloc(g.cap, sizeof *g.key)) || !(g.val = mem_calloc(g.cap, sizeof *g.val))) {
-        import_map_free(&g);
+        cms_import_map_free(&g);
         return -1;
     }
     for (i = 0; i < m->cap; i++)
         if (m->key[i][0]) {
             int f;
-            size_t s = import_map_slot(&g, m->key[i], &f);
+            size_t s = cms_import_map_slot(&g, m->key[i], &f);
             memcpy(g.key[s], m->key[i], IMPORT_NAME_MAX);
             g.val[s] = m->val[i];
         }
     g.n = m->n;
-    import_map_free(m);
+    cms_import_map_free(m);
     *m = g;
     return 0;
 }
 
 /* Looks key up; returns its value, or -1 after inserting it with val (-2
  * when out of memory). */
-static long import_map_put(import_map *m, const char *key, long val)
+static long cms_import_map_put(import_map *m, const char *key, long val)
 {
     int found;
     size_t s;
-    if ((m->n + 1) * 2 > m->cap && import_map_grow(m))
+    if ((m->n + 1) * 2 > m->cap && cms_import_map_grow(m))
         return -2;
-    s = import_map_slot(m, key, &found);
+    s = cms_import_map_slot(m, key, &found);
     if (found)
         return m->val[s];
     snprintf(m->key[s], IMPORT_NAME_MAX, "%s", key);
@@ -96,13 +96,13 @@ static long import_map_put(import_map *m, const char *key, long val)
     return -1;
 }
 
-static long import_map_get(const import_map *m, const char *key)
+static long cms_import_map_get(const import_map *m, const char *key)
 {
     int found;
     size_t s;
     if (!m->cap)
         return -1;
-    s = import_map_slot(m, key, &found);
+    s = cms_import_map_slot(m, key, &found);
     return found ? m->val[s] : -1;
 }
 
@@ -126,7 +126,7 @@ typedef struct import_ctx {
     int punch;
 } import_ctx;
 
-static void import_where(const import_ctx *c, long long w, char *buf, size_t size)
+static void cms_import_where(const import_ctx *c, long long w, char *buf, size_t size)
 {
     if (c->punch)
         snprintf(buf, size, "%s:%lld", c->path, w);
@@ -136,19 +136,19 @@ static void import_where(const import_ctx *c, long long w, char *buf, size_t siz
 
 /* Registers id for this import; a second file of the same name is an error
  * that names both places. */
-static int import_claim(import_ctx *c, const cms_fileid *id, long long where, import_file **out,
+static int cms_import_claim(import_ctx *c, const cms_fileid *id, long long where, import_file **out,
                         diag *err)
 {
     char key[IMPORT_NAME_MAX], a[300], b[300];
     import_file *f;
     long prev;
     snprintf(key, sizeof key, "%s.%s", id->fn, id->ft);
-    prev = import_map_put(&c->names, key, (long)c->nfiles);
+    prev = cms_import_map_put(&c->names, key, (long)c->nfiles);
     if (prev == -2)
         return diag_at(err, DIAG_IO, c->path, 0, 0, "out of memory");
     if (prev >= 0) {
-        import_where(c, c->files[prev].where, a, sizeof a);
-        import_where(c, where, b, sizeof b);
+        cms_import_where(c, c->files[prev].where, a, sizeof a);
+        cms_import_where(c, where, b, sizeof b);
         return diag_at(err, DIAG_INPUT, c->path, 0, 0,
                        "%s %s occurs twice in one import: at %s and at %s (CMS holds one file "
                        "of a name per disk; rename one on CMS)", id->fn, id->ft, a, b);
@@ -178,7 +178,7 @@ typedef struct import_out {
     int failed;
 } import_out;
 
-static void import_out_sink(void *ctx, const void *data, size_t len)
+static void cms_import_out_sink(void *ctx, const void *data, size_t len)
 {
     import_out *o = ctx;
     if (!o->failed && len && fwrite(data, 1, len, o->f) != len)
@@ -186,7 +186,7 @@ static void import_out_sink(void *ctx, const void *data, size_t len)
 }
 
 /* Writes a decoded file into the staging directory, and its sidecar. */
-static int import_stage(import_ctx *c, import_file *f, const cms_recs *r, const cms_attr *attr,
+static int cms_import_stage(import_ctx *c, import_file *f, const cms_recs *r, const cms_attr *attr,
                         diag *err)
 {
     import_out o;
@@ -207,11 +207,11 @@ static int import_stage(import_ctx *c, import_file *f, const cms_recs *r, const 
         const char *rec = cms_recs_at(r, i, &len);
         if (r->binary)
             rc = cms_recs_encode_binary(r->recfm == 'F' ? CMS_FORM_EBCDIC : CMS_FORM_VSTREAM,
-                                        r->recfm, lrecl, rec, len, import_out_sink, &o, c->path,
+                                        r->recfm, lrecl, rec, len, cms_import_out_sink, &o, c->path,
                                         (long)i + 1, err);
         else
             rc = cms_recs_encode_record(CMS_FORM_TEXT, r->recfm, lrecl, NULL, rec, len,
-                                        import_out_sink, &o, c->path, (long)i + 1, err);
+                                        cms_import_out_sink, &o, c->path, (long)i + 1, err);
     }
     if (fclose(o.f) != 0)
         o.failed = 1;
@@ -238,7 +238,7 @@ static int import_stage(import_ctx *c, import_file *f, const cms_recs *r, const 
     return rc;
 }
 
-static int import_tape_file(void *ctx, const cms_tape_file *t, diag *err)
+static int cms_import_tape_file(void *ctx, const cms_tape_file *t, diag *err)
 {
     import_ctx *c = ctx;
     import_file *f;
@@ -248,7 +248,7 @@ static int import_tape_file(void *ctx, const cms_tape_file *t, diag *err)
     long recno = 0, col = 0;
     unsigned char byte = 0;
     int rc, bin;
-    if ((rc = import_claim(c, &t->id, t->offset, &f, err)))
+    if ((rc = cms_import_claim(c, &t->id, t->offset, &f, err)))
         return rc;
     f->item.source = t->kind == CMS_TAPE_DUMP ? "tape dump" : "vmfplc2";
     f->item.holes = t->holes;
@@ -286,19 +286,19 @@ static int import_tape_file(void *ctx, const cms_tape_file *t, diag *err)
     attr.lrecl = t->lrecl;
     attr.num = t->id.num;
     snprintf(attr.date, sizeof attr.date, "%s", t->date);
-    rc = import_stage(c, f, &r, &attr, err);
+    rc = cms_import_stage(c, f, &r, &attr, err);
     cms_recs_free(&r);
     return rc;
 }
 
-static int import_punch_file(void *ctx, const cms_fileid *id, const cms_recs *r, long card,
+static int cms_import_punch_file(void *ctx, const cms_fileid *id, const cms_recs *r, long card,
                              diag *err)
 {
     import_ctx *c = ctx;
     import_file *f;
     cms_attr attr;
     int rc;
-    if ((rc = import_claim(c, id, card, &f, err)))
+    if ((rc = cms_import_claim(c, id, card, &f, err)))
         return rc;
     f->item.source = "punch";
     memset(&attr, 0, sizeof attr);
@@ -306,12 +306,12 @@ static int import_punch_file(void *ctx, const cms_fileid *id, const cms_recs *r,
     attr.recfm = 'F';
     attr.lrecl = CMS_CARD_COLS;
     attr.num = id->num;
-    return import_stage(c, f, r, id->num != '1' ? &attr : NULL, err);
+    return cms_import_stage(c, f, r, id->num != '1' ? &attr : NULL, err);
 }
 
 /* Upper-cased host names of the disk directory -> index into *names, read
  * once. Only names that can be fileids matter. */
-static int import_scan_disk(const char *dir, import_map *m, char ***names, size_t *n, diag *err)
+static int cms_import_scan_disk(const char *dir, import_map *m, char ***names, size_t *n, diag *err)
 {
     DIR *dh = opendir(dir);
     struct dirent *e;
@@ -337,14 +337,14 @@ static int import_scan_disk(const char *dir, import_map *m, char ***names, size_
         (*names)[(*n)++] = copy;       /* the caller frees names[0 .. *n) */
         /* among case variants the byte-wise smallest wins, as cms_disks_find chooses */
         {
-            long prev = import_map_put(m, key, (long)*n - 1);
+            long prev = cms_import_map_put(m, key, (long)*n - 1);
             if (prev == -2) {
                 closedir(dh);
                 return diag_at(err, DIAG_IO, dir, 0, 0, "out of memory");
             }
             if (prev >= 0 && strcmp(copy, (*names)[prev]) < 0) {
                 int f;
-                m->val[import_map_slot(m, key, &f)] = (long)*n - 1;
+                m->val[cms_import_map_slot(m, key, &f)] = (long)*n - 1;
             }
         }
     }
@@ -354,7 +354,7 @@ static int import_scan_disk(const char *dir, import_map *m, char ***names, size_
 
 /* Removes the staged files and the staging directory; allocates nothing,
  * so that it also cleans up after running out of memory. */
-static void import_unstage(import_ctx *c)
+static void cms_import_unstage(import_ctx *c)
 {
     char p[4096];
     size_t i;
@@ -376,14 +376,14 @@ static void import_unstage(import_ctx *c)
     c->stage = NULL;
 }
 
-static int import_same_file(const struct stat *in, const char *path)
+static int cms_import_same_file(const struct stat *in, const char *path)
 {
     struct stat st;
     return stat(path, &st) == 0 && st.st_dev == in->st_dev && st.st_ino == in->st_ino;
 }
 
 /* Checks every staged file against the disk, then renames them into place. */
-static int import_commit(import_ctx *c, diag *err)
+static int cms_import_commit(import_ctx *c, diag *err)
 {
     import_map disk;
     char **names = NULL, **paths = NULL, t[CMS_FILEID_TEXT_MAX];
@@ -391,7 +391,7 @@ static int import_commit(import_ctx *c, diag *err)
     struct stat in;
     int rc, have_in = stat(c->path, &in) == 0;
     memset(&disk, 0, sizeof disk);
-    rc = import_scan_disk(c->dir, &disk, &names, &nnames, err);
+    rc = cms_import_scan_disk(c->dir, &disk, &names, &nnames, err);
     /* every check and every path first, so that nothing but rename() runs
      * once files move */
     if (!rc && !(paths = mem_calloc(c->nfiles ? 4 * c->nfiles : 1, sizeof *paths)))
@@ -402,7 +402,7 @@ static int import_commit(import_ctx *c, diag *err)
         if (!f->host[0])
             continue;
         snprintf(key, sizeof key, "%s.%s", f->item.id.fn, f->item.id.ft);
-        f->existing = import_map_get(&disk, key);
+        f->existing = cms_import_map_get(&disk, key);
         p[0] = cms_disks_join(c->stage, f->host);
         p[1] = cms_disks_join(c->dir, f->existing >= 0 ? names[f->existing] : f->host);
         p[2] = p[0] ? cms_attr_path(p[0]) : NULL;
@@ -418,7 +418,7 @@ static int import_commit(import_ctx *c, diag *err)
             rc = diag_at(err, DIAG_INPUT, t, 0, 0, "file exists on disk %c as '%s' (nothing "
                          "imported; --replace replaces existing files)", c->disk,
                          names[f->existing]);
-        else if (have_in && import_same_file(&in, p[1]))
+        else if (have_in && cms_import_same_file(&in, p[1]))
             rc = diag_at(err, DIAG_INPUT, t, 0, 0, "would replace the input '%s' itself "
                          "(import onto another disk)", c->path);
     }
@@ -442,7 +442,7 @@ static int import_commit(import_ctx *c, diag *err)
     for (i = 0; i < nnames; i++)
         mem_free(names[i]);
     mem_free(names);
-    import_map_free(&disk);
+    cms_import_map_free(&disk);
     return rc;
 }
 
@@ -483,7 +483,7 @@ int cms_import(const cms_disks *d, const char *path, const cms_import_opts *o,
     if (kind == CMS_IMPORT_AUTO)
         kind = cms_aws_detect((const unsigned char *)data, len) ? CMS_IMPORT_TAPE : CMS_IMPORT_PUNCH;
     if (kind == CMS_IMPORT_TAPE) {
-        rc = cms_tape_read((const unsigned char *)data, len, path, c.o->warn, import_tape_file, &c,
+        rc = cms_tape_read((const unsigned char *)data, len, path, c.o->warn, cms_import_tape_file, &c,
                            NULL, err);
     } else {
         cms_decode_opts dopt;
@@ -491,15 +491,15 @@ int cms_import(const cms_disks *d, const char *path, const cms_import_opts *o,
         dopt.form = c.o->form;
         dopt.cp = c.o->cp;
         c.punch = 1;
-        rc = cms_punch_split((const unsigned char *)data, len, &dopt, path, import_punch_file, &c,
+        rc = cms_punch_split((const unsigned char *)data, len, &dopt, path, cms_import_punch_file, &c,
                              NULL, err);
     }
     mem_free(data);
     if (!rc && c.nfiles == 0)
         rc = diag_at(err, DIAG_INPUT, path, 0, 0, "no CMS files found");
     if (!rc)
-        rc = import_commit(&c, err);
-    import_unstage(&c);
+        rc = cms_import_commit(&c, err);
+    cms_import_unstage(&c);
     if (!rc) {
         for (i = 0; i < c.nfiles; i++) {
             if (c.files[i].item.binary != 2)
@@ -511,6 +511,6 @@ int cms_import(const cms_disks *d, const char *path, const cms_import_opts *o,
             *nfiles = written;
     }
     mem_free(c.files);
-    import_map_free(&c.names);
+    cms_import_map_free(&c.names);
     return rc;
 }

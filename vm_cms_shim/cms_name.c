@@ -5,7 +5,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static int name_path(const char *arg, cms_name *n, diag *err)
+static int cms_name_path(const char *arg, cms_name *n, diag *err)
 {
     memset(n, 0, sizeof *n);
     if (!(n->path = mem_strdup(arg)))
@@ -15,7 +15,7 @@ static int name_path(const char *arg, cms_name *n, diag *err)
 }
 
 /* Fills n for a resolved fileid (path owned by n from here on). */
-static int name_fileid(cms_name *n, char *path, const cms_fileid *id)
+static int cms_name_fileid(cms_name *n, char *path, const cms_fileid *id)
 {
     memset(n, 0, sizeof *n);
     n->path = path;
@@ -36,12 +36,12 @@ int cms_name_input(const cms_disks *d, const char *arg, cms_name *n, diag *err)
             cms_fileid_parse(arg, &id, err);
             return DIAG_INPUT;
         }
-        return name_path(arg, n, err);
+        return cms_name_path(arg, n, err);
     }
     cms_fileid_parse(arg, &id, err);
     if ((rc = cms_disks_find(d, &id, &path, &found, err)))
         return rc;
-    return name_fileid(n, path, &found);
+    return cms_name_fileid(n, path, &found);
 }
 
 int cms_name_output(const cms_disks *d, const char *arg, cms_name *n, diag *err)
@@ -50,11 +50,11 @@ int cms_name_output(const cms_disks *d, const char *arg, cms_name *n, diag *err)
     char *path = NULL;
     int rc;
     if (!cms_fileid_is_fileid(arg))
-        return name_path(arg, n, err);
+        return cms_name_path(arg, n, err);
     cms_fileid_parse(arg, &id, err);
     if ((rc = cms_disks_output_path(d, &id, &path, err)))
         return rc;
-    return name_fileid(n, path, &id);
+    return cms_name_fileid(n, path, &id);
 }
 
 void cms_name_free(cms_name *n)

@@ -6,7 +6,7 @@
 
 /* Characters (UTF-8 code points) in n bytes of host text: the column count
  * of a record, which is what LRECL limits. */
-static size_t recs_text_cols(const char *s, size_t n)
+static size_t cms_recs_text_cols(const char *s, size_t n)
 {
     size_t i, c = 0;
     for (i = 0; i < n; i++)
@@ -68,21 +68,21 @@ typedef struct recs_build {
     size_t tmpcap;
 } recs_build;
 
-static void recs_build_free(recs_build *b)
+static void cms_recs_build_free(recs_build *b)
 {
     cms_recs_free(&b->r);
     mem_free(b->tmp);
 }
 
 /* Hands the finished set to out (the only write to *out). */
-static int recs_build_done(recs_build *b, cms_recs *out)
+static int cms_recs_build_done(recs_build *b, cms_recs *out)
 {
     mem_free(b->tmp);
     *out = b->r;
     return 0;
 }
 
-static int recs_build_tmp(recs_build *b, size_t need, diag *err)
+static int cms_recs_build_tmp(recs_build *b, size_t need, diag *err)
 {
     if (need && mem_grow((void **)&b->tmp, &b->tmpcap, need, 1))
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
@@ -92,11 +92,11 @@ static int recs_build_tmp(recs_build *b, size_t need, diag *err)
 /* Decodes one EBCDIC record through cp and appends it. A bad byte is placed
  * by (recno, column) for cards (offset < 0), else by its byte offset in the
  * stream (offset = where the record's data starts). */
-static int recs_build_ebcdic(recs_build *b, const cms_cp *cp, const unsigned char *data, size_t len,
+static int cms_recs_build_ebcdic(recs_build *b, const cms_cp *cp, const unsigned char *data, size_t len,
                         const char *name, long recno, long long offset, diag *err)
 {
     size_t bad = 0, n;
-    if (recs_build_tmp(b, 2 * len, err))
+    if (cms_recs_build_tmp(b, 2 * len, err))
         return DIAG_IO;
     n = cms_cp_decode(cp, data, len, b->tmp, &bad);
     if (n == (size_t)-1) {
@@ -135,7 +135,7 @@ int cms_recs_read_card(const char *s, size_t len, cms_fileid *id, const char *na
  * `prior` records already taken: 1 when it named the file (kept in b), 0 when
  * it is no :READ card, or a DIAG status (a bad fileid, or a second :READ
  * card, which only deck splitting accepts). */
-static int recs_take_header(recs_build *b, const char *s, size_t len, size_t prior,
+static int cms_recs_take_header(recs_build *b, const char *s, size_t len, size_t prior,
                             const char *name, long recno, diag *err)
 {
     cms_fileid id;
@@ -154,7 +154,7 @@ static int recs_take_header(recs_build *b, const char *s, size_t len, size_t pri
 }
 
 /* Text and punch decks: one line per record. */
-static int recs_decode_text(const unsigned char *buf, size_t n, cms_form form, int forced,
+static int cms_recs_decode_text(const unsigned char *buf, size_t n, cms_form form, int forced,
                        int raw, const char *name, cms_recs *out, diag *err)
 {
     recs_build b;
@@ -171,20 +171,20 @@ static int recs_decode_text(const unsigned char *buf, size_t n, cms_form form, i
             len--;
         recno++;
         if (len > CMS_LRECL_MAX) {
-            recs_build_free(&b);
+            cms_recs_build_free(&b);
             return diag_at(err, DIAG_INPUT, name, recno, CMS_LRECL_MAX + 1,
                            "record longer than %d bytes", CMS_LRECL_MAX);
         }
         if (!forced && (z = memchr(s, 0, len)) != NULL) {
-            recs_build_free(&b);
+            cms_recs_build_free(&b);
             return diag_at(err, DIAG_INPUT, name, recno, (long)(z - s) + 1,
                            "NUL byte: not a text file, nor a valid V or RDW stream "
                            "(choose the form with --read-as)");
         }
         if (!raw && (form == CMS_FORM_PUNCH || (!forced && recno == 1))) {
-            int h = recs_take_header(&b, (const char *)s, len, b.r.count, name, recno, err);
+            int h = cms_recs_take_header(&b, (const char *)s, len, b.r.count, name, recno, err);
             if (h < 0) {
-                recs_build_free(&b);
+                cms_recs_build_free(&b);
                 return err->status;
             }
             if (h) {
@@ -193,14 +193,14 @@ static int recs_decode_text(const unsigned char *buf, size_t n, cms_form form, i
             }
         }
         if (form == CMS_FORM_PUNCH) {
-            size_t cols = recs_text_cols((const char *)s, len);
+            size_t cols = cms_recs_text_cols((const char *)s, len);
             if (cols > CMS_CARD_COLS) {
-                recs_build_free(&b);
+                cms_recs_build_free(&b);
                 return diag_at(err, DIAG_INPUT, name, recno, CMS_CARD_COLS + 1,
                                "card longer than %d columns", CMS_CARD_COLS);
             }
-            if (recs_build_tmp(&b, len + CMS_CARD_COLS - cols, err)) {
-                recs_build_free(&b);
+            if (cms_recs_build_tmp(&b, len + CMS_CARD_COLS - cols, err)) {
+                cms_recs_build_free(&b);
                 return DIAG_IO;
             }
             memcpy(b.tmp, s, len);
@@ -209,7 +209,7 @@ static int recs_decode_text(const unsigned char *buf, size_t n, cms_form form, i
             s = (const unsigned char *)b.tmp;
         }
         {
-            long cols = (long)recs_text_cols((const char *)s, len);
+            long cols = (long)cms_recs_text_cols((const char *)s, len);
             if (b.r.count && cols != first_cols)
                 same = 0;
             if (!b.r.count)
@@ -218,7 +218,7 @@ static int recs_decode_text(const unsigned char *buf, size_t n, cms_form form, i
                 b.r.lrecl = cols;
         }
         if (cms_recs_append(&b.r, &b.textcap, &b.reccap, (const char *)s, len, err)) {
-            recs_build_free(&b);
+            cms_recs_build_free(&b);
             return DIAG_IO;
         }
     }
@@ -229,13 +229,13 @@ static int recs_decode_text(const unsigned char *buf, size_t n, cms_form form, i
         b.r.recfm = 'F';
         b.r.lrecl = CMS_CARD_COLS;
     }
-    return recs_build_done(&b, out);
+    return cms_recs_build_done(&b, out);
 }
 
 /* 1 if buf is valid UTF-8 (no overlong forms, no surrogates checked: a
  * single-byte code page's text fails on its first byte above X'7F' far more
  * often than it passes). */
-static int recs_utf8_valid(const unsigned char *b, size_t n)
+static int cms_recs_utf8_valid(const unsigned char *b, size_t n)
 {
     size_t i = 0;
     while (i < n) {
@@ -256,14 +256,14 @@ static int recs_utf8_valid(const unsigned char *b, size_t n)
  * Hercules' ASCII punch writes one byte per column, so a cent or not sign
  * arrives as one byte, which is converted to UTF-8 here before the columns
  * are counted. */
-static int recs_decode_lines(const unsigned char *buf, size_t n, cms_form form, int forced,
+static int cms_recs_decode_lines(const unsigned char *buf, size_t n, cms_form form, int forced,
                              int raw, const char *name, cms_recs *out, diag *err)
 {
     unsigned char *u;
     size_t i, k = 0;
     int rc;
-    if (recs_utf8_valid(buf, n))
-        return recs_decode_text(buf, n, form, forced, raw, name, out, err);
+    if (cms_recs_utf8_valid(buf, n))
+        return cms_recs_decode_text(buf, n, form, forced, raw, name, out, err);
     if (!(u = mem_alloc(2 * n)))
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
     for (i = 0; i < n; i++) {
@@ -274,14 +274,14 @@ static int recs_decode_lines(const unsigned char *buf, size_t n, cms_form form, 
             u[k++] = (unsigned char)(0x80 | (buf[i] & 0x3F));
         }
     }
-    rc = recs_decode_text(u, k, form, forced, raw, name, out, err);
+    rc = cms_recs_decode_text(u, k, form, forced, raw, name, out, err);
     mem_free(u);
     return rc;
 }
 
 /* Resolves the code page to use: the forced one, or the one the bytes
  * decide (1047 when they do not matter). */
-static int recs_pick_cp(cms_cp_id want, unsigned evidence, const char *name, const cms_cp **cp, diag *err)
+static int cms_recs_pick_cp(cms_cp_id want, unsigned evidence, const char *name, const cms_cp **cp, diag *err)
 {
     cms_cp_id id = want != CMS_CP_AUTO ? want : cms_cp_choose(evidence, CMS_CP_1047);
     if (id == CMS_CP_AUTO)
@@ -293,7 +293,7 @@ static int recs_pick_cp(cms_cp_id want, unsigned evidence, const char *name, con
 
 /* EBCDIC cards of lrecl bytes, no line ends; a leading :READ card names the
  * file. */
-static int recs_decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_id want,
+static int cms_recs_decode_cards(const unsigned char *buf, size_t n, long lrecl, cms_cp_id want,
                         int raw, const char *name, cms_recs *out, diag *err)
 {
     static const unsigned char read_e[5] = {0x7A, 0xD9, 0xC5, 0xC1, 0xC4};
@@ -304,22 +304,22 @@ static int recs_decode_cards(const unsigned char *buf, size_t n, long lrecl, cms
         return diag_offset(err, DIAG_INPUT, name, (long long)(n - n % L),
                            "the deck ends with a partial card of %zu bytes (cards are %zu bytes)",
                            n % L, L);
-    if (recs_pick_cp(want, cms_cp_scan(buf, n), name, &cp, err))
+    if (cms_recs_pick_cp(want, cms_cp_scan(buf, n), name, &cp, err))
         return err->status;
     memset(&b, 0, sizeof b);
     ncards = n / L;
     for (i = 0; i < ncards; i++) {
         const unsigned char *c = buf + i * L;
         long recno = (long)i + 1;
-        if (recs_build_ebcdic(&b, cp, c, L, name, recno, -1, err)) {
-            recs_build_free(&b);
+        if (cms_recs_build_ebcdic(&b, cp, c, L, name, recno, -1, err)) {
+            cms_recs_build_free(&b);
             return err->status;
         }
         if (!raw && memcmp(c, read_e, 5) == 0) {
             cms_rec *r = &b.r.rec[b.r.count - 1];
-            int h = recs_take_header(&b, b.r.text + r->off, r->len, b.r.count - 1, name, recno, err);
+            int h = cms_recs_take_header(&b, b.r.text + r->off, r->len, b.r.count - 1, name, recno, err);
             if (h < 0) {
-                recs_build_free(&b);
+                cms_recs_build_free(&b);
                 return err->status;
             }
             if (h)
@@ -330,14 +330,14 @@ static int recs_decode_cards(const unsigned char *buf, size_t n, long lrecl, cms
     b.r.cp = cp->id;
     b.r.recfm = 'F';
     b.r.lrecl = lrecl;
-    return recs_build_done(&b, out);
+    return cms_recs_build_done(&b, out);
 }
 
 /* Walks a V (rdw = 0) or RDW (rdw = 1) length chain. With b == NULL only
  * checks that the chain covers buf exactly with EBCDIC text records and
  * returns 1/0 without diagnostics, OR-ing code-page evidence into *ev. Otherwise decodes into b
  * and returns 0 or a status. */
-static int recs_walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
+static int cms_recs_walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned *ev,
                       recs_build *b, const cms_cp *cp, const char *name, diag *err)
 {
     size_t pos = 0, hdr = rdw ? 4 : 2;
@@ -382,7 +382,7 @@ static int recs_walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned
                     return 0;
             *ev |= cms_cp_scan(buf + pos + hdr, len);
         } else {
-            if (recs_build_ebcdic(b, cp, buf + pos + hdr, len, name, recno, (long long)(pos + hdr), err))
+            if (cms_recs_build_ebcdic(b, cp, buf + pos + hdr, len, name, recno, (long long)(pos + hdr), err))
                 return err->status;
             if ((long)len > b->r.lrecl)
                 b->r.lrecl = (long)len;
@@ -392,24 +392,24 @@ static int recs_walk_chain(const unsigned char *buf, size_t n, int rdw, unsigned
     return b ? 0 : recno > 0;
 }
 
-static int recs_decode_chain(const unsigned char *buf, size_t n, int rdw, cms_cp_id want,
+static int cms_recs_decode_chain(const unsigned char *buf, size_t n, int rdw, cms_cp_id want,
                         const char *name, cms_recs *out, diag *err)
 {
     unsigned ev = 0;
     const cms_cp *cp;
     recs_build b;
-    recs_walk_chain(buf, n, rdw, &ev, NULL, NULL, name, err);
-    if (recs_pick_cp(want, ev, name, &cp, err))
+    cms_recs_walk_chain(buf, n, rdw, &ev, NULL, NULL, name, err);
+    if (cms_recs_pick_cp(want, ev, name, &cp, err))
         return err->status;
     memset(&b, 0, sizeof b);
-    if (recs_walk_chain(buf, n, rdw, &ev, &b, cp, name, err)) {
-        recs_build_free(&b);
+    if (cms_recs_walk_chain(buf, n, rdw, &ev, &b, cp, name, err)) {
+        cms_recs_build_free(&b);
         return err->status;
     }
     b.r.form = rdw ? CMS_FORM_RDW : CMS_FORM_VSTREAM;
     b.r.cp = cp->id;
     b.r.recfm = 'V';
-    return recs_build_done(&b, out);
+    return cms_recs_build_done(&b, out);
 }
 
 /* Content test for EBCDIC cards: every byte a graphic EBCDIC code (X'40' or
@@ -458,26 +458,26 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
         unsigned ev = 0;
         int v, rdw;
         if (cms_recs_looks_ebcdic(buf, n, (size_t)lrecl))
-            return recs_decode_cards(buf, n, lrecl, cp, raw, name, out, err);
-        v = recs_walk_chain(buf, n, 0, &ev, NULL, NULL, name, err);
-        rdw = recs_walk_chain(buf, n, 1, &ev, NULL, NULL, name, err);
+            return cms_recs_decode_cards(buf, n, lrecl, cp, raw, name, out, err);
+        v = cms_recs_walk_chain(buf, n, 0, &ev, NULL, NULL, name, err);
+        rdw = cms_recs_walk_chain(buf, n, 1, &ev, NULL, NULL, name, err);
         if (v && rdw)
             return diag_at(err, DIAG_INPUT, name, 0, 0,
                            "the bytes read both as a CMS V stream and as an RDW stream "
                            "(choose with --read-as vstream or --read-as rdw)");
         if (v || rdw)
-            return recs_decode_chain(buf, n, rdw, cp, name, out, err);
-        return recs_decode_lines(buf, n, CMS_FORM_TEXT, 0, raw, name, out, err);
+            return cms_recs_decode_chain(buf, n, rdw, cp, name, out, err);
+        return cms_recs_decode_lines(buf, n, CMS_FORM_TEXT, 0, raw, name, out, err);
     }
     switch (form) {
     case CMS_FORM_TEXT:
     case CMS_FORM_PUNCH:
-        return recs_decode_lines(buf, n, form, 1, raw, name, out, err);
+        return cms_recs_decode_lines(buf, n, form, 1, raw, name, out, err);
     case CMS_FORM_EBCDIC:
-        return recs_decode_cards(buf, n, lrecl, cp, raw, name, out, err);
+        return cms_recs_decode_cards(buf, n, lrecl, cp, raw, name, out, err);
     case CMS_FORM_VSTREAM:
     case CMS_FORM_RDW:
-        return recs_decode_chain(buf, n, form == CMS_FORM_RDW, cp, name, out, err);
+        return cms_recs_decode_chain(buf, n, form == CMS_FORM_RDW, cp, name, out, err);
     default:
         return diag_at(err, DIAG_USAGE, name, 0, 0, "unknown form %d", (int)form);
     }
@@ -490,7 +490,7 @@ int cms_recs_decode(const unsigned char *buf, size_t n, const cms_decode_opts *o
 typedef int (*recs_visit)(void *ctx, long recno, const unsigned char *rec, size_t len,
                           size_t offset, diag *err);
 
-static int recs_walk_stream(const unsigned char *s, size_t n, char recfm, long lrecl, long count,
+static int cms_recs_walk_stream(const unsigned char *s, size_t n, char recfm, long lrecl, long count,
                             const char *name, recs_visit visit, void *ctx, long *nrecs, diag *err)
 {
     size_t pos = 0;
@@ -535,7 +535,7 @@ static int recs_walk_stream(const unsigned char *s, size_t n, char recfm, long l
     return 0;
 }
 
-static int recs_visit_scan(void *ctx, long recno, const unsigned char *rec, size_t len,
+static int cms_recs_visit_scan(void *ctx, long recno, const unsigned char *rec, size_t len,
                            size_t offset, diag *err)
 {
     (void)recno;
@@ -551,13 +551,13 @@ typedef struct recs_stream_ctx {
     const char *name;
 } recs_stream_ctx;
 
-static int recs_visit_build(void *ctx, long recno, const unsigned char *rec, size_t len,
+static int cms_recs_visit_build(void *ctx, long recno, const unsigned char *rec, size_t len,
                             size_t offset, diag *err)
 {
     recs_stream_ctx *c = ctx;
     if (!c->cp)
         return cms_recs_append(&c->b->r, &c->b->textcap, &c->b->reccap, (const char *)rec, len, err);
-    return recs_build_ebcdic(c->b, c->cp, rec, len, c->name, recno, (long long)offset, err) ?
+    return cms_recs_build_ebcdic(c->b, c->cp, rec, len, c->name, recno, (long long)offset, err) ?
            err->status : 0;
 }
 
@@ -571,16 +571,16 @@ int cms_recs_from_stream(const unsigned char *s, size_t n, char recfm, long lrec
     int rc;
     memset(&c, 0, sizeof c);
     if (!binary) {
-        if ((rc = recs_walk_stream(s, n, recfm, lrecl, count, name, recs_visit_scan, &ev, NULL, err)))
+        if ((rc = cms_recs_walk_stream(s, n, recfm, lrecl, count, name, cms_recs_visit_scan, &ev, NULL, err)))
             return rc;
-        if (recs_pick_cp(want, ev, name, &c.cp, err))
+        if (cms_recs_pick_cp(want, ev, name, &c.cp, err))
             return err->status;
     }
     memset(&b, 0, sizeof b);
     c.b = &b;
     c.name = name;
-    if ((rc = recs_walk_stream(s, n, recfm, lrecl, count, name, recs_visit_build, &c, NULL, err))) {
-        recs_build_free(&b);
+    if ((rc = cms_recs_walk_stream(s, n, recfm, lrecl, count, name, cms_recs_visit_build, &c, NULL, err))) {
+        cms_recs_build_free(&b);
         return rc;
     }
     b.r.form = recfm == 'V' ? CMS_FORM_VSTREAM : CMS_FORM_EBCDIC;
@@ -588,7 +588,7 @@ int cms_recs_from_stream(const unsigned char *s, size_t n, char recfm, long lrec
     b.r.recfm = recfm;
     b.r.lrecl = lrecl;
     b.r.binary = binary != 0;
-    return recs_build_done(&b, out);
+    return cms_recs_build_done(&b, out);
 }
 
 typedef struct recs_control_ctx {
@@ -596,7 +596,7 @@ typedef struct recs_control_ctx {
     unsigned char byte;
 } recs_control_ctx;
 
-static int recs_visit_control(void *ctx, long recno, const unsigned char *rec, size_t len,
+static int cms_recs_visit_control(void *ctx, long recno, const unsigned char *rec, size_t len,
                               size_t offset, diag *err)
 {
     recs_control_ctx *c = ctx;
@@ -620,7 +620,7 @@ int cms_recs_stream_control(const unsigned char *s, size_t n, char recfm, long l
     diag d;
     diag_init(&d);
     memset(&c, 0, sizeof c);
-    if (recs_walk_stream(s, n, recfm, lrecl, count, "", recs_visit_control, &c, NULL, &d) != 1)
+    if (cms_recs_walk_stream(s, n, recfm, lrecl, count, "", cms_recs_visit_control, &c, NULL, &d) != 1)
         return 0;
     *recno = c.recno;
     *col = c.col;
@@ -632,7 +632,7 @@ int cms_recs_stream_control(const unsigned char *s, size_t n, char recfm, long l
 
 static const char recs_blanks[64] = "                                                                ";
 
-static void recs_put_pad(cms_sink sink, void *ctx, unsigned char c, size_t n)
+static void cms_recs_put_pad(cms_sink sink, void *ctx, unsigned char c, size_t n)
 {
     unsigned char buf[64];
     memset(buf, c, sizeof buf);
@@ -645,7 +645,7 @@ static void recs_put_pad(cms_sink sink, void *ctx, unsigned char c, size_t n)
 
 /* Encodes rec to EBCDIC through the sink in chunks (no allocation). The
  * record was checked by a counting pass, so encoding cannot fail here. */
-static void recs_put_ebcdic(const cms_cp *cp, const char *rec, size_t len, cms_sink sink, void *ctx)
+static void cms_recs_put_ebcdic(const cms_cp *cp, const char *rec, size_t len, cms_sink sink, void *ctx)
 {
     unsigned char buf[256];
     size_t i = 0, bad;
@@ -664,7 +664,7 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
                            const char *rec, size_t len, cms_sink sink, void *ctx,
                            const char *name, long recno, diag *err)
 {
-    size_t bad = 0, elen = recs_text_cols(rec, len);
+    size_t bad = 0, elen = cms_recs_text_cols(rec, len);
     if (f == CMS_FORM_EBCDIC || f == CMS_FORM_VSTREAM) {
         elen = cms_cp_encode(cp, rec, len, NULL, &bad);
         if (elen == (size_t)-1)
@@ -678,7 +678,7 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
     case CMS_FORM_TEXT:
         sink(ctx, rec, len);
         if (recfm == 'F')
-            recs_put_pad(sink, ctx, ' ', (size_t)lrecl - elen);
+            cms_recs_put_pad(sink, ctx, ' ', (size_t)lrecl - elen);
         else if (len == 0)
             sink(ctx, recs_blanks, 1);
         sink(ctx, "\n", 1);
@@ -693,8 +693,8 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
         sink(ctx, "\n", 1);
         return 0;
     case CMS_FORM_EBCDIC:
-        recs_put_ebcdic(cp, rec, len, sink, ctx);
-        recs_put_pad(sink, ctx, 0x40, (size_t)lrecl - elen);
+        cms_recs_put_ebcdic(cp, rec, len, sink, ctx);
+        cms_recs_put_pad(sink, ctx, 0x40, (size_t)lrecl - elen);
         return 0;
     case CMS_FORM_VSTREAM: {
         size_t out = recfm == 'F' ? (size_t)lrecl : (elen ? elen : 1);
@@ -702,8 +702,8 @@ int cms_recs_encode_record(cms_form f, char recfm, long lrecl, const cms_cp *cp,
         hw[0] = (unsigned char)(out >> 8);
         hw[1] = (unsigned char)(out & 0xFF);
         sink(ctx, hw, 2);
-        recs_put_ebcdic(cp, rec, len, sink, ctx);
-        recs_put_pad(sink, ctx, 0x40, out - elen);
+        cms_recs_put_ebcdic(cp, rec, len, sink, ctx);
+        cms_recs_put_pad(sink, ctx, 0x40, out - elen);
         return 0;
     }
     default:
@@ -732,7 +732,7 @@ int cms_recs_encode_binary(cms_form f, char recfm, long lrecl, const char *rec, 
     }
     sink(ctx, rec, len);
     if (recfm == 'F')
-        recs_put_pad(sink, ctx, 0x00, (size_t)lrecl - len);
+        cms_recs_put_pad(sink, ctx, 0x00, (size_t)lrecl - len);
     return 0;
 }
 

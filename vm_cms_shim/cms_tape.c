@@ -21,7 +21,7 @@ static const unsigned char tape_hdr_cms[4] = {0x02, 0xC3, 0xD4, 0xE2};      /* X
 static const unsigned char tape_hdr_plch[5] = {0x02, 0xD7, 0xD3, 0xC3, 0xC8};
 static const unsigned char tape_hdr_plcd[5] = {0x02, 0xD7, 0xD3, 0xC3, 0xC4};
 
-static unsigned long tape_be(const unsigned char *p, int n)
+static unsigned long cms_tape_be(const unsigned char *p, int n)
 {
     unsigned long v = 0;
     while (n--)
@@ -29,7 +29,7 @@ static unsigned long tape_be(const unsigned char *p, int n)
     return v;
 }
 
-static void tape_put_be(unsigned char *p, unsigned long v, int n)
+static void cms_tape_put_be(unsigned char *p, unsigned long v, int n)
 {
     while (n--) {
         p[n] = (unsigned char)(v & 0xFF);
@@ -55,7 +55,7 @@ typedef struct tape_state {
     void *ctx;
 } tape_state;
 
-static int tape_append(tape_state *t, const unsigned char *p, size_t n, long long off, diag *err)
+static int cms_tape_append(tape_state *t, const unsigned char *p, size_t n, long long off, diag *err)
 {
     if (t->len + n > (size_t)CMS_FILE_MAX_BYTES)
         return diag_offset(err, DIAG_INPUT, t->name, off, "file larger than %ld bytes",
@@ -71,7 +71,7 @@ static int tape_append(tape_state *t, const unsigned char *p, size_t n, long lon
 }
 
 /* Directory-entry name fields (EBCDIC) to a fileid. */
-static int tape_fileid(const unsigned char *fn, const unsigned char *ft, const unsigned char *fm,
+static int cms_tape_fileid(const unsigned char *fn, const unsigned char *ft, const unsigned char *fm,
                        cms_fileid *id, const char *name, long long off, diag *err)
 {
     const cms_cp *cp;
@@ -95,7 +95,7 @@ static int tape_fileid(const unsigned char *fn, const unsigned char *ft, const u
     return 0;
 }
 
-static int tape_recfm(unsigned char b, char *recfm, const char *name, long long off, diag *err)
+static int cms_tape_recfm(unsigned char b, char *recfm, const char *name, long long off, diag *err)
 {
     if (b == 0xC6)
         *recfm = 'F';
@@ -107,7 +107,7 @@ static int tape_recfm(unsigned char b, char *recfm, const char *name, long long 
 }
 
 /* One decimal-coded byte (X'84' = 84), or -1 if it is not two BCD digits. */
-static int tape_dcb(unsigned char b)
+static int cms_tape_dcb(unsigned char b)
 {
     return (b >> 4) > 9 || (b & 15) > 9 ? -1 : (b >> 4) * 10 + (b & 15);
 }
@@ -115,7 +115,7 @@ static int tape_dcb(unsigned char b)
 /* The date a directory entry records: the EDF date YYMMDDhhmmss (adt) when
  * set, else the short FST's year (2 EBCDIC digits) and MMDDhhmm; century 20
  * when flag X'08' is on. Leaves "" when the fields are not a date. */
-static void tape_date(const unsigned char *adt, const unsigned char *year,
+static void cms_tape_date(const unsigned char *adt, const unsigned char *year,
                       const unsigned char *mdhm, unsigned flags, char out[20])
 {
     int v[6], i, cc = (flags & 0x08) ? 20 : 19, yy;
@@ -124,7 +124,7 @@ static void tape_date(const unsigned char *adt, const unsigned char *year,
     out[0] = '\0';
     if (adt && memcmp(adt, none, 6) != 0) {
         for (i = 0; i < 6; i++)
-            if ((v[i] = tape_dcb(adt[i])) < 0)
+            if ((v[i] = cms_tape_dcb(adt[i])) < 0)
                 return;
         if (v[1] < 1 || v[1] > 12 || v[2] < 1 || v[2] > 31 || v[3] > 23 || v[4] > 59 || v[5] > 59)
             return;
@@ -139,7 +139,7 @@ static void tape_date(const unsigned char *adt, const unsigned char *year,
     if (year[0] < 0xF0 || year[0] > 0xF9 || year[1] < 0xF0 || year[1] > 0xF9)
         return;
     for (i = 0; i < 4; i++)
-        if ((v[i] = tape_dcb(mdhm[i])) < 0)
+        if ((v[i] = cms_tape_dcb(mdhm[i])) < 0)
             return;
     if (v[0] < 1 || v[0] > 12 || v[1] < 1 || v[1] > 31 || v[2] > 23 || v[3] > 59)
         return;
@@ -152,7 +152,7 @@ static void tape_date(const unsigned char *adt, const unsigned char *year,
     out[16] = '\0';
 }
 
-static int tape_emit(tape_state *t, cms_tape_file *f, diag *err)
+static int cms_tape_emit(tape_state *t, cms_tape_file *f, diag *err)
 {
     int rc;
     if (t->nfiles >= CMS_TAPE_MAX_FILES)
@@ -172,7 +172,7 @@ static int tape_emit(tape_state *t, cms_tape_file *f, diag *err)
 }
 
 /* CMS TAPE DUMP trailer: p points after the 5-byte header, n bytes. */
-static int tape_dump_trailer(tape_state *t, const unsigned char *p, size_t n, long long off,
+static int cms_tape_dump_trailer(tape_state *t, const unsigned char *p, size_t n, long long off,
                              diag *err)
 {
     cms_tape_file f;
@@ -183,15 +183,15 @@ static int tape_dump_trailer(tape_state *t, const unsigned char *p, size_t n, lo
         return diag_offset(err, DIAG_INPUT, t->name, off,
                            "CMS tape trailer of %zu bytes is shorter than %d", n, TAPE_TRAILER_MIN);
     f.kind = CMS_TAPE_DUMP;
-    if ((rc = tape_recfm(p[10], &f.recfm, t->name, off + TAPE_AT + 10, err)) ||
-        (rc = tape_fileid(p + 64, p + 72, p + 80, &f.id, t->name, off + TAPE_AT + 64, err)))
+    if ((rc = cms_tape_recfm(p[10], &f.recfm, t->name, off + TAPE_AT + 10, err)) ||
+        (rc = cms_tape_fileid(p + 64, p + 72, p + 80, &f.id, t->name, off + TAPE_AT + 64, err)))
         return rc;
-    f.lrecl = (long)tape_be(p + 12, 4);
+    f.lrecl = (long)cms_tape_be(p + 12, 4);
     if (f.lrecl < 1 || f.lrecl > CMS_LRECL_MAX)
         return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT + 12,
-                           "LRECL %lu is outside 1..%d", tape_be(p + 12, 4), CMS_LRECL_MAX);
-    c16 = tape_be(p + 6, 2);
-    c32 = tape_be(p + 32, 4);
+                           "LRECL %lu is outside 1..%d", cms_tape_be(p + 12, 4), CMS_LRECL_MAX);
+    c16 = cms_tape_be(p + 6, 2);
+    c32 = cms_tape_be(p + 32, 4);
     if (c32 && (c32 & 0xFFFFUL) == c16 && c32 <= 0x7FFFFFFFUL) {
         f.count = (long)c32;
     } else {
@@ -202,14 +202,14 @@ static int tape_dump_trailer(tape_state *t, const unsigned char *p, size_t n, lo
                           "count %lu (a VM/370 trailer has no 32-bit count); %lu records used",
                           c32, c16, c16);
     }
-    tape_date(p + 38, p + 18, p + 20, p[11], f.date);
+    cms_tape_date(p + 38, p + 18, p + 20, p[11], f.date);
     if (t->kind == 0)
         t->offset = off;
-    return tape_emit(t, &f, err);
+    return cms_tape_emit(t, &f, err);
 }
 
 /* VMFPLC2 header: the FST. */
-static int tape_plc_header(tape_state *t, const unsigned char *p, size_t n, long long off,
+static int cms_tape_plc_header(tape_state *t, const unsigned char *p, size_t n, long long off,
                            diag *err)
 {
     cms_tape_file *f = &t->plc;
@@ -220,19 +220,19 @@ static int tape_plc_header(tape_state *t, const unsigned char *p, size_t n, long
         return diag_offset(err, DIAG_INPUT, t->name, off,
                            "VMFPLC2 header of %zu bytes is shorter than the %d-byte FST", n, PLC_FST);
     f->kind = CMS_TAPE_VMFPLC2;
-    if ((rc = tape_recfm(p[30], &f->recfm, t->name, off + TAPE_AT + 30, err)) ||
-        (rc = tape_fileid(p, p + 8, p + 24, &f->id, t->name, off + TAPE_AT, err)))
+    if ((rc = cms_tape_recfm(p[30], &f->recfm, t->name, off + TAPE_AT + 30, err)) ||
+        (rc = cms_tape_fileid(p, p + 8, p + 24, &f->id, t->name, off + TAPE_AT, err)))
         return rc;
-    f->lrecl = (long)tape_be(p + 32, 4);
+    f->lrecl = (long)cms_tape_be(p + 32, 4);
     if (f->lrecl < 1 || f->lrecl > CMS_LRECL_MAX)
         return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT + 32,
-                           "LRECL %lu is outside 1..%d", tape_be(p + 32, 4), CMS_LRECL_MAX);
-    aic = tape_be(p + 56, 4);
+                           "LRECL %lu is outside 1..%d", cms_tape_be(p + 32, 4), CMS_LRECL_MAX);
+    aic = cms_tape_be(p + 56, 4);
     if (aic > 0x7FFFFFFFUL)
         return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT + 56,
                            "record count %lu is too large", aic);
-    f->count = aic ? (long)aic : (long)tape_be(p + 26, 2);
-    tape_date(p + 62, p + 38, p + 16, p[31], f->date);
+    f->count = aic ? (long)aic : (long)cms_tape_be(p + 26, 2);
+    cms_tape_date(p + 62, p + 38, p + 16, p[31], f->date);
     t->kind = CMS_TAPE_VMFPLC2;
     t->len = 0;
     t->offset = off;
@@ -240,14 +240,14 @@ static int tape_plc_header(tape_state *t, const unsigned char *p, size_t n, long
 }
 
 /* Ends a VMFPLC2 file in progress (at a header, tape mark or end). */
-static int tape_plc_finish(tape_state *t, diag *err)
+static int cms_tape_plc_finish(tape_state *t, diag *err)
 {
     if (t->kind != CMS_TAPE_VMFPLC2)
         return 0;
-    return tape_emit(t, &t->plc, err);
+    return cms_tape_emit(t, &t->plc, err);
 }
 
-static int tape_dump_open_check(tape_state *t, long long off, const char *what, diag *err)
+static int cms_tape_dump_open_check(tape_state *t, long long off, const char *what, diag *err)
 {
     if (t->kind == CMS_TAPE_DUMP)
         return diag_offset(err, DIAG_INPUT, t->name, off,
@@ -257,7 +257,7 @@ static int tape_dump_open_check(tape_state *t, long long off, const char *what, 
 }
 
 /* 1 if r is an 80-byte IBM standard label (VOL1, HDRn, EOFn, EOVn, UHLn, UTLn). */
-static int tape_is_label(const unsigned char *r, size_t n)
+static int cms_tape_is_label(const unsigned char *r, size_t n)
 {
     static const unsigned char ids[6][3] = {
         {0xE5, 0xD6, 0xD3}, {0xC8, 0xC4, 0xD9}, {0xC5, 0xD6, 0xC6},   /* VOL HDR EOF */
@@ -271,7 +271,7 @@ static int tape_is_label(const unsigned char *r, size_t n)
     return 0;
 }
 
-static void tape_label_note(tape_state *t, const unsigned char *r, long long off)
+static void cms_tape_label_note(tape_state *t, const unsigned char *r, long long off)
 {
     const cms_cp *cp;
     char text[TAPE_LABEL + 1];
@@ -290,7 +290,7 @@ static void tape_label_note(tape_state *t, const unsigned char *r, long long off
     cms_warn_emit(t->warn, t->name, off, "standard label skipped: %s", text);
 }
 
-static int tape_dump_block(tape_state *t, unsigned char type, const unsigned char *p, size_t pn,
+static int cms_tape_dump_block(tape_state *t, unsigned char type, const unsigned char *p, size_t pn,
                            long long off, diag *err)
 {
     size_t want = type == 0x40 ? TAPE_BLOCK : TAPE_BLOCK_BIG;
@@ -315,22 +315,22 @@ static int tape_dump_block(tape_state *t, unsigned char type, const unsigned cha
     if (type == 0xF0) {
         /* a hole of a sparse file: its block of zeros is part of the data */
         t->holes++;
-        return tape_append(t, NULL, t->block, off, err);
+        return cms_tape_append(t, NULL, t->block, off, err);
     }
     if (pn == 0 || pn > want)
         return diag_offset(err, DIAG_INPUT, t->name, off,
                            "CMS tape data block of %zu bytes (expected 1..%zu)", pn, want);
     if (pn < want)
         t->short_at = off;
-    return tape_append(t, p, pn, off, err);
+    return cms_tape_append(t, p, pn, off, err);
 }
 
-static int tape_record(tape_state *t, const unsigned char *r, size_t n, long long off, diag *err)
+static int cms_tape_record(tape_state *t, const unsigned char *r, size_t n, long long off, diag *err)
 {
     int rc;
-    if (t->kind == 0 && (t->in_labels || tape_is_label(r, n))) {
+    if (t->kind == 0 && (t->in_labels || cms_tape_is_label(r, n))) {
         if (!t->in_labels || r[0] == 0xE5)
-            tape_label_note(t, r, off);
+            cms_tape_label_note(t, r, off);
         t->in_labels = 1;
         return 0;
     }
@@ -338,20 +338,20 @@ static int tape_record(tape_state *t, const unsigned char *r, size_t n, long lon
         const unsigned char *p = r + TAPE_HDR;
         size_t pn = n - TAPE_HDR;
         unsigned char type = r[4];
-        if ((rc = tape_plc_finish(t, err)))
+        if ((rc = cms_tape_plc_finish(t, err)))
             return rc;
         if (type == 0xD5)                                   /* 'N' */
-            return tape_dump_trailer(t, p, pn, off, err);
+            return cms_tape_dump_trailer(t, p, pn, off, err);
         if (type == 0x40 || type == 0xC6 || type == 0xE5 || type == 0xF0)
-            return tape_dump_block(t, type, p, pn, off, err);
+            return cms_tape_dump_block(t, type, p, pn, off, err);
         return diag_offset(err, DIAG_INPUT, t->name, off + TAPE_AT - 1,
                            "unknown CMS tape block type X'%02X'", type);
     }
     if (n >= TAPE_HDR && memcmp(r, tape_hdr_plch, 5) == 0) {
-        if ((rc = tape_dump_open_check(t, off, "VMFPLC2 header", err)) ||
-            (rc = tape_plc_finish(t, err)))
+        if ((rc = cms_tape_dump_open_check(t, off, "VMFPLC2 header", err)) ||
+            (rc = cms_tape_plc_finish(t, err)))
             return rc;
-        return tape_plc_header(t, r + TAPE_HDR, n - TAPE_HDR, off, err);
+        return cms_tape_plc_header(t, r + TAPE_HDR, n - TAPE_HDR, off, err);
     }
     if (n >= TAPE_HDR && memcmp(r, tape_hdr_plcd, 5) == 0) {
         if (t->kind != CMS_TAPE_VMFPLC2)
@@ -360,7 +360,7 @@ static int tape_record(tape_state *t, const unsigned char *r, size_t n, long lon
             return diag_offset(err, DIAG_INPUT, t->name, off,
                                "VMFPLC2 data block of %zu bytes (at most %d)", n - TAPE_HDR,
                                PLC_BLOCK);
-        return tape_append(t, r + TAPE_HDR, n - TAPE_HDR, off, err);
+        return cms_tape_append(t, r + TAPE_HDR, n - TAPE_HDR, off, err);
     }
     return diag_offset(err, DIAG_INPUT, t->name, off,
                        "tape record of %zu bytes is neither CMS TAPE DUMP nor VMFPLC2 "
@@ -391,14 +391,14 @@ int cms_tape_read(const unsigned char *buf, size_t n, const char *name, const cm
             break;
         }
         if (k == CMS_AWS_RECORD) {
-            if ((rc = tape_record(&t, r, len, off, err)))
+            if ((rc = cms_tape_record(&t, r, len, off, err)))
                 break;
             continue;
         }
         t.in_labels = 0;
-        if ((rc = tape_dump_open_check(&t, at, k == CMS_AWS_MARK ? "tape mark" : "end of tape",
+        if ((rc = cms_tape_dump_open_check(&t, at, k == CMS_AWS_MARK ? "tape mark" : "end of tape",
                                        err)) ||
-            (rc = tape_plc_finish(&t, err)) || k == CMS_AWS_END)
+            (rc = cms_tape_plc_finish(&t, err)) || k == CMS_AWS_END)
             break;
     }
     cms_aws_free(&a);
@@ -426,7 +426,7 @@ void cms_tape_writer_end(cms_tape_writer *t)
 }
 
 /* EBCDIC of an ASCII fileid field, blank-padded to n. */
-static int tape_put_name(unsigned char *p, const char *s, size_t n, diag *err)
+static int cms_tape_put_name(unsigned char *p, const char *s, size_t n, diag *err)
 {
     const cms_cp *cp;
     size_t i, k = strlen(s);
@@ -438,11 +438,11 @@ static int tape_put_name(unsigned char *p, const char *s, size_t n, diag *err)
     return 0;
 }
 
-static unsigned char tape_to_dcb(int v) { return (unsigned char)(((v / 10) << 4) | (v % 10)); }
+static unsigned char cms_tape_to_dcb(int v) { return (unsigned char)(((v / 10) << 4) | (v % 10)); }
 
 /* Date fields of a directory entry from "YYYY-MM-DD HH:MM[:SS]" (or now);
  * the EDF date (adt, may be NULL) only when the seconds are known. */
-static void tape_put_date(const char *date, unsigned char *adt, unsigned char *year,
+static void cms_tape_put_date(const char *date, unsigned char *adt, unsigned char *year,
                           unsigned char *mdhm, unsigned char *flags)
 {
     int y, mo, d, h, mi, s = 0, k = date ? sscanf(date, "%4d-%2d-%2d %2d:%2d:%2d", &y, &mo, &d,
@@ -464,17 +464,17 @@ static void tape_put_date(const char *date, unsigned char *adt, unsigned char *y
         *flags |= 0x08;
     year[0] = (unsigned char)(0xF0 + (y % 100) / 10);
     year[1] = (unsigned char)(0xF0 + y % 10);
-    mdhm[0] = tape_to_dcb(mo);
-    mdhm[1] = tape_to_dcb(d);
-    mdhm[2] = tape_to_dcb(h);
-    mdhm[3] = tape_to_dcb(mi);
+    mdhm[0] = cms_tape_to_dcb(mo);
+    mdhm[1] = cms_tape_to_dcb(d);
+    mdhm[2] = cms_tape_to_dcb(h);
+    mdhm[3] = cms_tape_to_dcb(mi);
     if (adt) {
-        adt[0] = tape_to_dcb(y % 100);
-        adt[1] = tape_to_dcb(mo);
-        adt[2] = tape_to_dcb(d);
-        adt[3] = tape_to_dcb(h);
-        adt[4] = tape_to_dcb(mi);
-        adt[5] = tape_to_dcb(s);
+        adt[0] = cms_tape_to_dcb(y % 100);
+        adt[1] = cms_tape_to_dcb(mo);
+        adt[2] = cms_tape_to_dcb(d);
+        adt[3] = cms_tape_to_dcb(h);
+        adt[4] = cms_tape_to_dcb(mi);
+        adt[5] = cms_tape_to_dcb(s);
     }
 }
 
@@ -500,20 +500,20 @@ int cms_tape_write_file(cms_tape_writer *t, const cms_tape_file *f, diag *err)
         unsigned char *p = blk + TAPE_HDR;
         size_t full = f->len / PLC_BLOCK, last = f->len % PLC_BLOCK;
         memcpy(blk, tape_hdr_plch, TAPE_HDR);
-        if ((rc = tape_put_name(p, f->id.fn, 8, err)) || (rc = tape_put_name(p + 8, f->id.ft, 8, err)) ||
-            (rc = tape_put_name(p + 24, (const char *)fm, 2, err)))
+        if ((rc = cms_tape_put_name(p, f->id.fn, 8, err)) || (rc = cms_tape_put_name(p + 8, f->id.ft, 8, err)) ||
+            (rc = cms_tape_put_name(p + 24, (const char *)fm, 2, err)))
             return rc;
-        tape_put_be(p + 20, (count & 0xFFFF) + 1, 2);      /* write pointer */
-        tape_put_be(p + 22, 1, 2);                          /* read pointer */
-        tape_put_be(p + 26, count & 0xFFFF, 2);
+        cms_tape_put_be(p + 20, (count & 0xFFFF) + 1, 2);      /* write pointer */
+        cms_tape_put_be(p + 22, 1, 2);                          /* read pointer */
+        cms_tape_put_be(p + 26, count & 0xFFFF, 2);
         p[30] = f->recfm == 'F' ? 0xC6 : 0xE5;
-        tape_put_be(p + 32, (unsigned long)f->lrecl, 4);
-        tape_put_be(p + 36, nblocks & 0xFFFF, 2);
-        tape_put_date(f->date, p + 62, p + 38, p + 16, p + 31);
-        tape_put_be(p + 40, (unsigned long)((last + TAPE_BLOCK - 1) / TAPE_BLOCK), 4);
-        tape_put_be(p + 44, (unsigned long)full, 4);
-        tape_put_be(p + 52, (unsigned long)nblocks, 4);
-        tape_put_be(p + 56, count, 4);
+        cms_tape_put_be(p + 32, (unsigned long)f->lrecl, 4);
+        cms_tape_put_be(p + 36, nblocks & 0xFFFF, 2);
+        cms_tape_put_date(f->date, p + 62, p + 38, p + 16, p + 31);
+        cms_tape_put_be(p + 40, (unsigned long)((last + TAPE_BLOCK - 1) / TAPE_BLOCK), 4);
+        cms_tape_put_be(p + 44, (unsigned long)full, 4);
+        cms_tape_put_be(p + 52, (unsigned long)nblocks, 4);
+        cms_tape_put_be(p + 56, count, 4);
         if ((rc = cms_aws_put(&t->aws, blk, TAPE_HDR + PLC_FST, err)))
             return rc;
         memcpy(blk, tape_hdr_plcd, TAPE_HDR);
@@ -540,19 +540,19 @@ int cms_tape_write_file(cms_tape_writer *t, const cms_tape_file *f, diag *err)
         unsigned char *p = blk + TAPE_HDR;
         memset(p, 0, TAPE_BLOCK);
         blk[4] = 0xD5;                                     /* 'N' */
-        tape_put_be(p, (count & 0xFFFF) + 1, 2);
-        tape_put_be(p + 2, 1, 2);
-        if ((rc = tape_put_name(p + 4, (const char *)fm, 2, err)) ||
-            (rc = tape_put_name(p + 64, f->id.fn, 8, err)) ||
-            (rc = tape_put_name(p + 72, f->id.ft, 8, err)) ||
-            (rc = tape_put_name(p + 80, (const char *)fm, 2, err)))
+        cms_tape_put_be(p, (count & 0xFFFF) + 1, 2);
+        cms_tape_put_be(p + 2, 1, 2);
+        if ((rc = cms_tape_put_name(p + 4, (const char *)fm, 2, err)) ||
+            (rc = cms_tape_put_name(p + 64, f->id.fn, 8, err)) ||
+            (rc = cms_tape_put_name(p + 72, f->id.ft, 8, err)) ||
+            (rc = cms_tape_put_name(p + 80, (const char *)fm, 2, err)))
             return rc;
-        tape_put_be(p + 6, count & 0xFFFF, 2);
+        cms_tape_put_be(p + 6, count & 0xFFFF, 2);
         p[10] = f->recfm == 'F' ? 0xC6 : 0xE5;
-        tape_put_be(p + 12, (unsigned long)f->lrecl, 4);
-        tape_put_be(p + 16, nblocks, 2);
-        tape_put_date(f->date, NULL, p + 18, p + 20, p + 11);
-        tape_put_be(p + 32, count, 4);                     /* the count beyond 65,535 */
+        cms_tape_put_be(p + 12, (unsigned long)f->lrecl, 4);
+        cms_tape_put_be(p + 16, nblocks, 2);
+        cms_tape_put_date(f->date, NULL, p + 18, p + 20, p + 11);
+        cms_tape_put_be(p + 32, count, 4);                     /* the count beyond 65,535 */
         return cms_aws_put(&t->aws, blk, TAPE_HDR + TAPE_BLOCK, err);
     }
 }

@@ -49,7 +49,7 @@ fx16 fx16_rsqrt(fx16 a)
 
 typedef struct u128 { uint64_t hi, lo; } u128;
 
-static u128 u128_mul64(uint64_t a, uint64_t b)
+static u128 fx_u128_mul64(uint64_t a, uint64_t b)
 {
     uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
     uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
@@ -60,7 +60,7 @@ static u128 u128_mul64(uint64_t a, uint64_t b)
     return r;
 }
 
-static u128 u128_add64(u128 a, uint64_t b)
+static u128 fx_u128_add64(u128 a, uint64_t b)
 {
     u128 r;
     r.lo = a.lo + b;
@@ -68,9 +68,9 @@ static u128 u128_add64(u128 a, uint64_t b)
     return r;
 }
 
-static int u128_ge(u128 a, u128 b) { return a.hi != b.hi ? a.hi > b.hi : a.lo >= b.lo; }
+static int fx_u128_ge(u128 a, u128 b) { return a.hi != b.hi ? a.hi > b.hi : a.lo >= b.lo; }
 
-static u128 u128_sub(u128 a, u128 b)
+static u128 fx_u128_sub(u128 a, u128 b)
 {
     u128 r;
     r.lo = a.lo - b.lo;
@@ -79,7 +79,7 @@ static u128 u128_sub(u128 a, u128 b)
 }
 
 /* Magnitude of a signed 64-bit value as unsigned, defined for INT64_MIN. */
-static uint64_t mag64(int64_t a) { return a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a; }
+static uint64_t fx_mag64(int64_t a) { return a < 0 ? (uint64_t)0 - (uint64_t)a : (uint64_t)a; }
 
 /* Applies sign and saturates an unsigned magnitude to fx32. */
 static fx32 fx32_signed(uint64_t m, int negative, int overflow)
@@ -107,14 +107,14 @@ fx32 fx32_from_double(double x)
 
 fx32 fx32_mul_portable(fx32 a, fx32 b)
 {
-    u128 p = u128_mul64(mag64(a), mag64(b));
-    p = u128_add64(p, (uint64_t)1 << 31);          /* round half away from zero */
+    u128 p = fx_u128_mul64(fx_mag64(a), fx_mag64(b));
+    p = fx_u128_add64(p, (uint64_t)1 << 31);          /* round half away from zero */
     /* result magnitude = p >> 32; it must fit in 64 bits */
     return fx32_signed((p.hi << 32) | (p.lo >> 32), (a < 0) != (b < 0), (p.hi >> 32) != 0);
 }
 
 /* Number of leading zero bits of v > 0. */
-static int clz64(uint64_t v)
+static int fx_clz64(uint64_t v)
 {
 #if defined(__GNUC__)
     return __builtin_clzll(v);
@@ -128,11 +128,11 @@ static int clz64(uint64_t v)
 /* Divides the 128-bit u1:u0 by v, where u1 < v so the quotient fits in 64
  * bits: schoolbook division in two 32-bit quotient digits after normalising
  * v (Knuth's algorithm D for a two-digit divisor). *rem gets the remainder. */
-static uint64_t div128by64(uint64_t u1, uint64_t u0, uint64_t v, uint64_t *rem)
+static uint64_t fx_div128by64(uint64_t u1, uint64_t u0, uint64_t v, uint64_t *rem)
 {
     const uint64_t base = (uint64_t)1 << 32;
     uint64_t vn1, vn0, un32, un21, un10, un1, un0, q1, q0, rhat;
-    int s = clz64(v);
+    int s = fx_clz64(v);
     v <<= s;
     vn1 = v >> 32;
     vn0 = v & 0xffffffffu;
@@ -161,7 +161,7 @@ static uint64_t div128by64(uint64_t u1, uint64_t u0, uint64_t v, uint64_t *rem)
 
 fx32 fx32_div_portable(fx32 a, fx32 b)
 {
-    uint64_t ma = mag64(a), mb = mag64(b), q, r;
+    uint64_t ma = fx_mag64(a), mb = fx_mag64(b), q, r;
     int neg = (a < 0) != (b < 0);
     if (b == 0) {
         fx_overflows++;
@@ -171,7 +171,7 @@ fx32 fx32_div_portable(fx32 a, fx32 b)
      * than 64 bits exactly when the high word reaches the divisor */
     if ((ma >> 32) >= mb)
         return fx32_signed(0, neg, 1);
-    q = div128by64(ma >> 32, ma << 32, mb, &r);
+    q = fx_div128by64(ma >> 32, ma << 32, mb, &r);
     if (r >= mb - r) {                   /* 2r >= mb: round half away from zero */
         if (q == UINT64_MAX) return fx32_signed(0, neg, 1);
         q++;
@@ -191,17 +191,17 @@ fx32 fx32_sqrt(fx32 a)
     v.lo = (uint64_t)a << 32;
     s = (uint64_t)sqrt((double)a * 4294967296.0);
     for (;;) {                           /* s*s <= v */
-        sq = u128_mul64(s, s);
-        if (u128_ge(v, sq)) break;
+        sq = fx_u128_mul64(s, s);
+        if (fx_u128_ge(v, sq)) break;
         s--;
     }
     for (;;) {                           /* (s+1)^2 > v */
-        sq = u128_mul64(s + 1, s + 1);
-        if (!u128_ge(v, sq)) break;
+        sq = fx_u128_mul64(s + 1, s + 1);
+        if (!fx_u128_ge(v, sq)) break;
         s++;
     }
     /* round to nearest: v - s^2 > s */
-    sq = u128_sub(v, u128_mul64(s, s));
+    sq = fx_u128_sub(v, fx_u128_mul64(s, s));
     if (sq.hi != 0 || sq.lo > s) s++;
     return (fx32)s;
 }

@@ -11,7 +11,7 @@
 
 /* Reads the new name of a texture or bump (name space `space`, `count` of
  * them defined so far, at most `limit`). */
-static int attrmap_new_name(scene_parser *p, scene_cur *c, int space, size_t count, int limit,
+static int scene_attrmap_new_name(scene_parser *p, scene_cur *c, int space, size_t count, int limit,
                             const char *what, char name[SCENE_NAME_MAX + 1], const scene_lex_tok **at)
 {
     int i;
@@ -28,14 +28,14 @@ static int attrmap_new_name(scene_parser *p, scene_cur *c, int space, size_t cou
 }
 
 /* TEXTURE name IMAGE file [REPEAT nu nv]: an RGB image over the face. */
-static int attrmap_texture(scene_parser *p, scene_cur *c)
+static int scene_attrmap_texture(scene_parser *p, scene_cur *c)
 {
     scene *s = p->s;
     const scene_lex_tok *kw = &c->st->tok[0], *at, *ft;
     scene_texture t;
     long rep[2] = { 1, 1 };
     memset(&t, 0, sizeof t);
-    if (attrmap_new_name(p, c, SCENE_NAMES_TEXTURE, s->ntextures, SCENE_PARSE_MAX_TEXTURES,
+    if (scene_attrmap_new_name(p, c, SCENE_NAMES_TEXTURE, s->ntextures, SCENE_PARSE_MAX_TEXTURES,
                          "textures", t.name, &at))
         return DIAG_INPUT;
     if (!scene_cur_accept(c, "IMAGE")) {
@@ -71,7 +71,7 @@ static int attrmap_texture(scene_parser *p, scene_cur *c)
 
 /* One FREQUENCY component: 0 (constant along that parameter, e.g. WAVES
  * ridges parallel to it) or 0.001..4096. */
-static int attrmap_freq(scene_cur *c, double *f, const scene_lex_tok **at)
+static int scene_attrmap_freq(scene_cur *c, double *f, const scene_lex_tok **at)
 {
     if (scene_cur_number(c, f, at))
         return DIAG_INPUT;
@@ -82,7 +82,7 @@ static int attrmap_freq(scene_cur *c, double *f, const scene_lex_tok **at)
 
 /* BUMP name pattern AMPLITUDE a [FREQUENCY fu fv] [SEED n]; options in
  * any order, each at most once. */
-static int attrmap_bump(scene_parser *p, scene_cur *c)
+static int scene_attrmap_bump(scene_parser *p, scene_cur *c)
 {
     static const char *const patterns[] = { "WAVES", "BUMPS", "DIMPLES", "NOISE", "GROOVES", "IMAGE", NULL };
     scene *s = p->s;
@@ -91,7 +91,7 @@ static int attrmap_bump(scene_parser *p, scene_cur *c)
     int seen_amp = 0, seen_freq = 0, seen_seed = 0, seen_width = 0, seen_local = 0, pat, r;
     scene_bump b;
     memset(&b, 0, sizeof b);
-    if (attrmap_new_name(p, c, SCENE_NAMES_BUMP, s->nbumps, SCENE_PARSE_MAX_BUMPS, "bumps",
+    if (scene_attrmap_new_name(p, c, SCENE_NAMES_BUMP, s->nbumps, SCENE_PARSE_MAX_BUMPS, "bumps",
                          b.name, &at) ||
         scene_cur_choice(c, patterns, &pat))
         return DIAG_INPUT;
@@ -113,7 +113,7 @@ static int attrmap_bump(scene_parser *p, scene_cur *c)
             if (b.amplitude == 0)
                 return scene_cur_error(c, at, "AMPLITUDE must not be zero");
         } else if ((r = scene_parse_option(c, "FREQUENCY", &seen_freq)) != 0) {
-            if (r < 0 || attrmap_freq(c, &b.freq[0], &at) || attrmap_freq(c, &b.freq[1], &at))
+            if (r < 0 || scene_attrmap_freq(c, &b.freq[0], &at) || scene_attrmap_freq(c, &b.freq[1], &at))
                 return DIAG_INPUT;
             if (b.freq[0] == 0 && b.freq[1] == 0)
                 return scene_cur_error(c, at, "FREQUENCY 0 0 leaves the surface flat");
@@ -156,7 +156,7 @@ static int attrmap_bump(scene_parser *p, scene_cur *c)
 }
 
 const scene_parse_stmt scene_attrmap_stmts[] = {
-    { "TEXTURE", "TEXTURE", attrmap_texture },
-    { "BUMP", "BUMP", attrmap_bump },
+    { "TEXTURE", "TEXTURE", scene_attrmap_texture },
+    { "BUMP", "BUMP", scene_attrmap_bump },
     { NULL, NULL, NULL }
 };

@@ -15,7 +15,7 @@ static int scene_pds_cells_mortar(scene_parser *p, scene_cur *c, double *width, 
 }
 
 /* The tiling's options: each at most once, CYCLE and HASH not both. */
-static int scene_pds_tiling_options(scene_parser *p, scene_cur *c, pds_tiling *t)
+static int scene_pds_cells_tiling_options(scene_parser *p, scene_cur *c, pds_tiling *t)
 {
     int seen_off = 0, seen_mortar = 0, seen_cycle = 0, seen_hash = 0, r, i;
     while (!scene_cur_at_end(c)) {
@@ -59,7 +59,7 @@ static int scene_pds_tiling_options(scene_parser *p, scene_cur *c, pds_tiling *t
 
 /* PDS name TILING shape w [h] options: shapes in pds_tile_shape order;
  * SQUARE and BRICK take a height (default: the width). */
-static int scene_pds_tiling_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
+static int scene_pds_cells_tiling_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 {
     static const char *const shapes[] = { "SQUARE", "BRICK", "HEX", "TRIANGLE", NULL };
     pds_tiling *t = &b->map->def.tiling;
@@ -71,7 +71,7 @@ static int scene_pds_tiling_open(scene_parser *p, scene_cur *c, scene_pds_block 
     if ((t->shape == PDS_TILE_SQUARE || t->shape == PDS_TILE_BRICK) &&
         scene_cur_numeric(scene_cur_peek(c)) && scene_cur_number(c, &t->size[1], NULL))
         return DIAG_INPUT;
-    if (scene_pds_tiling_options(p, c, t))
+    if (scene_pds_cells_tiling_options(p, c, t))
         return DIAG_INPUT;
     p->block.body = scene_pds_tiling_body;
     p->block.kind = "TILING";
@@ -79,7 +79,7 @@ static int scene_pds_tiling_open(scene_parser *p, scene_cur *c, scene_pds_block 
 }
 
 /* TILES a b ...: the tile attributes the rule chooses from (once). */
-static int scene_pds_tiling_tiles(scene_parser *p, scene_cur *c)
+static int scene_pds_cells_tiling_tiles(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
     const scene_lex_tok *kw = &c->st->tok[0];
@@ -97,7 +97,7 @@ static int scene_pds_tiling_tiles(scene_parser *p, scene_cur *c)
 }
 
 /* PDS name MOSAIC [MORTAR width attr]. */
-static int scene_pds_mosaic_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
+static int scene_pds_cells_mosaic_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 {
     pds_mosaic *m = &b->map->def.mosaic;
     const scene_lex_tok *t = scene_cur_peek(c);
@@ -112,7 +112,7 @@ static int scene_pds_mosaic_open(scene_parser *p, scene_cur *c, scene_pds_block 
 
 /* Refuses n more seeds beyond the mosaic limit (checked before any is
  * added, so SCATTER cannot make the deck's size grow without bound). */
-static int scene_pds_mosaic_room(scene_cur *c, const pds_mosaic *m, long n, const scene_lex_tok *at)
+static int scene_pds_cells_mosaic_room(scene_cur *c, const pds_mosaic *m, long n, const scene_lex_tok *at)
 {
     if ((size_t)n > (size_t)PDS_MAX_SEEDS - m->nseeds)
         return scene_cur_error(c, at, "the mosaic would have more than %ld seeds", PDS_MAX_SEEDS);
@@ -120,13 +120,13 @@ static int scene_pds_mosaic_room(scene_cur *c, const pds_mosaic *m, long n, cons
 }
 
 /* SEED u v attr. */
-static int scene_pds_mosaic_seed(scene_parser *p, scene_cur *c)
+static int scene_pds_cells_mosaic_seed(scene_parser *p, scene_cur *c)
 {
     pds_def *d = &scene_pds_current(p)->map->def;
     const scene_lex_tok *kw = &c->st->tok[0];
     double uv[2];
     int32_t id;
-    if (scene_pds_mosaic_room(c, &d->mosaic, 1, kw) || scene_cur_numbers(c, uv, 2) ||
+    if (scene_pds_cells_mosaic_room(c, &d->mosaic, 1, kw) || scene_cur_numbers(c, uv, 2) ||
         scene_pds_region(p, c, &id) || scene_cur_finish(c))
         return DIAG_INPUT;
     return pds_mosaic_seed(d, uv[0], uv[1], id) < 0 ? scene_parse_oom(p, kw) : 0;
@@ -134,7 +134,7 @@ static int scene_pds_mosaic_seed(scene_parser *p, scene_cur *c)
 
 /* splitmix64 (Steele, Lea and Flood 2014): the same stream on every
  * platform, unlike rand(). */
-static uint64_t scene_pds_mosaic_next(uint64_t *x)
+static uint64_t scene_pds_cells_mosaic_next(uint64_t *x)
 {
     uint64_t z = (*x += 0x9E3779B97F4A7C15ULL);
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
@@ -144,7 +144,7 @@ static uint64_t scene_pds_mosaic_next(uint64_t *x)
 
 /* SCATTER n seed a b ...: n seeds uniform in [0,1) x [0,1) (53-bit
  * coordinates from the stream of `seed`), attributes cycling a, b, .... */
-static int scene_pds_mosaic_scatter(scene_parser *p, scene_cur *c)
+static int scene_pds_cells_mosaic_scatter(scene_parser *p, scene_cur *c)
 {
     pds_def *d = &scene_pds_current(p)->map->def;
     const scene_lex_tok *kw = &c->st->tok[0], *nt = scene_cur_peek(c);
@@ -152,32 +152,32 @@ static int scene_pds_mosaic_scatter(scene_parser *p, scene_cur *c)
     size_t nids, i;
     long n, seed;
     uint64_t x;
-    if (scene_cur_int(c, "count", 1, 65536, &n) || scene_pds_mosaic_room(c, &d->mosaic, n, nt) ||
+    if (scene_cur_int(c, "count", 1, 65536, &n) || scene_pds_cells_mosaic_room(c, &d->mosaic, n, nt) ||
         scene_cur_int(c, "seed", 0, SCENE_PARSE_MAX_SEED, &seed) ||
         scene_pds_regions(p, c, 0, ids, &nids))
         return DIAG_INPUT;
     x = (uint64_t)seed;
     for (i = 0; i < (size_t)n; i++) {
-        double u = (double)(scene_pds_mosaic_next(&x) >> 11) * 0x1p-53;
-        double v = (double)(scene_pds_mosaic_next(&x) >> 11) * 0x1p-53;
+        double u = (double)(scene_pds_cells_mosaic_next(&x) >> 11) * 0x1p-53;
+        double v = (double)(scene_pds_cells_mosaic_next(&x) >> 11) * 0x1p-53;
         if (pds_mosaic_seed(d, u, v, ids[i % nids]) < 0)
             return scene_parse_oom(p, kw);
     }
     return 0;
 }
 
-const scene_pds_kind scene_pds_tiling = { scene_pds_tiling_open, NULL };
-const scene_pds_kind scene_pds_mosaic = { scene_pds_mosaic_open, NULL };
+const scene_pds_kind scene_pds_tiling = { scene_pds_cells_tiling_open, NULL };
+const scene_pds_kind scene_pds_mosaic = { scene_pds_cells_mosaic_open, NULL };
 
 const scene_parse_stmt scene_pds_tiling_body[] = {
-    { "TILES", "TILES", scene_pds_tiling_tiles },
+    { "TILES", "TILES", scene_pds_cells_tiling_tiles },
     { "END", "END", scene_pds_end },
     { NULL, NULL, NULL }
 };
 
 const scene_parse_stmt scene_pds_mosaic_body[] = {
-    { "SEED", "SEED", scene_pds_mosaic_seed },
-    { "SCATTER", "SCATTER", scene_pds_mosaic_scatter },
+    { "SEED", "SEED", scene_pds_cells_mosaic_seed },
+    { "SCATTER", "SCATTER", scene_pds_cells_mosaic_scatter },
     { "END", "END", scene_pds_end },
     { NULL, NULL, NULL }
 };

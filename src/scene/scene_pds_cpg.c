@@ -13,7 +13,7 @@
 enum { CPG_RECT, CPG_ELLIPSE, CPG_CIRCLE, CPG_POLYGON };
 
 /* 1 if t starts the items after a node's own operands. */
-static int cpg_tail_starts(const scene_lex_tok *t)
+static int scene_pds_cpg_tail_starts(const scene_lex_tok *t)
 {
     return scene_cur_is(t, "ATTR") || scene_cur_is(t, "TRANSLATE") || scene_cur_is(t, "ROTATE") ||
            scene_cur_is(t, "SCALE") || scene_cur_is(t, "SHEAR");
@@ -21,7 +21,7 @@ static int cpg_tail_starts(const scene_lex_tok *t)
 
 /* Reads the rest of a node statement: placements, composed onto node in
  * the order written, and (with_attr) at most one ATTR region item. */
-static int cpg_tail(scene_parser *p, scene_cur *c, pds_def *d, size_t node, int with_attr)
+static int scene_pds_cpg_tail(scene_parser *p, scene_cur *c, pds_def *d, size_t node, int with_attr)
 {
     int seen = 0, r;
     double a[2];
@@ -59,7 +59,7 @@ static int cpg_tail(scene_parser *p, scene_cur *c, pds_def *d, size_t node, int 
 }
 
 /* Reads a node name not yet defined in this block. */
-static int cpg_new_name(scene_pds_block *b, scene_cur *c, char name[SCENE_NAME_MAX + 1],
+static int scene_pds_cpg_new_name(scene_pds_block *b, scene_cur *c, char name[SCENE_NAME_MAX + 1],
                         const scene_lex_tok **at)
 {
     const pds_cpg *g = &b->map->def.cpg;
@@ -77,7 +77,7 @@ static int cpg_new_name(scene_pds_block *b, scene_cur *c, char name[SCENE_NAME_M
 }
 
 /* Names node i, just returned by a builder (-1: out of memory). */
-static int cpg_add(scene_parser *p, scene_pds_block *b, long i, const char *name,
+static int scene_pds_cpg_add(scene_parser *p, scene_pds_block *b, long i, const char *name,
                    const scene_lex_tok *at)
 {
     if (i < 0 || scene_names_add(&b->names, SCENE_NAMES_NODE, name, (int)i))
@@ -86,7 +86,7 @@ static int cpg_add(scene_parser *p, scene_pds_block *b, long i, const char *name
 }
 
 /* The node a name in this block stands for. */
-static int cpg_ref(scene_pds_block *b, scene_cur *c, size_t *node)
+static int scene_pds_cpg_ref(scene_pds_block *b, scene_cur *c, size_t *node)
 {
     char name[SCENE_NAME_MAX + 1];
     const scene_lex_tok *t;
@@ -102,7 +102,7 @@ static int cpg_ref(scene_pds_block *b, scene_cur *c, size_t *node)
 
 /* RECT u0 v0 u1 v1, ELLIPSE cu cv ru rv, CIRCLE cu cv r, POLYGON u v ...:
  * a leaf, region NONE unless ATTR says otherwise. */
-static int cpg_leaf(scene_parser *p, scene_cur *c, int shape)
+static int scene_pds_cpg_leaf(scene_parser *p, scene_cur *c, int shape)
 {
     scene_pds_block *b = scene_pds_current(p);
     pds_def *d = &b->map->def;
@@ -112,7 +112,7 @@ static int cpg_leaf(scene_parser *p, scene_cur *c, int shape)
     double v[SCENE_LEX_MAX_ITEMS];
     size_t n = 0;
     long i;
-    if (cpg_new_name(b, c, name, &at))
+    if (scene_pds_cpg_new_name(b, c, name, &at))
         return DIAG_INPUT;
     switch (shape) {
     case CPG_RECT:
@@ -136,20 +136,20 @@ static int cpg_leaf(scene_parser *p, scene_cur *c, int shape)
                 return DIAG_INPUT;
         i = pds_cpg_polygon(d, v, n / 2, PDS_NONE, loc);
     }
-    if (cpg_add(p, b, i, name, at))
+    if (scene_pds_cpg_add(p, b, i, name, at))
         return DIAG_INPUT;
-    return cpg_tail(p, c, d, (size_t)i, 1);
+    return scene_pds_cpg_tail(p, c, d, (size_t)i, 1);
 }
 
-static int cpg_rect(scene_parser *p, scene_cur *c) { return cpg_leaf(p, c, CPG_RECT); }
-static int cpg_ellipse(scene_parser *p, scene_cur *c) { return cpg_leaf(p, c, CPG_ELLIPSE); }
-static int cpg_circle(scene_parser *p, scene_cur *c) { return cpg_leaf(p, c, CPG_CIRCLE); }
-static int cpg_polygon(scene_parser *p, scene_cur *c) { return cpg_leaf(p, c, CPG_POLYGON); }
+static int scene_pds_cpg_rect(scene_parser *p, scene_cur *c) { return scene_pds_cpg_leaf(p, c, CPG_RECT); }
+static int scene_pds_cpg_ellipse(scene_parser *p, scene_cur *c) { return scene_pds_cpg_leaf(p, c, CPG_ELLIPSE); }
+static int scene_pds_cpg_circle(scene_parser *p, scene_cur *c) { return scene_pds_cpg_leaf(p, c, CPG_CIRCLE); }
+static int scene_pds_cpg_polygon(scene_parser *p, scene_cur *c) { return scene_pds_cpg_leaf(p, c, CPG_POLYGON); }
 
 /* UNION | INTER | DIFF node operand...: the operands are nodes of this
  * block, in priority order; the region comes from them unless ATTR
  * overrides it. */
-static int cpg_operator(scene_parser *p, scene_cur *c, pds_cpg_op op)
+static int scene_pds_cpg_operator(scene_parser *p, scene_cur *c, pds_cpg_op op)
 {
     scene_pds_block *b = scene_pds_current(p);
     pds_def *d = &b->map->def;
@@ -157,23 +157,23 @@ static int cpg_operator(scene_parser *p, scene_cur *c, pds_cpg_op op)
     const scene_lex_tok *at;
     size_t ops[SCENE_LEX_MAX_ITEMS], n = 0;
     long i;
-    if (cpg_new_name(b, c, name, &at))
+    if (scene_pds_cpg_new_name(b, c, name, &at))
         return DIAG_INPUT;
-    while (!scene_cur_at_end(c) && !cpg_tail_starts(scene_cur_peek(c)))
-        if (cpg_ref(b, c, &ops[n++]))
+    while (!scene_cur_at_end(c) && !scene_pds_cpg_tail_starts(scene_cur_peek(c)))
+        if (scene_pds_cpg_ref(b, c, &ops[n++]))
             return DIAG_INPUT;
     i = pds_cpg_op_node(d, op, ops, n, PDS_INHERIT, scene_parse_loc(&c->st->tok[0]));
-    if (cpg_add(p, b, i, name, at))
+    if (scene_pds_cpg_add(p, b, i, name, at))
         return DIAG_INPUT;
-    return cpg_tail(p, c, d, (size_t)i, 1);
+    return scene_pds_cpg_tail(p, c, d, (size_t)i, 1);
 }
 
-static int cpg_union(scene_parser *p, scene_cur *c) { return cpg_operator(p, c, PDS_CPG_UNION); }
-static int cpg_inter(scene_parser *p, scene_cur *c) { return cpg_operator(p, c, PDS_CPG_INTER); }
-static int cpg_diff(scene_parser *p, scene_cur *c) { return cpg_operator(p, c, PDS_CPG_DIFF); }
+static int scene_pds_cpg_union(scene_parser *p, scene_cur *c) { return scene_pds_cpg_operator(p, c, PDS_CPG_UNION); }
+static int scene_pds_cpg_inter(scene_parser *p, scene_cur *c) { return scene_pds_cpg_operator(p, c, PDS_CPG_INTER); }
+static int scene_pds_cpg_diff(scene_parser *p, scene_cur *c) { return scene_pds_cpg_operator(p, c, PDS_CPG_DIFF); }
 
 /* NEST node pdsname: a PDS closed earlier over the node's unit square. */
-static int cpg_nest(scene_parser *p, scene_cur *c)
+static int scene_pds_cpg_nest(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
     pds_def *d = &b->map->def;
@@ -181,16 +181,16 @@ static int cpg_nest(scene_parser *p, scene_cur *c)
     const scene_lex_tok *at;
     int m;
     long i;
-    if (cpg_new_name(b, c, name, &at) || scene_parse_ref(p, c, SCENE_NAMES_PDS, &m))
+    if (scene_pds_cpg_new_name(b, c, name, &at) || scene_parse_ref(p, c, SCENE_NAMES_PDS, &m))
         return DIAG_INPUT;
     i = pds_cpg_nested(d, &p->s->maps[m]->def, scene_parse_loc(&c->st->tok[0]));
-    if (cpg_add(p, b, i, name, at))
+    if (scene_pds_cpg_add(p, b, i, name, at))
         return DIAG_INPUT;
-    return cpg_tail(p, c, d, (size_t)i, 0);
+    return scene_pds_cpg_tail(p, c, d, (size_t)i, 0);
 }
 
 /* ROOT node: the node the CPG is (default: the last one). */
-static int cpg_root(scene_parser *p, scene_cur *c)
+static int scene_pds_cpg_root(scene_parser *p, scene_cur *c)
 {
     scene_pds_block *b = scene_pds_current(p);
     const scene_lex_tok *kw = &c->st->tok[0];
@@ -198,7 +198,7 @@ static int cpg_root(scene_parser *p, scene_cur *c)
     if (b->root >= 0)
         return diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
                        "ROOT given twice (first on record %ld)", b->root_rec);
-    if (cpg_ref(b, c, &node) || scene_cur_finish(c))
+    if (scene_pds_cpg_ref(b, c, &node) || scene_cur_finish(c))
         return DIAG_INPUT;
     b->root = (long)node;
     b->root_rec = kw->line;
@@ -206,7 +206,7 @@ static int cpg_root(scene_parser *p, scene_cur *c)
 }
 
 /* A ROOT applies at END, as later nodes would otherwise become the root. */
-static int cpg_finish(scene_parser *p, scene_pds_block *b)
+static int scene_pds_cpg_finish(scene_parser *p, scene_pds_block *b)
 {
     (void)p;
     if (b->root >= 0)
@@ -215,7 +215,7 @@ static int cpg_finish(scene_parser *p, scene_pds_block *b)
 }
 
 /* PDS name CPG: no options. */
-static int cpg_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
+static int scene_pds_cpg_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 {
     (void)c;
     (void)b;
@@ -224,21 +224,21 @@ static int cpg_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
     return 0;
 }
 
-const scene_pds_kind scene_pds_cpg = { cpg_open, cpg_finish };
+const scene_pds_kind scene_pds_cpg = { scene_pds_cpg_open, scene_pds_cpg_finish };
 
 const scene_parse_stmt scene_pds_cpg_body[] = {
-    { "RECT", "RECT", cpg_rect },
-    { "ELLIPSE", "ELLIPSE", cpg_ellipse },
-    { "CIRCLE", "CIRCLE", cpg_circle },
-    { "POLYGON", "POLYGON", cpg_polygon },
-    { "UNION", "UNION", cpg_union },
-    { "INTER", "INTER", cpg_inter },
-    { "INTERSECT", "INTER", cpg_inter },
-    { "INTERSECTION", "INTER", cpg_inter },
-    { "DIFF", "DIFF", cpg_diff },
-    { "DIFFERENCE", "DIFF", cpg_diff },
-    { "NEST", "NEST", cpg_nest },
-    { "ROOT", "ROOT", cpg_root },
+    { "RECT", "RECT", scene_pds_cpg_rect },
+    { "ELLIPSE", "ELLIPSE", scene_pds_cpg_ellipse },
+    { "CIRCLE", "CIRCLE", scene_pds_cpg_circle },
+    { "POLYGON", "POLYGON", scene_pds_cpg_polygon },
+    { "UNION", "UNION", scene_pds_cpg_union },
+    { "INTER", "INTER", scene_pds_cpg_inter },
+    { "INTERSECT", "INTER", scene_pds_cpg_inter },
+    { "INTERSECTION", "INTER", scene_pds_cpg_inter },
+    { "DIFF", "DIFF", scene_pds_cpg_diff },
+    { "DIFFERENCE", "DIFF", scene_pds_cpg_diff },
+    { "NEST", "NEST", scene_pds_cpg_nest },
+    { "ROOT", "ROOT", scene_pds_cpg_root },
     { "END", "END", scene_pds_end },
     { NULL, NULL, NULL }
 };

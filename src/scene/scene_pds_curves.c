@@ -7,7 +7,7 @@
  * membership with Ballard's strip trees (pds_strip.h) built to width w. */
 #include "scene/scene_pds.h"
 
-static int curves_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
+static int scene_pds_curves_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 {
     pds_curves *cv = &b->map->def.curves;
     const scene_lex_tok *t = scene_cur_peek(c), *at;
@@ -30,7 +30,7 @@ static int curves_open(scene_parser *p, scene_cur *c, scene_pds_block *b)
 }
 
 /* attr, then (u,v) pairs to the end of the statement. */
-static int curves_add(scene_parser *p, scene_cur *c, int bspline)
+static int scene_pds_curves_add(scene_parser *p, scene_cur *c, int bspline)
 {
     pds_def *d = &scene_pds_current(p)->map->def;
     const scene_lex_tok *kw = &c->st->tok[0];
@@ -47,14 +47,14 @@ static int curves_add(scene_parser *p, scene_cur *c, int bspline)
     return 0;
 }
 
-static int curves_bspline(scene_parser *p, scene_cur *c) { return curves_add(p, c, 1); }
-static int curves_polyline(scene_parser *p, scene_cur *c) { return curves_add(p, c, 0); }
+static int scene_pds_curves_bspline(scene_parser *p, scene_cur *c) { return scene_pds_curves_add(p, c, 1); }
+static int scene_pds_curves_polyline(scene_parser *p, scene_cur *c) { return scene_pds_curves_add(p, c, 0); }
 
-const scene_pds_kind scene_pds_curves = { curves_open, NULL };
+const scene_pds_kind scene_pds_curves = { scene_pds_curves_open, NULL };
 
 const scene_parse_stmt scene_pds_curves_body[] = {
-    { "BSPLINE", "BSPLINE", curves_bspline },
-    { "POLYLINE", "POLYLINE", curves_polyline },
+    { "BSPLINE", "BSPLINE", scene_pds_curves_bspline },
+    { "POLYLINE", "POLYLINE", scene_pds_curves_polyline },
     { "END", "END", scene_pds_end },
     { NULL, NULL, NULL }
 };
