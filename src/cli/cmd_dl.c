@@ -93,6 +93,7 @@ static int dl_cmd_encode(int argc, char **argv)
     const char *in = NULL, *out = NULL;
     dl_image_opts o;
     dl_image_stats st;
+    image_limits lim;
     image img;
     diag err;
     int i, stats = 0, rc;
@@ -123,8 +124,13 @@ static int dl_cmd_encode(int argc, char **argv)
     if (!in || !out)
         return cli_usage_error("dl", "encode needs IN.png and OUT.dl5080");
     diag_init(&err);
-    if ((rc = image_read_png(in, 3, &img, &err)) == 0) {
-        rc = dl_image_write(out, &img, &o, &st, &err);
+    lim.max_side = DL_MAX_SIDE;
+    lim.max_pixels = (size_t)DL_MAX_SIDE * DL_MAX_SIDE;
+    /* the size is refused from the PNG header; the output is checked before
+     * reading (its directory) and after (not the input) */
+    if ((rc = outfile_check(out, &err)) == 0 && (rc = image_read_png_limit(in, 3, &lim, &img, &err)) == 0) {
+        if ((rc = outfile_check(out, &err)) == 0)
+            rc = dl_image_write(out, &img, &o, &st, &err);
         image_free(&img);
     }
     if (rc) {

@@ -72,8 +72,11 @@ int cmd_dl2png(int argc, char **argv)
     if (!(b = dl_backend_find(bname)))
         return cli_usage_error("dl2png", "--backend: '%s' is not png, osmesa or egl", bname);
     diag_init(&err);
-    if ((rc = infile_read_all(in, DL2PNG_MAX_INPUT, &data, &len, &err)) == 0) {
-        if ((rc = dl_render((const uint8_t *)data, len, in, b, &ro, &frame, &err)) == 0) {
+    if ((rc = outfile_check(out, &err)) == 0 &&
+        (rc = infile_read_all(in, DL2PNG_MAX_INPUT, &data, &len, &err)) == 0) {
+        /* now that the input is known: an output that is the input is refused before drawing */
+        if ((rc = outfile_check(out, &err)) == 0 &&
+            (rc = dl_render((const uint8_t *)data, len, in, b, &ro, &frame, &err)) == 0) {
             rc = dl_frame_write_png(out, &frame, truecolor, &err);
             dl_frame_free(&frame);
         }

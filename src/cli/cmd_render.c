@@ -7,6 +7,7 @@
 #include "render/outline.h"
 #include "display5080/dl_image.h"
 #include "util/mem.h"
+#include "util/outfile.h"
 #include <omp.h>
 #include <string.h>
 
@@ -109,6 +110,7 @@ int cmd_render(int argc, char **argv)
 {
     const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *mode = "q16", *v;
     char *png_path = NULL, *dl_path = NULL;
+    const char *outs[2];
     const render_ops *ops = NULL;
     render_opts o;
     render_stats st;
@@ -197,10 +199,16 @@ int cmd_render(int argc, char **argv)
         return status;
     }
 
-    /* Resolve every name before the long work, so a bad fileid fails fast. */
+    /* Resolve and check every name before the long work: a bad fileid, a
+     * missing or read-only directory, two outputs on one file or an output
+     * that is an input (the deck or an image it names) fails fast. */
     if ((out_png && cli_output_path(&files, out_png, &png_path, &err))
-        || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
-        || cli_scene_load(&files, scene_name, &sc, &err))
+        || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err)))
+        goto done;
+    outs[0] = png_path;
+    outs[1] = dl_path;
+    if (outfile_check_set(outs, 2, &err) || cli_scene_load(&files, scene_name, &sc, &err)
+        || outfile_check_set(outs, 2, &err))
         goto done;
     if (out_dl && ((o.width ? o.width : sc->view.width) > 4096
                    || (o.height ? o.height : sc->view.height) > 4096)) {
@@ -212,10 +220,14 @@ int cmd_render(int argc, char **argv)
     if (render_scene(sc, ops, &o, &fb, &st, &err))
         goto done;
     rendered = 1;
-    if (png_path && image_write_png(png_path, &fb.img, &err))
+    /* both outputs or neither */
+    outfile_batch_begin();
+    if ((png_path && image_write_png(png_path, &fb.img, &err))
+        || (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
+        || outfile_batch_commit(&err)) {
+        outfile_batch_abort();
         goto done;
-    if (dl_path && render_write_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
-        goto done;
+    }
     if (stats) {
         printf("numeric=%s\n", ops->name);
         render_stats_print(stdout, &st);

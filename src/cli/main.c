@@ -1,5 +1,6 @@
 /* main — maprt's entry point: dispatches git-style subcommands. */
 #include "cli/cli.h"
+#include "util/outfile.h"
 #include <string.h>
 
 typedef struct cli_command {
@@ -42,8 +43,20 @@ int main(int argc, char **argv)
         return CLI_OK;
     }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name))
-            return commands[i].run(argc - 1, argv + 1);
+        if (!strcmp(argv[1], commands[i].name)) {
+            int rc;
+            diag err;
+            outfile_track_inputs();   /* no output of this command replaces one of its inputs */
+            rc = commands[i].run(argc - 1, argv + 1);
+            diag_init(&err);
+            /* output that stdio still held is written now: a full disk or
+             * /dev/full must not end in exit 0 */
+            if (outfile_close_stdout(&err) && rc == CLI_OK) {
+                diag_print(stderr, &err);
+                rc = CLI_IO;
+            }
+            return rc;
+        }
     fprintf(stderr, "maprt: error: unknown command '%s'\n", argv[1]);
     usage(stderr);
     return CLI_USAGE;

@@ -2,7 +2,9 @@
 #include "render/render.h"
 #include "num/fx.h"
 #include "util/mem.h"
+#include <errno.h>
 #include <omp.h>
+#include <pthread.h>
 #include <string.h>
 
 const render_ops *render_ops_find(const char *name)
@@ -49,16 +51,88 @@ void render_stats_print(FILE *f, const render_stats *st)
         fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
 }
 
+/* The tile loop's shared state: workers take the next tile under the lock. */
+typedef struct render_job {
+    const render_ops *ops;
+    const render_opts *opt;
+    void *cs;
+    render_fb *out;
+    long ntx, ntiles, next, done;
+    pthread_mutex_t lock;
+} render_job;
+
+typedef struct render_worker {
+    render_job *job;
+    void *tc;
+    render_stats st;
+    pthread_t id;
+} render_worker;
+
+static void *render_worker_run(void *arg)
+{
+    render_worker *w = arg;
+    render_job *j = w->job;
+    const render_opts *o = j->opt;
+    unsigned long before = fx_overflows;
+    for (;;) {
+        long k;
+        int x0, y0, x1, y1;
+        pthread_mutex_lock(&j->lock);
+        k = j->next < j->ntiles ? j->next++ : -1;
+        pthread_mutex_unlock(&j->lock);
+        if (k < 0)
+            break;
+        x0 = (int)(k % j->ntx) * RENDER_TILE;
+        y0 = (int)(k / j->ntx) * RENDER_TILE;
+        x1 = x0 + RENDER_TILE > o->width ? o->width : x0 + RENDER_TILE;
+        y1 = y0 + RENDER_TILE > o->height ? o->height : y0 + RENDER_TILE;
+        j->ops->render_tile(j->cs, w->tc, o, x0, y0, x1, y1, j->out, &w->st);
+        if (o->progress) {
+            pthread_mutex_lock(&j->lock);
+            j->done++;
+            o->progress(o->progress_ctx, j->done, j->ntiles);
+            pthread_mutex_unlock(&j->lock);
+        }
+    }
+    w->st.fx_overflows += fx_overflows - before;   /* fx_overflows is per thread */
+    return NULL;
+}
+
+/* Runs the tiles on nthreads threads (the calling one among them). A thread
+ * that cannot be created is an error (DIAG_IO), reported after the threads
+ * already started have finished. */
+static int render_tiles(render_job *job, render_worker *w, int nthreads, diag *err)
+{
+    int i, started, rc = 0;
+    for (started = 1; started < nthreads; started++)
+        if ((rc = pthread_create(&w[started].id, NULL, render_worker_run, &w[started])) != 0)
+            break;
+    if (rc) {   /* stop the others at their next tile */
+        pthread_mutex_lock(&job->lock);
+        job->next = job->ntiles;
+        pthread_mutex_unlock(&job->lock);
+    } else {
+        render_worker_run(&w[0]);
+    }
+    for (i = 1; i < started; i++)
+        pthread_join(w[i].id, NULL);
+    if (rc)
+        return diag_at(err, DIAG_IO, "", 0, 0, "cannot create render thread %d of %d: %s", started + 1,
+                       nthreads, strerror(rc));
+    return 0;
+}
+
 int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
                  render_fb *fb, render_stats *st, diag *err)
 {
     render_opts opt = *o;
     render_fb out;
     render_stats total;
-    void *cs = NULL, **tcs = NULL;
+    render_job job;
+    render_worker *w = NULL;
+    void *cs = NULL;
     unsigned long ov0;
     double t0;
-    long ntx, nty, ntiles, done = 0;
     int i, status = 0, nthreads;
 
     memset(&total, 0, sizeof total);
@@ -82,55 +156,44 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     if ((status = image_alloc(&out.img, opt.width, opt.height, 3, "render", err)) != 0)
         goto done;
     out.pid = mem_calloc((size_t)opt.width * (size_t)opt.height, sizeof *out.pid);
-    tcs = mem_calloc((size_t)nthreads, sizeof *tcs);
-    if (!out.pid || !tcs) {
+    w = mem_calloc((size_t)nthreads, sizeof *w);
+    if (!out.pid || !w) {
         status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for the framebuffer");
         goto done;
     }
-    for (i = 0; i < nthreads; i++)
-        if (ops->thread_new(cs, &tcs[i])) {
+    memset(&job, 0, sizeof job);
+    for (i = 0; i < nthreads; i++) {
+        w[i].job = &job;
+        if (ops->thread_new(cs, &w[i].tc)) {
             status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for thread contexts");
             goto done;
         }
+    }
     total.fx_overflows += fx_overflows - ov0;
 
-    ntx = (opt.width + RENDER_TILE - 1) / RENDER_TILE;
-    nty = (opt.height + RENDER_TILE - 1) / RENDER_TILE;
-    ntiles = ntx * nty;
-    t0 = omp_get_wtime();
-#pragma omp parallel num_threads(nthreads)
-    {
-        render_stats mine;
-        unsigned long before = fx_overflows;
-        int me = omp_get_thread_num();
-        long k;
-        memset(&mine, 0, sizeof mine);
-#pragma omp for schedule(dynamic, 1)
-        for (k = 0; k < ntiles; k++) {
-            int x0 = (int)(k % ntx) * RENDER_TILE, y0 = (int)(k / ntx) * RENDER_TILE;
-            int x1 = x0 + RENDER_TILE > opt.width ? opt.width : x0 + RENDER_TILE;
-            int y1 = y0 + RENDER_TILE > opt.height ? opt.height : y0 + RENDER_TILE;
-            ops->render_tile(cs, tcs[me], &opt, x0, y0, x1, y1, &out, &mine);
-            if (opt.progress) {
-#pragma omp critical(render_progress)
-                {
-                    done++;
-                    opt.progress(opt.progress_ctx, done, ntiles);
-                }
-            }
-        }
-        mine.fx_overflows += fx_overflows - before;
-#pragma omp critical(render_sum)
-        render_stats_add(&total, &mine);
+    job.ops = ops;
+    job.opt = &opt;
+    job.cs = cs;
+    job.out = &out;
+    job.ntx = (opt.width + RENDER_TILE - 1) / RENDER_TILE;
+    job.ntiles = job.ntx * ((opt.height + RENDER_TILE - 1) / RENDER_TILE);
+    if ((errno = pthread_mutex_init(&job.lock, NULL)) != 0) {
+        status = diag_at(err, DIAG_IO, "", 0, 0, "cannot create a lock: %s", strerror(errno));
+        goto done;
     }
+    t0 = omp_get_wtime();
+    status = render_tiles(&job, w, nthreads, err);
+    pthread_mutex_destroy(&job.lock);
     total.time_render_s = omp_get_wtime() - t0;
+    for (i = 0; i < nthreads; i++)
+        render_stats_add(&total, &w[i].st);
 
 done:
-    if (tcs) {
+    if (w) {
         for (i = 0; i < nthreads; i++)
-            if (tcs[i])
-                ops->thread_free(tcs[i]);
-        mem_free(tcs);
+            if (w[i].tc)
+                ops->thread_free(w[i].tc);
+        mem_free(w);
     }
     ops->free(cs);
     if (status) {

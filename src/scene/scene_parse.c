@@ -77,6 +77,11 @@ int scene_parse_image(scene_parser *p, const char *what, scene_loc at, const cha
     r = p->loader->image(p->loader->ctx, name, channels, &img, &e);
     if (channels == IMAGE_INDEXED)
         channels = 1;
+    if (r == 0 && (size_t)img.width * (size_t)img.height > SCENE_IMAGE_MAX_PIXELS) {
+        snprintf(e.msg, sizeof e.msg, "image of %dx%d pixels is over the limit of %zu", img.width, img.height,
+                 SCENE_IMAGE_MAX_PIXELS);
+        r = DIAG_INPUT;
+    }
     if (r == 0 && (img.channels != channels || img.width < 1 || img.height < 1 || !img.px)) {
         /* a loader that breaks its contract must not reach the builders */
         snprintf(e.msg, sizeof e.msg, "not a %d-channel image", channels);

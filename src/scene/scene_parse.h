@@ -15,6 +15,9 @@
  * channels, or IMAGE_INDEXED for one channel of palette indices (see
  * image_read_png), or returns a diag status with err saying why; the parser
  * adds the record and column. */
+#define SCENE_IMAGE_MAX_PIXELS ((size_t)1 << 24)   /* an image a deck names (16 Mpixels) */
+/* A loader must refuse an image over SCENE_IMAGE_MAX_PIXELS from its header,
+ * before decoding it; the parser refuses one that gets through. */
 typedef struct scene_loader {
     int (*image)(void *ctx, const char *name, int channels, image *out, diag *err);
     void *ctx;
