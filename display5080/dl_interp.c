@@ -14,6 +14,7 @@ void dl_interp_init(dl_interp *in, const char *name, int force_dac, dl_interp_op
     in->force_dac = force_dac;
     in->open = open;
     in->octx = octx;
+    dl_work_init(&in->work, 0);
 }
 
 void dl_interp_free(dl_interp *in)
@@ -49,6 +50,9 @@ static int dl_interp_header(void *ctx, const dl_header *h, diag *err)
     in->sy0 = in->vy0 = 0;
     in->sx1 = in->vx1 = h->width - 1;
     in->sy1 = in->vy1 = h->height - 1;
+    /* every backend clears its new screen: that is work too */
+    if (dl_work_charge(&in->work, (unsigned long long)h->width * (unsigned)h->height, in->name, 0, err))
+        return DIAG_INPUT;
     return in->open(in->octx, h->width, h->height, &in->ops, &in->dev, err);
 }
 
@@ -80,6 +84,11 @@ static int dl_interp_points(dl_interp *in, const dl_element *e, int **dst, size_
     return 0;
 }
 
+static int dl_interp_charge(dl_interp *in, const dl_element *e, unsigned long long n, diag *err)
+{
+    return dl_work_charge(&in->work, n, in->name, e->offset, err);
+}
+
 static int dl_interp_runs(dl_interp *in, const dl_element *e, diag *err)
 {
     long long x = e->x0;
@@ -91,7 +100,9 @@ static int dl_interp_runs(dl_interp *in, const dl_element *e, diag *err)
             return 0;
         if (count && x <= gc.cx1 && x + count - 1 >= gc.cx0 && e->y0 >= gc.cy0 && e->y0 <= gc.cy1) {
             long long a = x < gc.cx0 ? gc.cx0 : x, b = x + count - 1 > gc.cx1 ? gc.cx1 : x + count - 1;
-            int rc = in->ops->rect(in->dev, &gc, (int)a, e->y0, (int)b, e->y0, err);
+            int rc = dl_interp_charge(in, e, dl_work_rect(&gc, (int)a, e->y0, (int)b, e->y0), err);
+            if (!rc)
+                rc = in->ops->rect(in->dev, &gc, (int)a, e->y0, (int)b, e->y0, err);
             if (rc)
                 return rc;
         }
@@ -116,20 +127,28 @@ static int dl_interp_element(void *ctx, const dl_element *e, diag *err)
             return 0;
         if (dl_interp_points(in, e, &in->pts, &in->pts_cap, err))
             return DIAG_IO;
+        if (dl_interp_charge(in, e, dl_work_lines(in->pts, e->count, e->code == DL_POLYLINE), err))
+            return DIAG_INPUT;
         return in->ops->lines(in->dev, &gc, in->pts, e->count, e->code == DL_POLYLINE, err);
     case DL_FILL_RECT:
         if (!dl_interp_gc(in, e, in->interior_colour, &gc))
             return 0;
+        if (dl_interp_charge(in, e, dl_work_rect(&gc, e->x0, e->y0, e->x1, e->y1), err))
+            return DIAG_INPUT;
         return in->ops->rect(in->dev, &gc, e->x0, e->y0, e->x1, e->y1, err);
     case DL_FILL_CIRCLE: case DL_CIRCLE: {
         int fill = e->code == DL_FILL_CIRCLE;
         if (!dl_interp_gc(in, e, fill ? in->interior_colour : in->line_colour, &gc))
             return 0;
+        if (dl_interp_charge(in, e, dl_work_circle(&gc, e->y0, e->value, fill), err))
+            return DIAG_INPUT;
         return in->ops->circle(in->dev, &gc, e->x0, e->y0, e->value, fill, err);
     }
     case DL_END_POLYGON:
         if (!dl_interp_gc(in, e, in->interior_colour, &gc))
             return 0;
+        if (dl_interp_charge(in, e, dl_work_polygon(&gc, in->poly, in->poly_n), err))
+            return DIAG_INPUT;
         return in->ops->polygon(in->dev, &gc, in->poly, in->poly_n, err);
     case DL_VIEWPORT:
         in->vx0 = e->x0; in->vy0 = e->y0; in->vx1 = e->x1; in->vy1 = e->y1;
@@ -141,6 +160,8 @@ static int dl_interp_element(void *ctx, const dl_element *e, diag *err)
         if (!dl_interp_gc(in, e, 0, &gc))
             return 0;
         gc.op = e->op;
+        if (dl_interp_charge(in, e, (unsigned long long)(e->x1 - e->x0 + 1) * (unsigned)(e->y1 - e->y0 + 1), err))
+            return DIAG_INPUT;
         return in->ops->blt(in->dev, &gc, e->x0, e->y0, e->x1 - e->x0 + 1, e->y1 - e->y0 + 1,
                             e->data, e->stride, err);
     case DL_LINE_COLOUR:
@@ -164,6 +185,8 @@ static int dl_interp_element(void *ctx, const dl_element *e, diag *err)
     case DL_CLEAR:
         if (!dl_interp_gc(in, e, e->value, &gc))
             return 0;
+        if (dl_interp_charge(in, e, dl_work_rect(&gc, 0, 0, in->width - 1, in->height - 1), err))
+            return DIAG_INPUT;
         return in->ops->rect(in->dev, &gc, 0, 0, in->width - 1, in->height - 1, err);
     case DL_RUN_ROW:
         return dl_interp_runs(in, e, err);

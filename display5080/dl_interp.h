@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include "display5080/dl_decode.h"
 #include "display5080/dl_device.h"
+#include "display5080/dl_work.h"
 
 /* Called once the header is known: creates the drawing device. */
 typedef int (*dl_interp_open_fn)(void *octx, int width, int height, const dl_device **ops,
@@ -31,11 +32,13 @@ typedef struct dl_interp {
     size_t pts_cap;
     int *poly;
     size_t poly_n, poly_cap;
+    dl_work work;                  /* drawing budget, the same for every backend */
 } dl_interp;
 
 extern const dl_visitor dl_interp_visitor;
 
-/* Prepares an interpreter; force_dac 0, 4 or 8. */
+/* Prepares an interpreter; force_dac 0, 4 or 8. The budget is
+ * DL_WORK_LIMIT; set in->work.limit to change it. */
 void dl_interp_init(dl_interp *in, const char *name, int force_dac, dl_interp_open_fn open,
                     void *octx);
 /* Frees scratch memory (not the device: its creator owns it). */

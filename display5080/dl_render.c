@@ -19,8 +19,6 @@ static int dl_render_open(void *octx, int width, int height, const dl_device **o
     int rc = c->b->open(width, height, &c->dev, err);
     if (rc)
         return rc;
-    if (c->b == &dl_backend_png && c->opts && c->opts->work_limit)
-        ((dl_raster *)c->dev)->work_limit = c->opts->work_limit;
     *ops = c->b->ops;
     *dev = c->dev;
     return 0;
@@ -37,6 +35,8 @@ int dl_render(const uint8_t *buf, size_t len, const char *name, const dl_backend
     c.b = b;
     c.opts = opts;
     dl_interp_init(&in, name, opts ? opts->dac : 0, dl_render_open, &c);
+    if (opts && opts->work_limit)
+        in.work.limit = opts->work_limit;
     rc = dl_decode(buf, len, name, NULL, &dl_interp_visitor, &in, NULL, err);
     memset(&f, 0, sizeof f);
     if (!rc) {

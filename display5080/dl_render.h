@@ -18,7 +18,7 @@ typedef struct dl_frame {
 
 typedef struct dl_render_opts {
     int dac;                   /* 0 = the file's header flag, else 4 or 8 */
-    unsigned long long work_limit;   /* software raster budget; 0 = default */
+    unsigned long long work_limit;   /* drawing budget (dl_work.h); 0 = DL_WORK_LIMIT */
 } dl_render_opts;
 
 /* Draws buf (len bytes, named name in diagnostics) with backend b into *out
