@@ -147,6 +147,13 @@ static int compare_register(const char *ref_name, const char *test_name, const c
     plane_free(&w->tl);
     if (rc < 0)
         return compare_oom(err);
+    if (rc == 2)
+        return diag_at(err, DIAG_INPUT, ref_name, 0, 0,
+                       "the registration search over scale %g..%g and angles within %g degrees would compare "
+                       "more than %.0f pixel pairs (%dx%d reference, %dx%d test); narrow --scale-range or "
+                       "--max-angle",
+                       o->align.scale_min, o->align.scale_max, o->align.max_angle, ALIGN_MAX_COST, w->r[0].w,
+                       w->r[0].h, w->t[0].w, w->t[0].h);
     if (rc > 0)
         return diag_at(err, DIAG_INPUT, ref_name, 0, 0,
                        "registration found no placement of the test covering half of the smaller picture "
