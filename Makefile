@@ -34,7 +34,7 @@ MODULE_LIBS   :=
 .DEFAULT_GOAL := all
 -include mk/*.mk
 
-.PHONY: all test demo bench install uninstall clean deps unit-tests asan-test fuzz-smoke
+.PHONY: all test demo bench install uninstall clean deps unit-tests asan-test fuzz-smoke fuzz
 all: $(BIN)
 
 # --- packages --------------------------------------------------------------
@@ -87,8 +87,14 @@ asan-test: deps
 	  CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
 	  LDFLAGS="-fsanitize=address,undefined" test
 
+# Fuzzing: fuzz-smoke (CI) runs each target briefly; fuzz runs each for
+# FUZZ_SECONDS and keeps the minimised corpus in tests/fuzz/corpus/.
+FUZZ_SECONDS ?= 60
 fuzz-smoke: deps
 	@sh tests/fuzz/run.sh $(FUZZ_SECONDS)
+
+fuzz: deps
+	@sh tests/fuzz/run.sh $(FUZZ_SECONDS) keep
 
 # --- demo and bench --------------------------------------------------------
 demo: deps

@@ -116,6 +116,13 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
     return st;
 }
 
+/* Warnings go to stderr as "maprt: FILE:LINE:COL: warning: TEXT". */
+static void cli_images_warn(void *ctx, const diag *w)
+{
+    (void)ctx;
+    diag_print_warning(stderr, w);
+}
+
 int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
 {
     cms_deck *deck;
@@ -123,6 +130,7 @@ int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
     cms_name cn;
     cli_images im;
     scene_loader ld;
+    scene_warner wr;
     char *slash;
     int st = cms_name_input(&f->disks, name, &cn, err);
     if (st)
@@ -139,9 +147,11 @@ int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err)
         im.dir[0] = 0;
     ld.image = cli_images_read;
     ld.ctx = &im;
+    wr.warn = cli_images_warn;
+    wr.ctx = NULL;
     st = cms_deck_open(&deck, &src, &f->disks, name, &f->decode, err);
     if (st == 0) {
-        st = scene_parse_with(&src, &ld, out, err);
+        st = scene_parse_warned(&src, &ld, &wr, out, err);
         cms_deck_close(deck);
     }
     mem_free(im.dir);

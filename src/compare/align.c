@@ -490,6 +490,7 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
     static const double stages[] = {64, 128, 256, 512};
     align_ctx c;
     align_cand cand[ALIGN_KEEP + 2 * ALIGN_SPREAD];
+    double cap;
     int n, s, i, rc = 1;
     memset(&c, 0, sizeof c);
     c.rw = ref->w;
@@ -505,7 +506,8 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
     }
     /* the coarse search's cost grows with the scale range, the angle range
      * and the ratio of the sizes: refused before it starts when over the cap */
-    n = align_cost(&c, o) > ALIGN_MAX_COST ? (rc = 2, 0) : align_coarse(&c, o, cand);
+    cap = o->max_cost > 0 ? o->max_cost : ALIGN_MAX_COST;
+    n = align_cost(&c, o) > cap ? (rc = 2, 0) : align_coarse(&c, o, cand);
     if (n < 0)
         rc = -1;
     /* the scale grid is coarse next to small pictures' detail: start the

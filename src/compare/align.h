@@ -44,6 +44,8 @@ typedef struct align_opts {
     double ref_blur;               /* Gaussian sigma already applied to the
                                     * reference (reference px), >= 0; widens the
                                     * band along the test's border */
+    double max_cost;               /* coarse search cost cap in pixel pairs;
+                                    * 0 = ALIGN_MAX_COST */
 } align_opts;
 
 #define ALIGN_SCALE_MIN_DEFAULT 0.25
@@ -65,6 +67,6 @@ typedef struct align_result {
 /* Registers test onto ref (luminance planes, 8-bit units). Returns 0 and
  * fills *out; 1 when no transform in the search ranges overlaps enough
  * (or a picture has no edges at all); 2 when the search would cost more
- * than ALIGN_MAX_COST; -1 when out of memory. */
+ * than its cost cap (o->max_cost, else ALIGN_MAX_COST); -1 when out of memory. */
 int align_find(const plane *ref, const plane *test, const align_opts *o, align_result *out);
 #endif

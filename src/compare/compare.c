@@ -152,7 +152,8 @@ static int compare_register(const char *ref_name, const char *test_name, const c
                        "the registration search over scale %g..%g and angles within %g degrees would compare "
                        "more than %.0f pixel pairs (%dx%d reference, %dx%d test); narrow --scale-range or "
                        "--max-angle",
-                       o->align.scale_min, o->align.scale_max, o->align.max_angle, ALIGN_MAX_COST, w->r[0].w,
+                       o->align.scale_min, o->align.scale_max, o->align.max_angle,
+                       o->align.max_cost > 0 ? o->align.max_cost : ALIGN_MAX_COST, w->r[0].w,
                        w->r[0].h, w->t[0].w, w->t[0].h);
     if (rc > 0)
         return diag_at(err, DIAG_INPUT, ref_name, 0, 0,

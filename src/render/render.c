@@ -37,6 +37,7 @@ static void render_stats_add(render_stats *a, const render_stats *b)
     a->bound_tests += b->bound_tests;
     a->csg_pruned += b->csg_pruned;
     a->arena_full += b->arena_full;
+    a->rays_capped += b->rays_capped;
 }
 
 void render_stats_print(FILE *f, const render_stats *st)
@@ -49,6 +50,8 @@ void render_stats_print(FILE *f, const render_stats *st)
             st->csg_pruned, st->time_compile_s, st->time_render_s);
     if (st->arena_full)
         fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
+    if (st->rays_capped)
+        fprintf(f, "rays.capped=%llu\n", st->rays_capped);
 }
 
 /* The tile loop's shared state: workers take the next tile under the lock. */

@@ -335,6 +335,45 @@ static int scene_parse_add_attr(scene_parser *p, const scene_attr *a, const scen
     return 0;
 }
 
+/* Passes a warning at token t to the loader's warn(). */
+static void scene_parse_warn(scene_parser *p, const scene_lex_tok *t, const char *msg)
+{
+    diag w;
+    if (!p->warner || !p->warner->warn)
+        return;
+    diag_init(&w);
+    diag_at(&w, DIAG_INPUT, p->file, t->line, t->col, "%s", msg);
+    p->warner->warn(p->warner->ctx, &w);
+}
+
+/* Energy conservation: a surface cannot send on more light than reaches
+ * it, DIFFUSE + MIRROR + TRANSMIT <= 1. It also bounds the ray tree: the
+ * weights of the rays of one depth then sum to at most 1, so the weight cut
+ * (trace.c) leaves at most 1/TRACE_MIN_WEIGHT rays per depth. A DIFFUSE the
+ * deck did not write becomes what MIRROR and TRANSMIT leave of 1 (if less
+ * than its default); coefficients the deck wrote that sum over 1 are scaled
+ * to sum 1, with a warning at the attribute's name. */
+static void scene_parse_energy(scene_parser *p, scene_attr *a, int diffuse_written, const scene_lex_tok *at)
+{
+    double sum, k;
+    char msg[256];
+    if (!diffuse_written && a->diffuse + a->mirror + a->transmit > 1)
+        a->diffuse = a->mirror + a->transmit < 1 ? 1 - a->mirror - a->transmit : 0;
+    sum = a->diffuse + a->mirror + a->transmit;
+    if (sum <= 1 + 1e-9)
+        return;
+    k = 1 / sum;
+    snprintf(msg, sizeof msg,
+             "ATTR %s: DIFFUSE %g + MIRROR %g + TRANSMIT %g = %g sends on more light than arrives; scaled by "
+             "%.4g to DIFFUSE %.4g, MIRROR %.4g, TRANSMIT %.4g",
+             a->name, a->diffuse, a->mirror, a->transmit, sum, k, a->diffuse * k, a->mirror * k,
+             a->transmit * k);
+    a->diffuse *= k;
+    a->mirror *= k;
+    a->transmit *= k;
+    scene_parse_warn(p, at, msg);
+}
+
 /* ATTR name COLOR r g b {option value} [TEXTURE t] [BUMP b]: appends an
  * attribute; the option table gives each coefficient's keyword, range and
  * field; TEXTURE and BUMP name a texture or bump defined earlier. */
@@ -396,6 +435,7 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
     }
     if (!seen[NOPT])
         return scene_cur_error(c, NULL, "COLOR is required");
+    scene_parse_energy(p, &a, seen[1], at);
     return scene_parse_add_attr(p, &a, kw);
 }
 
@@ -779,6 +819,12 @@ int scene_parse(const recsrc *src, scene **out, diag *err)
  * statement buffer) lives on the heap. */
 int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, diag *err)
 {
+    return scene_parse_warned(src, ld, NULL, out, err);
+}
+
+int scene_parse_warned(const recsrc *src, const scene_loader *ld, const scene_warner *wr, scene **out,
+                       diag *err)
+{
     scene_parser *p = mem_calloc(1, sizeof *p);
     const char *file = src->name ? src->name : "";
     scene_attr def;
@@ -788,6 +834,7 @@ int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, dia
     p->file = file;
     p->err = err;
     p->loader = ld;
+    p->warner = wr;
     scene_names_init(&p->names);
     scene_lex_init(&p->lex, src);
     p->s = mem_calloc(1, sizeof *p->s);

@@ -23,6 +23,12 @@ typedef struct scene_loader {
     void *ctx;
 } scene_loader;
 
+/* Receives the parser's warnings: each a located diag; the parse goes on. */
+typedef struct scene_warner {
+    void (*warn)(void *ctx, const diag *w);
+    void *ctx;
+} scene_warner;
+
 /* Parses a scene deck. On success *out owns a new scene and 0 is returned;
  * otherwise err holds the first error (file:record:column) and *out is
  * untouched. Never crashes, hangs or allocates without bound. */
@@ -30,4 +36,7 @@ int scene_parse(const recsrc *src, scene **out, diag *err);
 /* The same, reading the files the deck names through ld (NULL: a deck that
  * names an image is refused). */
 int scene_parse_with(const recsrc *src, const scene_loader *ld, scene **out, diag *err);
+/* The same, passing warnings to wr (NULL: dropped). */
+int scene_parse_warned(const recsrc *src, const scene_loader *ld, const scene_warner *wr, scene **out,
+                       diag *err);
 #endif

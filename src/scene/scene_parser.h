@@ -85,6 +85,7 @@ struct scene_parser {
     const char *file;
     diag *err;
     const scene_loader *loader;   /* NULL: images cannot be read */
+    const scene_warner *warner;   /* NULL: warnings are dropped */
     scene_lex lex;
     scene_lex_stmt st;
     scene_names names;

@@ -86,6 +86,17 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
     return 0;
 }
 
+/* Takes one secondary ray from the pixel's cap; 0 (counted) when spent. */
+static int trace_budget(trace_ctx *tc)
+{
+    if (tc->rays_left == 0) {
+        tc->rs.rays_capped++;
+        return 0;
+    }
+    tc->rays_left--;
+    return 1;
+}
+
 void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
                    double weight, double rgb[3], int *pid)
 {
@@ -187,7 +198,8 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     refl = at->mirror;
     if (far)
         depth = cs->max_depth;
-    if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT) {
+    if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT &&
+        trace_budget(tc)) {
         vec3 td;
         int tir = at->ior > 0 ? NS(optics_refract)(r->d, nsn, inside ? at->ior : 1.0 / at->ior, &td) : 1;
         if (tir > 0) {
@@ -202,7 +214,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
                 c[i] += at->transmit * tc3[i];
         }
     }
-    if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT) {
+    if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT && trace_budget(tc)) {
         vec3 rd;
         prim_ray rr;
         double rc[3];

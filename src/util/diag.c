@@ -51,23 +51,35 @@ int diag_offset(diag *d, int status, const char *file, long long offset,
     return status;
 }
 
-void diag_format(const diag *d, char *buf, size_t size)
+/* The formatted diagnostic with its kind ("error", "warning"). */
+static void diag_format_kind(const diag *d, const char *kind, char *buf, size_t size)
 {
     if (d->offset >= 0)
-        snprintf(buf, size, "%s: offset %lld: error: %s", d->file, d->offset, d->msg);
+        snprintf(buf, size, "%s: offset %lld: %s: %s", d->file, d->offset, kind, d->msg);
     else if (d->line > 0 && d->col > 0)
-        snprintf(buf, size, "%s:%ld:%ld: error: %s", d->file, d->line, d->col, d->msg);
+        snprintf(buf, size, "%s:%ld:%ld: %s: %s", d->file, d->line, d->col, kind, d->msg);
     else if (d->line > 0)
-        snprintf(buf, size, "%s:%ld: error: %s", d->file, d->line, d->msg);
+        snprintf(buf, size, "%s:%ld: %s: %s", d->file, d->line, kind, d->msg);
     else if (d->file[0])
-        snprintf(buf, size, "%s: error: %s", d->file, d->msg);
+        snprintf(buf, size, "%s: %s: %s", d->file, kind, d->msg);
     else
-        snprintf(buf, size, "error: %s", d->msg);
+        snprintf(buf, size, "%s: %s", kind, d->msg);
 }
+
+void diag_format(const diag *d, char *buf, size_t size) { diag_format_kind(d, "error", buf, size); }
 
 void diag_print(FILE *f, const diag *d)
 {
     char buf[1024];
     diag_format(d, buf, sizeof buf);
+    fprintf(f, "maprt: %s\n", buf);
+}
+
+void diag_format_warning(const diag *d, char *buf, size_t size) { diag_format_kind(d, "warning", buf, size); }
+
+void diag_print_warning(FILE *f, const diag *d)
+{
+    char buf[1024];
+    diag_format_warning(d, buf, sizeof buf);
     fprintf(f, "maprt: %s\n", buf);
 }

@@ -1,27 +1,51 @@
 #!/bin/sh
+# usage: run.sh SECONDS [keep]
 # Builds the library with clang and libFuzzer instrumentation (plus ASan/UBSan),
-# links each tests/fuzz/fuzz_*.c against it and runs each for SECONDS seconds on
-# its seed corpus (tests/fuzz/seeds/NAME). A crash, leak or timeout fails the run.
+# links each tests/fuzz/fuzz_*.c against it (FUZZ_TARGETS="fuzz_a fuzz_b"
+# picks some) and runs each for SECONDS seconds on its seeds
+# (tests/fuzz/seeds/NAME) and its kept corpus (tests/fuzz/corpus/NAME).
+#  - without "keep" (CI's smoke run): new inputs go to build-fuzz/corpus-NAME;
+#  - with "keep" (make fuzz): new inputs join the kept corpus, which is then
+#    minimised in place (-merge=1: the fewest inputs that keep its coverage).
+# Prints "fuzz NAME: Done N runs in S second(s)" per target. A crash, leak or
+# timeout fails the run.
 secs=${1:-15}
+keep=${2:-}
 command -v clang >/dev/null 2>&1 || { echo "fuzz: clang not installed" >&2; exit 1; }
 out=build-fuzz
 san="-fsanitize=address,undefined -fno-sanitize-recover=all"
 make --no-print-directory -s BUILD=$out CC=clang \
   CFLAGS="-O1 -g -fsanitize=fuzzer-no-link $san" $out/libmaprt.a || exit 1
 libs=$(make --no-print-directory -s print-libs)
+opts="-timeout=10 -max_len=65536 -rss_limit_mb=2048 -print_final_stats=0"
 status=0
 for f in tests/fuzz/fuzz_*.c; do
   [ -f "$f" ] || continue
   name=$(basename "$f" .c)
+  if [ -n "${FUZZ_TARGETS:-}" ]; then
+    case " $FUZZ_TARGETS " in *" $name "*) ;; *) continue ;; esac
+  fi
   clang -std=c99 -g -O1 -fopenmp -D_POSIX_C_SOURCE=200809L -Isrc -I. -fsanitize=fuzzer $san \
     -o $out/$name "$f" $out/libmaprt.a $libs || { status=1; continue; }
-  mkdir -p $out/corpus-$name
   seeds=tests/fuzz/seeds/$name; [ -d "$seeds" ] || seeds=""
-  if $out/$name -max_total_time="$secs" -timeout=10 -max_len=65536 -rss_limit_mb=2048 \
-       $out/corpus-$name $seeds > $out/$name.log 2>&1; then
+  kept=tests/fuzz/corpus/$name
+  mkdir -p "$kept"
+  if [ -n "$keep" ]; then new=$kept; else new=$out/corpus-$name; mkdir -p "$new"; fi
+  if $out/$name -max_total_time="$secs" $opts "$new" $( [ "$new" = "$kept" ] || echo "$kept" ) $seeds \
+       > $out/$name.log 2>&1; then
     echo "fuzz $name: $(grep -o 'Done [0-9]* runs in [0-9]* second' $out/$name.log | tail -1)"
   else
     echo "fuzz $name: FAILED (see $out/$name.log)"; tail -40 $out/$name.log; status=1
+    continue
+  fi
+  if [ -n "$keep" ]; then
+    rm -rf "$out/min-$name" && mkdir -p "$out/min-$name"
+    if $out/$name -merge=1 $opts "$out/min-$name" "$kept" $seeds > $out/$name.merge.log 2>&1; then
+      rm -rf "$kept" && mv "$out/min-$name" "$kept"
+      echo "fuzz $name: kept corpus $(ls "$kept" | wc -l) inputs, $(du -sk "$kept" | cut -f1) KB"
+    else
+      echo "fuzz $name: minimising failed (see $out/$name.merge.log)"; status=1
+    fi
   fi
 done
 exit $status
