@@ -64,8 +64,13 @@ static const char compare_help[] =
     "                  positive turns the test counter-clockwise on screen);\n"
     "                  register_score is the edge-map correlation (-1..1)\n"
     "\n"
+    "The registration search is refused before it starts when its coarse stage\n"
+    "would compare more than 2^32 pixel pairs (docs/compare.md): narrow the ranges.\n"
+    "DIFF.png and SBS.png are both written or neither, and may not be an input.\n"
+    "\n"
     "exit status: 0 ok, 1 bad input (unreadable picture, sizes differ without\n"
-    "--register, no registration found), 2 usage, 3 I/O failure\n";
+    "--register, no registration found, search over its cost cap), 2 usage, 3 I/O\n"
+    "failure\n";
 
 /* Parses "A,B,..." into n doubles; 0 or CLI_USAGE after a message. */
 static int compare_list(const char *opt, const char *s, int n, double *out)

@@ -19,7 +19,9 @@ static void render_help(FILE *f)
         "Ray-traces the scene deck SCENE (see docs/scene-format.md) and writes a\n"
         "true-colour PNG and/or a DL5080 display list, as the IBM 5081 would show it.\n"
         "SCENE and every output may be a host path or a CMS fileid ('FIG1 SCENE A').\n"
-        "Outputs are written to a temporary name and renamed when complete.\n"
+        "Outputs are written to a temporary name and renamed when complete (both or\n"
+        "neither); each is checked before the trace: its directory must be writable,\n"
+        "and it must not be SCENE, an image SCENE names, or the other output.\n"
         "\n"
         "options:\n"
         "  -o, --output OUT.png  write a true-colour PNG\n"
@@ -38,13 +40,15 @@ static void render_help(FILE *f)
         "                        rays.shadow rays.reflected rays.refracted pds.lookups\n"
         "                        fx.overflows tests.prim tests.bound csg.pruned\n"
         "                        time.compile_s time.render_s (and dl.colours dl.bytes\n"
-        "                        dl.psnr with --dl)\n"
+        "                        dl.psnr with --dl; rays.capped when the cap of %d\n"
+        "                        reflected and refracted rays per sample was reached)\n"
         "%s"
         "  -h, --help            show this help\n"
         "\n"
         "A progress bar is drawn on stderr when it is a terminal.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
-        RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA, cli_files_help);
+        RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA, RENDER_MAX_RAYS_PER_SAMPLE,
+        cli_files_help);
 }
 
 /* Progress bar on stderr (a terminal), redrawn after every tile. */
