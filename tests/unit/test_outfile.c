@@ -16,6 +16,7 @@
 #include <unistd.h>
 #include "util/mem.h"
 #include "util/outfile.h"
+#include "support.h"
 
 static char dir[64];
 
@@ -42,17 +43,7 @@ static int teardown(void **state)
     return rmdir(dir);
 }
 
-static int entries(void)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    int n = 0;
-    assert_non_null(d);
-    while ((e = readdir(d)))
-        n += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
-    closedir(d);
-    return n;
-}
+static int entries(void) { return test_dir_entries(dir); }
 
 /* Names are "<path>.tmp-" and 12 random characters, never repeated; the
  * file is new and private to the open. */
