@@ -13,11 +13,12 @@ secs=${1:-15}
 keep=${2:-}
 command -v clang >/dev/null 2>&1 || { echo "fuzz: clang not installed" >&2; exit 1; }
 out=build-fuzz
+top=$(pwd)   # absolute paths: a target may change directory (fuzz_cli does)
 san="-fsanitize=address,undefined -fno-sanitize-recover=all"
 make --no-print-directory -s BUILD=$out CC=clang \
   CFLAGS="-O1 -g -fsanitize=fuzzer-no-link $san" $out/libmaprt.a || exit 1
 libs=$(make --no-print-directory -s print-libs)
-opts="-timeout=10 -max_len=65536 -rss_limit_mb=2048 -print_final_stats=0"
+opts="-timeout=10 -max_len=65536 -rss_limit_mb=2048 -print_final_stats=0 -close_fd_mask=3 -artifact_prefix=$top/$out/"
 status=0
 for f in tests/fuzz/fuzz_*.c; do
   [ -f "$f" ] || continue
@@ -27,10 +28,10 @@ for f in tests/fuzz/fuzz_*.c; do
   fi
   clang -std=c99 -g -O1 -fopenmp -D_POSIX_C_SOURCE=200809L -Isrc -I. -fsanitize=fuzzer $san \
     -o $out/$name "$f" $out/libmaprt.a $libs || { status=1; continue; }
-  seeds=tests/fuzz/seeds/$name; [ -d "$seeds" ] || seeds=""
-  kept=tests/fuzz/corpus/$name
+  seeds=$top/tests/fuzz/seeds/$name; [ -d "$seeds" ] || seeds=""
+  kept=$top/tests/fuzz/corpus/$name
   mkdir -p "$kept"
-  if [ -n "$keep" ]; then new=$kept; else new=$out/corpus-$name; mkdir -p "$new"; fi
+  if [ -n "$keep" ]; then new=$kept; else new=$top/$out/corpus-$name; mkdir -p "$new"; fi
   if $out/$name -max_total_time="$secs" $opts "$new" $( [ "$new" = "$kept" ] || echo "$kept" ) $seeds \
        > $out/$name.log 2>&1; then
     echo "fuzz $name: $(grep -o 'Done [0-9]* runs in [0-9]* second' $out/$name.log | tail -1)"
@@ -39,9 +40,10 @@ for f in tests/fuzz/fuzz_*.c; do
     continue
   fi
   if [ -n "$keep" ]; then
-    rm -rf "$out/min-$name" && mkdir -p "$out/min-$name"
-    if $out/$name -merge=1 $opts "$out/min-$name" "$kept" $seeds > $out/$name.merge.log 2>&1; then
-      rm -rf "$kept" && mv "$out/min-$name" "$kept"
+    min=$top/$out/min-$name
+    rm -rf "$min" && mkdir -p "$min"
+    if $out/$name -merge=1 $opts "$min" "$kept" $seeds > $out/$name.merge.log 2>&1; then
+      rm -rf "$kept" && mv "$min" "$kept"
       echo "fuzz $name: kept corpus $(ls "$kept" | wc -l) inputs, $(du -sk "$kept" | cut -f1) KB"
     else
       echo "fuzz $name: minimising failed (see $out/$name.merge.log)"; status=1
