@@ -49,6 +49,16 @@ expect 2 "is an input of this command" $MAPRT cms export "$tmp/c" "$tmp/c"
 expect 2 "is also the output" $MAPRT render "$tmp/d.scene" -o "$tmp/same" --dl "$tmp/same" --size 8x8
 expect 2 "is also the output" $MAPRT compare "$tmp/a.png" "$tmp/t.png" --diff "$tmp/x.png" --side-by-side "$tmp/./x.png"
 
+# A symlink planted at the temporary name the old scheme predicted
+# (OUT.tmp-PID-1; exec keeps the shell's PID) is not followed: the victim
+# keeps its bytes, the output is a new regular file.
+printf 'precious' > "$tmp/victim"
+sh -c 'ln -s "$1" "$2.tmp-$$-1" && exec "$3" render "$4" -o "$2" --size 8x8' sh "$tmp/victim" "$tmp/out.png" \
+  $MAPRT "$tmp/d.scene" || fail "render with a planted symlink failed"
+[ "$(cat "$tmp/victim")" = precious ] || fail "the planted symlink was followed"
+[ -f "$tmp/out.png" ] && [ ! -L "$tmp/out.png" ] || fail "no regular output"
+rm -f "$tmp"/out.png.tmp-* "$tmp/out.png"
+
 # Output directories are checked before the work: this render would take
 # hours (16384x16384, 16x16 samples a pixel); refused at once instead.
 expect 3 "directory $tmp/none" $MAPRT render "$tmp/d.scene" -o "$tmp/none/x.png" --size 16384x16384 --aa 16
