@@ -32,7 +32,8 @@ for f in tests/fuzz/fuzz_*.c; do
   kept=$top/tests/fuzz/corpus/$name
   mkdir -p "$kept"
   if [ -n "$keep" ]; then new=$kept; else new=$top/$out/corpus-$name; mkdir -p "$new"; fi
-  if $out/$name -max_total_time="$secs" $opts "$new" $( [ "$new" = "$kept" ] || echo "$kept" ) $seeds \
+  bin=$top/$out/$name   # absolute: libFuzzer re-runs itself for -merge
+  if $bin -max_total_time="$secs" $opts "$new" $( [ "$new" = "$kept" ] || echo "$kept" ) $seeds \
        > $out/$name.log 2>&1; then
     echo "fuzz $name: $(grep -o 'Done [0-9]* runs in [0-9]* second' $out/$name.log | tail -1)"
   else
@@ -42,9 +43,10 @@ for f in tests/fuzz/fuzz_*.c; do
   if [ -n "$keep" ]; then
     min=$top/$out/min-$name
     rm -rf "$min" && mkdir -p "$min"
-    if $out/$name -merge=1 $opts "$min" "$kept" $seeds > $out/$name.merge.log 2>&1; then
+    if $bin -merge=1 $opts "$min" "$kept" $seeds > $out/$name.merge.log 2>&1 &&
+       { [ -n "$(ls "$min")" ] || [ -z "$(ls "$kept")" ]; }; then
       rm -rf "$kept" && mv "$min" "$kept"
-      echo "fuzz $name: kept corpus $(ls "$kept" | wc -l) inputs, $(du -sk "$kept" | cut -f1) KB"
+      echo "fuzz $name: kept corpus $(ls "$kept" | wc -l) inputs, $(cat "$kept"/* 2>/dev/null | wc -c) bytes"
     else
       echo "fuzz $name: minimising failed (see $out/$name.merge.log)"; status=1
     fi
