@@ -198,13 +198,12 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     refl = at->mirror;
     if (far)
         depth = cs->max_depth;
-    if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT &&
-        trace_budget(tc)) {
+    if (at->transmit > 0 && depth < cs->max_depth && weight * at->transmit > TRACE_MIN_WEIGHT) {
         vec3 td;
         int tir = at->ior > 0 ? NS(optics_refract)(r->d, nsn, inside ? at->ior : 1.0 / at->ior, &td) : 1;
         if (tir > 0) {
             refl += at->transmit;            /* total internal reflection */
-        } else if (tir == 0) {
+        } else if (tir == 0 && trace_budget(tc)) {
             prim_ray tr;
             double tc3[3];
             trace_spawn(&tr, p, td, h.prim, sf.n);
@@ -214,11 +213,11 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
                 c[i] += at->transmit * tc3[i];
         }
     }
-    if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT && trace_budget(tc)) {
+    if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT) {
         vec3 rd;
         prim_ray rr;
         double rc[3];
-        if (!NS(optics_reflect)(r->d, nsn, &rd)) {
+        if (!NS(optics_reflect)(r->d, nsn, &rd) && trace_budget(tc)) {
             trace_spawn(&rr, p, rd, h.prim, sf.n);
             tc->rs.rays_reflected++;
             NS(trace_ray)(cs, tc, &rr, depth + 1, weight * refl, rc, NULL);
