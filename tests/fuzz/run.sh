@@ -6,7 +6,8 @@
 # (tests/fuzz/seeds/NAME) and its kept corpus (tests/fuzz/corpus/NAME).
 #  - without "keep" (CI's smoke run): new inputs go to build-fuzz/corpus-NAME;
 #  - with "keep" (make fuzz): new inputs join the kept corpus, which is then
-#    minimised in place (-merge=1: the fewest inputs that keep its coverage).
+#    minimised in place (-merge=1: the fewest inputs that keep its coverage)
+#    and trimmed to FUZZ_KEEP_BYTES (24 KB) per target, largest inputs first.
 # Prints "fuzz NAME: Done N runs in S second(s)" per target. A crash, leak or
 # timeout fails the run.
 secs=${1:-15}
@@ -46,6 +47,11 @@ for f in tests/fuzz/fuzz_*.c; do
     if $bin -merge=1 $opts "$min" "$kept" $seeds > $out/$name.merge.log 2>&1 &&
        { [ -n "$(ls "$min")" ] || [ -z "$(ls "$kept")" ]; }; then
       rm -rf "$kept" && mv "$min" "$kept"
+      # the repository keeps at most FUZZ_KEEP_BYTES per target: the largest
+      # inputs go first (the seeds keep the real files)
+      while [ "$(cat "$kept"/* 2>/dev/null | wc -c)" -gt "${FUZZ_KEEP_BYTES:-24576}" ]; do
+        rm -f "$(ls -S "$kept"/* | head -1)"
+      done
       echo "fuzz $name: kept corpus $(ls "$kept" | wc -l) inputs, $(cat "$kept"/* 2>/dev/null | wc -c) bytes"
     else
       echo "fuzz $name: minimising failed (see $out/$name.merge.log)"; status=1
