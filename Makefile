@@ -39,7 +39,7 @@ MODULE_LIBS   :=
 -include mk/*.mk
 
 quant-bench: deps-bench
-.PHONY: all test demo bench install uninstall clean deps deps-demo deps-test deps-bench deps-fuzz unit-tests asan-test fuzz-smoke check-deps
+.PHONY: all test demo bench install uninstall clean deps deps-demo deps-test deps-bench deps-fuzz unit-tests asan-test fuzz-smoke fuzz check-deps
 all: $(BIN)
 
 # --- packages --------------------------------------------------------------
@@ -116,8 +116,14 @@ asan-test: deps-test
 	  CFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
 	  LDFLAGS="-fsanitize=address,undefined" test
 
+# Fuzzing: fuzz-smoke (CI) runs each target briefly; fuzz runs each for
+# FUZZ_SECONDS and keeps the minimised corpus in tests/fuzz/corpus/.
+FUZZ_SECONDS ?= 60
 fuzz-smoke: deps-fuzz
 	@sh tests/fuzz/run.sh $(FUZZ_SECONDS)
+
+fuzz: deps-fuzz
+	@sh tests/fuzz/run.sh $(FUZZ_SECONDS) keep
 
 # --- demo and bench --------------------------------------------------------
 demo: deps-demo

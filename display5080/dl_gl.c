@@ -125,6 +125,10 @@ int dl_gl_read(dl_gl *g, uint8_t *px, const char *who, diag *err)
 
 void dl_gl_stop(dl_gl *g)
 {
+    /* Drawing still in flight when a list is refused part-way must end
+     * before the context goes: OSMesa's destroy crashes otherwise. */
+    if (g->gl.Finish)
+        g->gl.Finish();
     if (g->fbo) {
         g->gl.BindFramebuffer(GLc_FRAMEBUFFER, 0);
         g->gl.DeleteFramebuffers(1, &g->fbo);

@@ -1,8 +1,10 @@
 /* support — helpers shared by the cmocka test binaries (see support.h). */
 #include "support.h"
 #include "util/mem.h"
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 uint64_t test_seed(const char *test_name)
 {
@@ -46,4 +48,17 @@ char *test_read_file(const char *path, size_t *len)
     }
     fclose(f);
     return buf;
+}
+
+int test_dir_entries(const char *path)
+{
+    DIR *d = opendir(path);
+    struct dirent *e;
+    int n = 0;
+    if (!d)
+        return -1;
+    while ((e = readdir(d)))
+        n += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
+    closedir(d);
+    return n;
 }

@@ -13,4 +13,7 @@ uint64_t test_rand(uint64_t *state);
 double test_uniform(uint64_t *state, double lo, double hi);
 /* Reads a whole file into a new buffer (mem_free it); NULL on failure. */
 char *test_read_file(const char *path, size_t *len);
+/* Number of entries other than . and .. in directory path; -1 if it
+ * cannot be opened. */
+int test_dir_entries(const char *path);
 #endif

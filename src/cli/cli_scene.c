@@ -93,8 +93,11 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
     char *path;
     size_t n;
     int st;
+    image_limits lim;
+    lim.max_side = IMAGE_MAX_SIDE;
+    lim.max_pixels = SCENE_IMAGE_MAX_PIXELS;
     if (name[0] == '/' || !im->dir[0])
-        return image_read_png(name, channels, out, err);
+        return image_read_png_limit(name, channels, &lim, out, err);
     n = strlen(im->dir) + strlen(name) + 2;
     if (!(path = mem_alloc(n)))
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
@@ -111,11 +114,12 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
             cms_name_free(&cn);
         }
     }
-    st = image_read_png(path, channels, out, err);
+    st = image_read_png_limit(path, channels, &lim, out, err);
     mem_free(path);
     return st;
 }
 
+/* Warnings go to stderr as "maprt: FILE:LINE:COL: warning: TEXT". */
 static void cli_scene_warn(void *ctx, const diag *w)
 {
     (void)ctx;

@@ -65,11 +65,15 @@ static const char compare_help[] =
     "                  positive turns the test counter-clockwise on screen);\n"
     "                  register_score is the edge-map correlation (-1..1)\n"
     "\n"
+    "The registration search is refused before it starts when its coarse stage\n"
+    "would compare more than 2^32 pixel pairs (docs/compare.md): narrow the ranges.\n"
+    "DIFF.png and SBS.png are both written or neither, and may not be an input.\n"
+    "\n"
     "exit status: 0 ok, 1 bad input (unreadable picture, sizes differ without\n"
-    "--register, no registration found), 2 usage, 3 I/O failure, 4 measured\n"
-    "but the pair does not look like the same picture: with --register a\n"
-    "register_score below 0.78, or an ssim below 0.30 (a warning on stderr says\n"
-    "which; the figures are printed as usual)\n";
+    "--register, no registration found, search over its cost cap), 2 usage, 3 I/O\n"
+    "failure, 4 measured but the pair does not look like the same picture: with\n"
+    "--register a register_score below 0.78, or an ssim below 0.30 (a warning on\n"
+    "stderr says which; the figures are printed as usual)\n";
 
 static void compare_help_print(FILE *f) { fputs(compare_help, f); }
 

@@ -122,6 +122,7 @@ static int cmd_dl_encode(const cli_dl_args *a)
 {
     dl_image_opts o;
     dl_image_stats st;
+    image_limits lim;
     image img;
     diag err;
     int rc;
@@ -129,9 +130,15 @@ static int cmd_dl_encode(const cli_dl_args *a)
     o.dac = a->dac ? a->dac : 4;
     o.dither = a->dither;
     diag_init(&err);
+    lim.max_side = DL_MAX_SIDE;
+    lim.max_pixels = (size_t)DL_MAX_SIDE * DL_MAX_SIDE;
+    /* the size is refused from the PNG header; the output is checked before
+     * reading (its directory) and after (not the input) */
     if ((rc = sniff_refuse(a->file[0], a->file[0], 1u << SNIFF_PNG, "a PNG image", &err)) == 0
-        && (rc = image_read_png(a->file[0], 3, &img, &err)) == 0) {
-        rc = dl_image_write(a->file[1], &img, &o, &st, &err);
+        && (rc = outfile_check(a->file[1], &err)) == 0
+        && (rc = image_read_png_limit(a->file[0], 3, &lim, &img, &err)) == 0) {
+        if ((rc = outfile_check(a->file[1], &err)) == 0)
+            rc = dl_image_write(a->file[1], &img, &o, &st, &err);
         image_free(&img);
     }
     if (rc) {

@@ -68,10 +68,13 @@ int cmd_dl2png(int argc, char **argv)
     ro.width = a.width;
     ro.height = a.height;
     diag_init(&err);
-    if ((a.raw || (rc = sniff_refuse(a.file[0], a.file[0], 1u << SNIFF_DL5080,
-                                     "a DL5080 display list", &err)) == 0)
+    if ((rc = outfile_check(a.file[1], &err)) == 0
+        && (a.raw || (rc = sniff_refuse(a.file[0], a.file[0], 1u << SNIFF_DL5080,
+                                        "a DL5080 display list", &err)) == 0)
         && (rc = infile_read_all(a.file[0], DL2PNG_MAX_INPUT, &data, &len, &err)) == 0) {
-        if ((rc = dl_render((const uint8_t *)data, len, a.file[0], b, &ro, &frame, &err)) == 0) {
+        /* now that the input is known: an output that is the input is refused before drawing */
+        if ((rc = outfile_check(a.file[1], &err)) == 0 &&
+            (rc = dl_render((const uint8_t *)data, len, a.file[0], b, &ro, &frame, &err)) == 0) {
             if (frame.src_blts)
                 fprintf(stderr,
                         "maprt: %s: offset %lld: warning: %lu block transfer%s from adapter "

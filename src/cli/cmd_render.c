@@ -14,6 +14,7 @@
 #include "display5080/dl_image.h"
 #include "util/mem.h"
 #include "util/version.h"
+#include "util/outfile.h"
 #include <omp.h>
 #include <string.h>
 #include <time.h>
@@ -33,7 +34,9 @@ static void render_help(FILE *f)
         "SCENE and every output may be a host path or a CMS fileid ('FIG1 SCENE A');\n"
         "SCENE may also name a scene shipped with maprt ('fig1'; see --list), found\n"
         "in $MAPRT_SCENES, " MAPRT_SHARE_HINT " or the source tree.\n"
-        "Outputs are written to a temporary name and renamed when complete.\n"
+        "Outputs are written to a temporary name and renamed when complete (all or\n"
+        "none); each is checked before the trace: its directory must be writable,\n"
+        "and it must not be SCENE, an image SCENE names, or another output.\n"
         "\n"
         "options:\n"
         "  -o, --output OUT      write the picture: OUT.png a true-colour PNG, OUT.ppm\n"
@@ -62,6 +65,8 @@ static void render_help(FILE *f)
         "                        deck's SIZE; at most %d with --dl)\n"
         "  --threads N           worker threads, 1..%d (default: OpenMP's count, %d here)\n"
         "  --aa N                N x N samples per pixel, 1..%d (default 1)\n"
+        , SCENE_MAX_SIDE, DL_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA);
+    fprintf(f,
         "  --stats               print key=value lines to stdout: numeric rays.primary\n"
         "                        rays.shadow rays.reflected rays.refracted pds.lookups\n"
         "                        fx.overflows tests.prim tests.bound csg.pruned\n"
@@ -69,8 +74,10 @@ static void render_help(FILE *f)
         "                        texture or bump) skipped.shadow (shadow rays not\n"
         "                        traced: no diffuse or specular term)\n"
         "                        time.compile_s time.render_s range.cut (and\n"
-        "                        dl.colours dl.bytes dl.psnr with --dl); any overflow\n"
-        "                        or range.cut is also reported on stderr\n"
+        "                        dl.colours dl.bytes dl.psnr with --dl; rays.capped\n"
+        "                        when the cap of %d reflected and refracted rays per\n"
+        "                        sample was reached); any overflow or range.cut is\n"
+        "                        also reported on stderr\n"
         "%s"
         "  --list                list the shipped scenes and exit\n"
         "  -h, --help            show this help\n"
@@ -85,8 +92,7 @@ static void render_help(FILE *f)
         "(a build with MPI) the ranks share the image and rank 0 writes the outputs\n"
         "(--stats adds mpi.ranks and each rank's share).\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
-        SCENE_MAX_SIDE, DL_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA,
-        cli_files_help);
+        RENDER_MAX_RAYS_PER_SAMPLE, cli_files_help);
 }
 
 
@@ -143,6 +149,7 @@ int cmd_render(int argc, char **argv)
     const char *format = NULL;
     image_out_format pic_format = IMAGE_OUT_NONE;
     char *png_path = NULL, *dl_path = NULL, *part_path = NULL, *ids_path = NULL, *shipped = NULL;
+    const char *outs[4];
     cli_mpi_share share[CLI_MPI_MAX_RANKS];
     const render_ops *ops = NULL;
     render_opts o;
@@ -265,7 +272,9 @@ int cmd_render(int argc, char **argv)
         return status;
     }
 
-    /* Resolve every name before the long work, so a bad fileid fails fast. */
+    /* Resolve and check every name before the long work: a bad fileid, a
+     * missing or read-only directory, two outputs on one file or an output
+     * that is an input (the deck or an image it names) fails fast. */
     if (cli_data_scene(scene_name, &shipped))
         scene_name = shipped;
     if ((out_png && strcmp(out_png, "-") && cli_output_path(&files, out_png, &png_path, &err))
@@ -275,7 +284,9 @@ int cmd_render(int argc, char **argv)
         || (out_dl && cli_output_path(&files, out_dl, &dl_path, &err))
         || (out_part && cli_output_path(&files, out_part, &part_path, &err))
         || (out_ids && cli_output_path(&files, out_ids, &ids_path, &err))
-        || cli_scene_load(&files, scene_name, &sc, &err)) {
+        || (outs[0] = png_path, outs[1] = dl_path, outs[2] = part_path, outs[3] = ids_path,
+            outfile_check_set(outs, 4, &err))
+        || cli_scene_load(&files, scene_name, &sc, &err) || outfile_check_set(outs, 4, &err)) {
         cli_mpi_agree(err.status, &root_status);
         quiet = cli_mpi_rank() != 0 && root_status;   /* rank 0 says it */
         goto done;
@@ -312,18 +323,21 @@ int cmd_render(int argc, char **argv)
                 scene_name, ops->name, st.fx_overflows, st.range_cut,
                 strcmp(ops->name, "q16") ? "the picture may be wrong there"
                                          : "try --numeric q32 or f64");
-    if (part_path && render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
-        goto done;
-    if (out_png) {
+    /* every output or none */
+    outfile_batch_begin();
+    {
         image_meta meta;
-        if (cli_sink_provenance(&files, scene_name, ops->name, o.aa, &fb, &meta, &err)
-            || image_out_write(png_path ? png_path : "-", pic_format, &fb.img, &meta, &err))
+        if ((part_path && render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
+            || (out_png && (cli_sink_provenance(&files, scene_name, ops->name, o.aa, &fb, &meta, &err)
+                            || image_out_write(png_path ? png_path : "-", pic_format, &fb.img,
+                                               &meta, &err)))
+            || (dl_path && cli_sink_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
+            || (ids_path && idmap_write(ids_path, &fb.ids, &err))
+            || outfile_batch_commit(&err)) {
+            outfile_batch_abort();
             goto done;
+        }
     }
-    if (dl_path && cli_sink_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
-        goto done;
-    if (ids_path && idmap_write(ids_path, &fb.ids, &err))
-        goto done;
     if (progress)
         render_summary(scene_name, &o, &fb, ops, &st, cpu0, out_png, out_dl);
     if (stats) {

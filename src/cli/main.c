@@ -1,6 +1,7 @@
 /* main — maprt's entry point: dispatches git-style subcommands. */
 #include "cli/cli.h"
 #include "cli/cli_mpi.h"
+#include "util/outfile.h"
 #include "util/suggest.h"
 #include "util/version.h"
 #include <string.h>
@@ -67,8 +68,18 @@ static int run(int argc, char **argv)
     }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (!strcmp(argv[1], commands[i].name)) {
-            int rc = commands[i].run(argc - 1, argv + 1);
+            int rc;
+            diag err;
+            outfile_track_inputs();   /* no output of this command replaces one of its inputs */
+            rc = commands[i].run(argc - 1, argv + 1);
             cli_conventions_free();
+            diag_init(&err);
+            /* output that stdio still held is written now: a full disk or
+             * /dev/full must not end in exit 0 */
+            if (outfile_close_stdout(&err) && rc == CLI_OK) {
+                diag_print(stderr, &err);
+                rc = CLI_IO;
+            }
             return rc;
         }
     {

@@ -34,6 +34,68 @@ typedef struct align_cand {
     int level;                     /* level of the last refinement, -1 if none */
 } align_cand;
 
+/* Running sums of a normalised cross-correlation of pairs (a, b). */
+typedef struct align_ncc {
+    double sa, sb, saa, sbb, sab, n;
+} align_ncc;
+
+static void align_ncc_add(align_ncc *s, double a, double b)
+{
+    s->sa += a;
+    s->sb += b;
+    s->saa += a * a;
+    s->sbb += b * b;
+    s->sab += a * b;
+    s->n += 1;
+}
+
+/* The NCC of the pairs summed in s, over ncov covered pixels of f2
+ * reference pixels each; ALIGN_INVALID when the covered part is under
+ * ALIGN_MIN_OVERLAP of area (the smaller picture's), what the border bands
+ * leave under ALIGN_MIN_USED, or either side is flat. */
+static double align_ncc_score(const align_ncc *s, double ncov, double f2, double area)
+{
+    double va, vb;
+    if (s->n < 4 || ncov * f2 < ALIGN_MIN_OVERLAP * area || s->n * f2 < ALIGN_MIN_USED * area)
+        return ALIGN_INVALID;
+    va = s->saa - s->sa * s->sa / s->n;
+    vb = s->sbb - s->sb * s->sb / s->n;
+    if (!(va > 1e-9 * s->n) || !(vb > 1e-9 * s->n))
+        return ALIGN_INVALID;
+    return (s->sab - s->sa * s->sb / s->n) / sqrt(va * vb);
+}
+
+/* Area of the smaller picture (reference, or test scaled into reference
+ * pixels) in reference pixels. */
+static double align_area(const align_ctx *c, double scale)
+{
+    double area = (double)c->rw * c->rh, t = scale * scale * c->tw * c->th;
+    return t < area ? t : area;
+}
+
+/* Bounding box in reference pixels of the test placed by p. */
+static void align_bbox(const align_ctx *c, const warp_params *p, double *x0, double *y0, double *x1, double *y1)
+{
+    int q;
+    *x0 = *y0 = 1e300;
+    *x1 = *y1 = -1e300;
+    for (q = 0; q < 4; q++) {
+        double xr, yr;
+        warp_to_ref(p, (q & 1) ? c->tw : 0, (q & 2) ? c->th : 0, &xr, &yr);
+        *x0 = xr < *x0 ? xr : *x0;
+        *x1 = xr > *x1 ? xr : *x1;
+        *y0 = yr < *y0 ? yr : *y0;
+        *y1 = yr > *y1 ? yr : *y1;
+    }
+}
+
+/* Test pyramid level whose pixels best match reference level l's at scale. */
+static int align_test_level(const align_ctx *c, int l, double scale)
+{
+    int k = (int)floor(log2(ldexp(1.0, l) / scale) + 0.5);
+    return k < 0 ? 0 : k >= c->t.n ? c->t.n - 1 : k;
+}
+
 static void align_pyr_free(align_pyr *py)
 {
     while (py->n > 0)
@@ -95,13 +157,9 @@ static double align_eval(const align_ctx *c, const warp_params *p, int l)
     const plane *fr = &c->r.lv[l], *ft;
     double f = ldexp(1.0, l), g, a = dmath_rad(p->angle);
     double cs = cos(a) / p->scale, sn = sin(a) / p->scale;
-    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0, minx = 1e300, maxx = -1e300, miny = 1e300,
-           maxy = -1e300, area, va, vb, bt, ncov = 0;
-    int k = (int)floor(log2(f / p->scale) + 0.5), i, j, i0, i1, j0, j1, q, br;
-    if (k < 0)
-        k = 0;
-    if (k >= c->t.n)
-        k = c->t.n - 1;
+    double minx, maxx, miny, maxy, bt, ncov = 0;
+    align_ncc s = {0, 0, 0, 0, 0, 0};
+    int k = align_test_level(c, l, p->scale), i, j, i0, i1, j0, j1, br;
     ft = &c->t.lv[k];
     g = ldexp(1.0, k);
     /* Leave out a band along each picture's border: where one picture
@@ -110,14 +168,7 @@ static double align_eval(const align_ctx *c, const warp_params *p, int l)
      * pull the scale inwards. The overlap rule still counts the band. */
     bt = (ALIGN_BORDER * f + 3.0 * c->ref_blur) / p->scale;
     br = (int)ALIGN_BORDER;
-    for (q = 0; q < 4; q++) {
-        double xr, yr;
-        warp_to_ref(p, (q & 1) ? c->tw : 0, (q & 2) ? c->th : 0, &xr, &yr);
-        minx = xr < minx ? xr : minx;
-        maxx = xr > maxx ? xr : maxx;
-        miny = yr < miny ? yr : miny;
-        maxy = yr > maxy ? yr : maxy;
-    }
+    align_bbox(c, p, &minx, &miny, &maxx, &maxy);
     if (maxx <= 0 || maxy <= 0 || minx >= c->rw || miny >= c->rh)
         return ALIGN_INVALID;
     i0 = minx / f - 1 < 0 ? 0 : (int)(minx / f - 1);
@@ -128,33 +179,17 @@ static double align_eval(const align_ctx *c, const warp_params *p, int l)
         double yr = (j + 0.5) * f - p->dy;
         for (i = i0; i <= i1; i++) {
             double xr = (i + 0.5) * f - p->dx;
-            double xt = cs * xr - sn * yr, yt = sn * xr + cs * yr, va1, vb1;
+            double xt = cs * xr - sn * yr, yt = sn * xr + cs * yr;
             if (xt < 0 || yt < 0 || xt >= c->tw || yt >= c->th)
                 continue;
             ncov += 1;
             if (xt < bt || yt < bt || xt >= c->tw - bt || yt >= c->th - bt || i < br || j < br ||
                 i >= fr->w - br || j >= fr->h - br)
                 continue;
-            va1 = PLANE_AT(fr, i, j);
-            vb1 = plane_sample(ft, xt / g, yt / g);
-            sa += va1;
-            sb += vb1;
-            saa += va1 * va1;
-            sbb += vb1 * vb1;
-            sab += va1 * vb1;
-            n += 1;
+            align_ncc_add(&s, PLANE_AT(fr, i, j), plane_sample(ft, xt / g, yt / g));
         }
     }
-    area = (double)c->rw * c->rh;
-    if (p->scale * p->scale * c->tw * c->th < area)
-        area = p->scale * p->scale * c->tw * c->th;
-    if (n < 4 || ncov * f * f < ALIGN_MIN_OVERLAP * area || n * f * f < ALIGN_MIN_USED * area)
-        return ALIGN_INVALID;
-    va = saa - sa * sa / n;
-    vb = sbb - sb * sb / n;
-    if (!(va > 1e-9 * n) || !(vb > 1e-9 * n))
-        return ALIGN_INVALID;
-    return (sab - sa * sb / n) / sqrt(va * vb);
+    return align_ncc_score(&s, ncov, f * f, align_area(c, p->scale));
 }
 
 static int align_cand_cmp(const void *a, const void *b)
@@ -180,33 +215,178 @@ static void align_shifts(const align_ctx *c, int l, double area, const plane *m,
             int D = d0 + x, E = e0 + y;
             int u0 = -D > 0 ? -D : 0, v0 = -E > 0 ? -E : 0;
             int u1 = fr->w - D < m->w ? fr->w - D : m->w, v1 = fr->h - E < m->h ? fr->h - E : m->h;
-            double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0, n = 0, ncov = 0, va, vb;
+            double ncov = 0;
+            align_ncc s = {0, 0, 0, 0, 0, 0};
             for (v = v0; v < v1; v++) {
                 const float *rb = &PLANE_AT(fr, D + u0, E + v), *mb = &PLANE_AT(m, u0, v), *kb = &PLANE_AT(mk, u0, v);
                 int inrow = E + v >= br && E + v < fr->h - br;
                 for (u = 0; u < u1 - u0; u++) {
-                    double a = rb[u], b = mb[u];
                     if (kb[u] == 0)
                         continue;
                     ncov += 1;
                     if (kb[u] < 2 || !inrow || D + u0 + u < br || D + u0 + u >= fr->w - br)
                         continue;
-                    sa += a;
-                    sb += b;
-                    saa += a * a;
-                    sbb += b * b;
-                    sab += a * b;
-                    n += 1;
+                    align_ncc_add(&s, rb[u], mb[u]);
                 }
             }
-            va = saa - sa * sa / (n > 0 ? n : 1);
-            vb = sbb - sb * sb / (n > 0 ? n : 1);
-            if (n < 4 || ncov * f2 < ALIGN_MIN_OVERLAP * area || n * f2 < ALIGN_MIN_USED * area || !(va > 1e-9 * n) || !(vb > 1e-9 * n))
-                grid[(size_t)y * gw + x] = (float)ALIGN_INVALID;
-            else
-                grid[(size_t)y * gw + x] = (float)((sab - sa * sb / n) / sqrt(va * vb));
+            grid[(size_t)y * gw + x] = (float)align_ncc_score(&s, ncov, f2, area);
         }
     }
+}
+
+/* The test's edge map resampled into the coarse reference grid for one
+ * scale and angle: m holds edge values, mk is 0 outside the test, 1 in its
+ * border band, 2 elsewhere; m's pixel (u,v) covers reference pixels from
+ * (bx0 + u f, by0 + v f). */
+typedef struct align_map {
+    warp_params p;                 /* the scale and angle; dx = dy = 0 */
+    int l;                         /* reference level */
+    double f, bx0, by0;            /* level pixel size, origin */
+    int mw, mh;
+    plane m, mk;
+} align_map;
+
+/* Number of coarse scale steps: log steps of ALIGN_SCALE_STEP over the range. */
+static int align_nscales(const align_opts *o)
+{
+    if (o->scale_max <= o->scale_min)
+        return 1;
+    return 1 + (int)ceil(log(o->scale_max / o->scale_min) / log(ALIGN_SCALE_STEP));
+}
+
+/* The coarse grid's placement si (scale step), ai (angle step), and its map
+ * size (no pixels yet). */
+static void align_map_init(const align_ctx *c, const align_opts *o, int ns, int si, int ai, align_map *mp)
+{
+    double x1, y1;
+    memset(mp, 0, sizeof *mp);
+    mp->p.scale = ns > 1 ? o->scale_min * pow(o->scale_max / o->scale_min, (double)si / (ns - 1)) : o->scale_min;
+    mp->p.angle = ai * ALIGN_ANGLE_STEP;
+    mp->l = align_level(c, mp->p.scale, ALIGN_COARSE);
+    mp->f = ldexp(1.0, mp->l);
+    align_bbox(c, &mp->p, &mp->bx0, &mp->by0, &x1, &y1);
+    mp->mw = (int)ceil((x1 - mp->bx0) / mp->f);
+    mp->mh = (int)ceil((y1 - mp->by0) / mp->f);
+    mp->mw = mp->mw < 1 ? 1 : mp->mw;
+    mp->mh = mp->mh < 1 ? 1 : mp->mh;
+}
+
+/* Pixel pairs align_shifts visits for the map: every shift of an mw x mh
+ * map over a W x H level meets W*H*mw*mh pairs in all. */
+static double align_map_cost(const align_ctx *c, const align_map *mp)
+{
+    return (double)c->r.lv[mp->l].w * c->r.lv[mp->l].h * mp->mw * mp->mh;
+}
+
+static double align_cost(const align_ctx *c, const align_opts *o)
+{
+    int ns = align_nscales(o), na = (int)floor(o->max_angle / ALIGN_ANGLE_STEP), si, ai;
+    double sum = 0;
+    for (si = 0; si < ns; si++)
+        for (ai = -na; ai <= na; ai++) {
+            align_map mp;
+            align_map_init(c, o, ns, si, ai, &mp);
+            sum += align_map_cost(c, &mp);
+        }
+    return sum;
+}
+
+/* Samples the test edge map into mp->m and mp->mk. 0 or -1. */
+static int align_map_fill(const align_ctx *c, align_map *mp)
+{
+    int k = align_test_level(c, mp->l, mp->p.scale), u, v;
+    const plane *ft = &c->t.lv[k];
+    double g = ldexp(1.0, k), bt = (ALIGN_BORDER * mp->f + 3.0 * c->ref_blur) / mp->p.scale;
+    if (plane_alloc(&mp->m, mp->mw, mp->mh))
+        return -1;
+    if (plane_alloc(&mp->mk, mp->mw, mp->mh)) {
+        plane_free(&mp->m);
+        return -1;
+    }
+    for (v = 0; v < mp->mh; v++)
+        for (u = 0; u < mp->mw; u++) {
+            double xt, yt;
+            warp_to_test(&mp->p, mp->bx0 + (u + 0.5) * mp->f, mp->by0 + (v + 0.5) * mp->f, &xt, &yt);
+            if (xt < 0 || yt < 0 || xt >= c->tw || yt >= c->th)
+                continue;
+            PLANE_AT(&mp->m, u, v) = plane_sample(ft, xt / g, yt / g);
+            /* 2: inside and clear of the border band; 1: in the band */
+            PLANE_AT(&mp->mk, u, v) = xt < bt || yt < bt || xt >= c->tw - bt || yt >= c->th - bt ? 1 : 2;
+        }
+    return 0;
+}
+
+/* A growing list of candidates. */
+typedef struct align_list {
+    align_cand *v;
+    size_t n, cap;
+} align_list;
+
+/* Appends the local maxima of the shift grid (shift (d0+x, e0+y) at
+ * grid[y*gw+x]) as candidates. 0 or -1. */
+static int align_maxima(const align_map *mp, const float *grid, int d0, int e0, int gw, int gh, align_list *all)
+{
+    int x, y;
+    for (y = 0; y < gh; y++)
+        for (x = 0; x < gw; x++) {
+            float val = grid[(size_t)y * gw + x];
+            int du, dv, best = val > ALIGN_INVALID;
+            for (dv = -1; dv <= 1 && best; dv++)
+                for (du = -1; du <= 1 && best; du++)
+                    if ((du || dv) && x + du >= 0 && y + dv >= 0 && x + du < gw && y + dv < gh &&
+                        grid[(size_t)(y + dv) * gw + x + du] > val)
+                        best = 0;
+            if (!best)
+                continue;
+            if (mem_grow((void **)&all->v, &all->cap, all->n + 1, sizeof *all->v))
+                return -1;
+            all->v[all->n].p = mp->p;
+            all->v[all->n].p.dx = (d0 + x) * mp->f + mp->bx0;
+            all->v[all->n].p.dy = (e0 + y) * mp->f + mp->by0;
+            all->v[all->n].score = val;
+            all->n++;
+        }
+    return 0;
+}
+
+/* Scores every shift of one map and adds its local maxima; grid is scratch
+ * (*gcap floats, grown as needed). 0 or -1. */
+static int align_map_search(const align_ctx *c, align_map *mp, float **grid, size_t *gcap, align_list *all)
+{
+    /* shift (D,E) puts m's pixel (u,v) on reference pixel (u+D, v+E) */
+    int d0 = -mp->mw + 1, e0 = -mp->mh + 1;
+    int gw = c->r.lv[mp->l].w + mp->mw - 1, gh = c->r.lv[mp->l].h + mp->mh - 1;
+    if ((size_t)gw * (size_t)gh > *gcap) {
+        mem_free(*grid);
+        *gcap = (size_t)gw * (size_t)gh;
+        if (!(*grid = mem_alloc(*gcap * sizeof **grid))) {
+            *gcap = 0;
+            return -1;
+        }
+    }
+    align_shifts(c, mp->l, align_area(c, mp->p.scale), &mp->m, &mp->mk, d0, e0, gw, gh, *grid);
+    return align_maxima(mp, *grid, d0, e0, gw, gh, all);
+}
+
+/* Greedy suppression of near-duplicates in all (sorted best first):
+ * neighbouring scale, angle and shift steps describe the same placement.
+ * Keeps up to ALIGN_KEEP; returns how many. */
+static int align_distinct(const align_ctx *c, const align_list *all, align_cand *keep)
+{
+    size_t t;
+    int nkeep = 0;
+    for (t = 0; t < all->n && nkeep < ALIGN_KEEP; t++) {
+        const align_cand *a = &all->v[t];
+        double f = ldexp(1.0, align_level(c, a->p.scale, ALIGN_COARSE));
+        int k, dup = 0;
+        for (k = 0; k < nkeep && !dup; k++)
+            dup = fabs(log(a->p.scale / keep[k].p.scale)) < 2.5 * log(ALIGN_SCALE_STEP) &&
+                  fabs(a->p.angle - keep[k].p.angle) < 1.5 * ALIGN_ANGLE_STEP &&
+                  fabs(a->p.dx - keep[k].p.dx) < 3 * f && fabs(a->p.dy - keep[k].p.dy) < 3 * f;
+        if (!dup)
+            keep[nkeep++] = *a;
+    }
+    return nkeep;
 }
 
 /* Exhaustive coarse search; writes up to ALIGN_KEEP distinct candidates,
@@ -215,122 +395,25 @@ static void align_shifts(const align_ctx *c, int l, double area, const plane *m,
  * reference grid, and every integer shift of it is scored. */
 static int align_coarse(const align_ctx *c, const align_opts *o, align_cand *keep)
 {
-    int ns = 1 + (int)ceil(log(o->scale_max / o->scale_min) / log(ALIGN_SCALE_STEP));
-    int na = (int)floor(o->max_angle / ALIGN_ANGLE_STEP), si, ai, nkeep = 0;
-    align_cand *all = NULL;
-    size_t nall = 0, cap = 0, t;
+    int ns = align_nscales(o), na = (int)floor(o->max_angle / ALIGN_ANGLE_STEP), si, ai, rc = 0;
+    align_list all = {NULL, 0, 0};
     float *grid = NULL;
     size_t gcap = 0;
-    if (o->scale_max <= o->scale_min)
-        ns = 1;
-    for (si = 0; si < ns; si++)
-        for (ai = -na; ai <= na; ai++) {
-            warp_params p;
-            plane m, mk;
-            const plane *ft;
-            double f, g, bx0 = 1e300, bx1 = -1e300, by0 = 1e300, by1 = -1e300, bt, area;
-            int l, q, k, mw, mh, d0, e0, gw, gh, x, y, u, v;
-            p.scale = ns > 1 ? o->scale_min * pow(o->scale_max / o->scale_min, (double)si / (ns - 1)) : o->scale_min;
-            p.angle = ai * ALIGN_ANGLE_STEP;
-            p.dx = p.dy = 0;
-            l = align_level(c, p.scale, ALIGN_COARSE);
-            f = ldexp(1.0, l);
-            k = (int)floor(log2(f / p.scale) + 0.5);
-            k = k < 0 ? 0 : k >= c->t.n ? c->t.n - 1 : k;
-            ft = &c->t.lv[k];
-            g = ldexp(1.0, k);
-            bt = (ALIGN_BORDER * f + 3.0 * c->ref_blur) / p.scale;
-            for (q = 0; q < 4; q++) {
-                double xr, yr;
-                warp_to_ref(&p, (q & 1) ? c->tw : 0, (q & 2) ? c->th : 0, &xr, &yr);
-                bx0 = xr < bx0 ? xr : bx0;
-                bx1 = xr > bx1 ? xr : bx1;
-                by0 = yr < by0 ? yr : by0;
-                by1 = yr > by1 ? yr : by1;
-            }
-            mw = (int)ceil((bx1 - bx0) / f);
-            mh = (int)ceil((by1 - by0) / f);
-            mw = mw < 1 ? 1 : mw;
-            mh = mh < 1 ? 1 : mh;
-            if (plane_alloc(&m, mw, mh))
-                goto oom;
-            if (plane_alloc(&mk, mw, mh)) {
-                plane_free(&m);
-                goto oom;
-            }
-            for (v = 0; v < mh; v++)
-                for (u = 0; u < mw; u++) {
-                    double xt, yt;
-                    warp_to_test(&p, bx0 + (u + 0.5) * f, by0 + (v + 0.5) * f, &xt, &yt);
-                    if (xt < 0 || yt < 0 || xt >= c->tw || yt >= c->th)
-                        continue;
-                    PLANE_AT(&m, u, v) = plane_sample(ft, xt / g, yt / g);
-                    /* 2: inside and clear of the border band; 1: in the band */
-                    PLANE_AT(&mk, u, v) = xt < bt || yt < bt || xt >= c->tw - bt || yt >= c->th - bt ? 1 : 2;
-                }
-            /* shift (D,E) puts m's pixel (u,v) on reference pixel (u+D, v+E) */
-            d0 = -mw + 1;
-            e0 = -mh + 1;
-            gw = c->r.lv[l].w + mw - 1;
-            gh = c->r.lv[l].h + mh - 1;
-            if ((size_t)gw * (size_t)gh > gcap) {
-                mem_free(grid);
-                gcap = (size_t)gw * (size_t)gh;
-                grid = mem_alloc(gcap * sizeof *grid);
-                if (!grid) {
-                    plane_free(&m);
-                    plane_free(&mk);
-                    goto oom;
-                }
-            }
-            area = (double)c->rw * c->rh;
-            if (p.scale * p.scale * c->tw * c->th < area)
-                area = p.scale * p.scale * c->tw * c->th;
-            align_shifts(c, l, area, &m, &mk, d0, e0, gw, gh, grid);
-            plane_free(&m);
-            plane_free(&mk);
-            /* local maxima of the shift grid become candidates */
-            for (y = 0; y < gh; y++)
-                for (x = 0; x < gw; x++) {
-                    float val = grid[(size_t)y * gw + x];
-                    int du, dv, best = val > ALIGN_INVALID;
-                    for (dv = -1; dv <= 1 && best; dv++)
-                        for (du = -1; du <= 1 && best; du++)
-                            if ((du || dv) && x + du >= 0 && y + dv >= 0 && x + du < gw && y + dv < gh &&
-                                grid[(size_t)(y + dv) * gw + x + du] > val)
-                                best = 0;
-                    if (!best)
-                        continue;
-                    if (mem_grow((void **)&all, &cap, nall + 1, sizeof *all))
-                        goto oom;
-                    all[nall].p = p;
-                    all[nall].p.dx = (d0 + x) * f + bx0;
-                    all[nall].p.dy = (e0 + y) * f + by0;
-                    all[nall].score = val;
-                    nall++;
-                }
+    for (si = 0; si < ns && !rc; si++)
+        for (ai = -na; ai <= na && !rc; ai++) {
+            align_map mp;
+            align_map_init(c, o, ns, si, ai, &mp);
+            rc = align_map_fill(c, &mp) || align_map_search(c, &mp, &grid, &gcap, &all) ? -1 : 0;
+            plane_free(&mp.m);
+            plane_free(&mp.mk);
         }
     mem_free(grid);
-    if (nall)
-        qsort(all, nall, sizeof *all, align_cand_cmp);
-    /* greedy suppression of near-duplicates (neighbouring scale, angle and
-     * shift steps describe the same placement) */
-    for (t = 0; t < nall && nkeep < ALIGN_KEEP; t++) {
-        int k, dup = 0;
-        double f = ldexp(1.0, align_level(c, all[t].p.scale, ALIGN_COARSE));
-        for (k = 0; k < nkeep && !dup; k++)
-            dup = fabs(log(all[t].p.scale / keep[k].p.scale)) < 2.5 * log(ALIGN_SCALE_STEP) &&
-                  fabs(all[t].p.angle - keep[k].p.angle) < 1.5 * ALIGN_ANGLE_STEP &&
-                  fabs(all[t].p.dx - keep[k].p.dx) < 3 * f && fabs(all[t].p.dy - keep[k].p.dy) < 3 * f;
-        if (!dup)
-            keep[nkeep++] = all[t];
-    }
-    mem_free(all);
-    return nkeep;
-oom:
-    mem_free(grid);
-    mem_free(all);
-    return -1;
+    if (!rc && all.n)
+        qsort(all.v, all.n, sizeof *all.v, align_cand_cmp);
+    if (!rc)
+        rc = align_distinct(c, &all, keep);
+    mem_free(all.v);
+    return rc;
 }
 
 /* Parameters from the search variables x = (log scale, reference position
@@ -407,6 +490,7 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
     static const double stages[] = {64, 128, 256, 512};
     align_ctx c;
     align_cand cand[ALIGN_KEEP + 2 * ALIGN_SPREAD];
+    double cap;
     int n, s, i, rc = 1;
     memset(&c, 0, sizeof c);
     c.rw = ref->w;
@@ -420,7 +504,10 @@ int align_find(const plane *ref, const plane *test, const align_opts *o, align_r
         align_pyr_free(&c.r);
         return -1;
     }
-    n = align_coarse(&c, o, cand);
+    /* the coarse search's cost grows with the scale range, the angle range
+     * and the ratio of the sizes: refused before it starts when over the cap */
+    cap = o->max_cost > 0 ? o->max_cost : ALIGN_MAX_COST;
+    n = align_cost(&c, o) > cap ? (rc = 2, 0) : align_coarse(&c, o, cand);
     if (n < 0)
         rc = -1;
     /* the scale grid is coarse next to small pictures' detail: start the

@@ -44,6 +44,8 @@ typedef struct align_opts {
     double ref_blur;               /* Gaussian sigma already applied to the
                                     * reference (reference px), >= 0; widens the
                                     * band along the test's border */
+    double max_cost;               /* coarse search cost cap in pixel pairs;
+                                    * 0 = ALIGN_MAX_COST */
 } align_opts;
 
 #define ALIGN_SCALE_MIN_DEFAULT 0.25
@@ -51,6 +53,11 @@ typedef struct align_opts {
 #define ALIGN_MAX_ANGLE_DEFAULT 5.0
 #define ALIGN_MIN_OVERLAP 0.5      /* of the smaller picture's area */
 #define ALIGN_MIN_USED 0.25        /* the same, after the border bands */
+/* Cost cap of the coarse search, in pixel pairs compared: the sum over its
+ * scales and angles of (coarse reference level area) x (test map area),
+ * computed before the search starts. 2^32 pairs take about 10 s on one core
+ * of a 2020s machine (docs/compare.md). */
+#define ALIGN_MAX_COST 4294967296.0
 
 typedef struct align_result {
     warp_params p;
@@ -59,6 +66,7 @@ typedef struct align_result {
 
 /* Registers test onto ref (luminance planes, 8-bit units). Returns 0 and
  * fills *out; 1 when no transform in the search ranges overlaps enough
- * (or a picture has no edges at all); -1 when out of memory. */
+ * (or a picture has no edges at all); 2 when the search would cost more
+ * than its cost cap (o->max_cost, else ALIGN_MAX_COST); -1 when out of memory. */
 int align_find(const plane *ref, const plane *test, const align_opts *o, align_result *out);
 #endif

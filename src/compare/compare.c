@@ -5,6 +5,7 @@
 #include "compare/imgload.h"
 #include "compare/metrics.h"
 #include "compare/ssim.h"
+#include "util/outfile.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -147,6 +148,14 @@ static int compare_register(const char *ref_name, const char *test_name, const c
     plane_free(&w->tl);
     if (rc < 0)
         return compare_oom(err);
+    if (rc == 2)
+        return diag_at(err, DIAG_INPUT, ref_name, 0, 0,
+                       "the registration search over scale %g..%g and angles within %g degrees would compare "
+                       "more than %.0f pixel pairs (%dx%d reference, %dx%d test); narrow --scale-range or "
+                       "--max-angle",
+                       o->align.scale_min, o->align.scale_max, o->align.max_angle,
+                       o->align.max_cost > 0 ? o->align.max_cost : ALIGN_MAX_COST, w->r[0].w,
+                       w->r[0].h, w->t[0].w, w->t[0].h);
     if (rc > 0)
         return diag_at(err, DIAG_INPUT, ref_name, 0, 0,
                        "registration found no placement of the test covering half of the smaller picture "
@@ -165,28 +174,32 @@ static int compare_register(const char *ref_name, const char *test_name, const c
     return 0;
 }
 
-/* Writes the requested pictures. */
-static int compare_pictures(const compare_opts *o, int nch, const compare_work *w, diag *err)
+/* Writes one requested picture made by make. */
+static int compare_picture(const char *path, int (*make)(const plane *, const plane *, int, const plane *,
+                                                         image *, diag *),
+                           int nch, const compare_work *w, diag *err)
 {
     image img;
     int rc;
-    if (o->diff_path) {
-        if (diffpic_heat(w->r, w->t, nch, &w->mask, &img, err))
-            return err->status;
-        rc = image_write_png(o->diff_path, &img, err);
-        image_free(&img);
-        if (rc)
-            return rc;
-    }
-    if (o->sbs_path) {
-        if (diffpic_side_by_side(w->r, w->t, nch, &w->mask, &img, err))
-            return err->status;
-        rc = image_write_png(o->sbs_path, &img, err);
-        image_free(&img);
-        if (rc)
-            return rc;
-    }
-    return 0;
+    if (!path)
+        return 0;
+    if (make(w->r, w->t, nch, &w->mask, &img, err))
+        return err->status;
+    rc = image_write_png(path, &img, err);
+    image_free(&img);
+    return rc;
+}
+
+/* Writes the requested pictures: both or neither. */
+static int compare_pictures(const compare_opts *o, int nch, const compare_work *w, diag *err)
+{
+    int rc;
+    outfile_batch_begin();
+    if ((rc = compare_picture(o->diff_path, diffpic_heat, nch, w, err)) ||
+        (rc = compare_picture(o->sbs_path, diffpic_side_by_side, nch, w, err)) ||
+        (rc = outfile_batch_commit(err)))
+        outfile_batch_abort();
+    return rc;
 }
 
 int compare_images(const char *ref_name, const image *ref, const char *test_name, const image *test,
@@ -265,11 +278,24 @@ int compare_files(const char *ref_path, const char *test_path, const compare_opt
                   diag *err)
 {
     image ref, test;
+    const char *outs[2];
     int rc;
+    outs[0] = o->diff_path;
+    outs[1] = o->sbs_path;
+    /* outputs checked before and after the inputs are read: a bad
+     * directory fails before any reading, an output that is an input before
+     * any work */
+    if (outfile_check_set(outs, 2, err))
+        return err->status;
     if (imgload_read(ref_path, COMPARE_MAX_READ_PIXELS, &ref, err))
         return err->status;
     if (imgload_read(test_path, COMPARE_MAX_READ_PIXELS, &test, err)) {
         image_free(&ref);
+        return err->status;
+    }
+    if (outfile_check_set(outs, 2, err)) {
+        image_free(&ref);
+        image_free(&test);
         return err->status;
     }
     rc = compare_images(ref_path, &ref, test_path, &test, o, out, err);

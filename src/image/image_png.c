@@ -92,19 +92,32 @@ int image_write_png_palette(const char *path, int width, int height, const uint8
 int image_read_png_memory(const char *name, const void *data, size_t len, int channels,
                           image *out, diag *err)
 {
+    return image_read_png_memory_limit(name, data, len, channels, NULL, out, err);
+}
+
+int image_read_png_memory_limit(const char *name, const void *data, size_t len, int channels,
+                                const image_limits *lim, image *out, diag *err)
+{
     png_image pi;
     image img;
     void *cmap = NULL;
     int indexed = channels == IMAGE_INDEXED;
+    int max_side = lim && lim->max_side > 0 && lim->max_side < IMAGE_MAX_SIDE ? lim->max_side : IMAGE_MAX_SIDE;
+    size_t max_px = lim && lim->max_pixels > 0 && lim->max_pixels < IMAGE_MAX_PIXELS ? lim->max_pixels
+                                                                                    : IMAGE_MAX_PIXELS;
     memset(&pi, 0, sizeof pi);
     pi.version = PNG_IMAGE_VERSION;
     if (channels != 1 && channels != 3 && !indexed)
         return diag_at(err, DIAG_USAGE, name, 0, 0, "internal: bad channel count");
     if (!png_image_begin_read_from_memory(&pi, data, len))
         return diag_at(err, DIAG_INPUT, name, 0, 0, "not a readable PNG: %s", pi.message);
-    if (pi.width > IMAGE_MAX_SIDE || pi.height > IMAGE_MAX_SIDE) {
-        diag_at(err, DIAG_INPUT, name, 0, 0, "image size %lux%lu is outside 1..%d per side",
-                (unsigned long)pi.width, (unsigned long)pi.height, IMAGE_MAX_SIDE);
+    /* The header alone has been read: refuse a size bomb before any pixel
+     * is inflated. */
+    if (pi.width > (png_uint_32)max_side || pi.height > (png_uint_32)max_side ||
+        (size_t)pi.width * pi.height > max_px) {
+        diag_at(err, DIAG_INPUT, name, 0, 0,
+                "image size %lux%lu is over the limit of %d per side and %zu pixels",
+                (unsigned long)pi.width, (unsigned long)pi.height, max_side, max_px);
         png_image_free(&pi);
         return DIAG_INPUT;
     }
@@ -139,12 +152,17 @@ int image_read_png_memory(const char *name, const void *data, size_t len, int ch
 
 int image_read_png(const char *path, int channels, image *out, diag *err)
 {
+    return image_read_png_limit(path, channels, NULL, out, err);
+}
+
+int image_read_png_limit(const char *path, int channels, const image_limits *lim, image *out, diag *err)
+{
     char *data;
     size_t len;
     int rc;
-    if (infile_read_all(path, (size_t)1 << 30, &data, &len, err))
+    if (infile_read_all(path, IMAGE_PNG_MAX_BYTES, &data, &len, err))
         return err->status;
-    rc = image_read_png_memory(path, data, len, channels, out, err);
+    rc = image_read_png_memory_limit(path, data, len, channels, lim, out, err);
     mem_free(data);
     return rc;
 }

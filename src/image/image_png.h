@@ -23,9 +23,22 @@ int image_write_png_palette(const char *path, int width, int height, const uint8
 /* Reads any PNG, converted to `channels` (1 or 3) 8-bit channels; alpha is
  * composited over black. With channels IMAGE_INDEXED the result has one
  * channel holding a palette PNG's palette indices, or another PNG's grey
- * values. Refuses files over 1 GiB and sizes over the limits. */
+ * values. Refuses files over 1 GiB and sizes over the IMAGE_MAX_ limits,
+ * from the header. */
 int image_read_png(const char *path, int channels, image *out, diag *err);
 /* The same from memory (name is used in diagnostics). */
 int image_read_png_memory(const char *name, const void *data, size_t len, int channels,
                           image *out, diag *err);
+
+#define IMAGE_PNG_MAX_BYTES ((size_t)1 << 30)
+/* Size limits a reader checks from the PNG header, before any pixel is
+ * decoded; 0 (or over the IMAGE_MAX_ limits) means the IMAGE_MAX_ limits. */
+typedef struct image_limits {
+    int max_side;
+    size_t max_pixels;
+} image_limits;
+/* image_read_png and image_read_png_memory with limits (NULL: the defaults). */
+int image_read_png_limit(const char *path, int channels, const image_limits *lim, image *out, diag *err);
+int image_read_png_memory_limit(const char *name, const void *data, size_t len, int channels,
+                                const image_limits *lim, image *out, diag *err);
 #endif

@@ -55,6 +55,7 @@ void render_stats_add(render_stats *a, const render_stats *b)
     a->range_cut += b->range_cut;
     a->uv_skipped += b->uv_skipped;
     a->shadow_skipped += b->shadow_skipped;
+    a->rays_capped += b->rays_capped;
 }
 
 void render_stats_print(FILE *f, const render_stats *st)
@@ -73,6 +74,8 @@ void render_stats_print(FILE *f, const render_stats *st)
     if (st->arena_full)
         fprintf(f, "csg.arena_full=%llu\n", st->arena_full);
     fprintf(f, "range.cut=%llu\n", st->range_cut);
+    if (st->rays_capped)
+        fprintf(f, "rays.capped=%llu\n", st->rays_capped);
 }
 
 int render_region_check(const int region[4], int width, int height)

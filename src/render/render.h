@@ -1,6 +1,6 @@
 /* render — the mode-independent rendering driver. It picks a numeric mode's
  * ops table by name, has that mode compile the scene model, splits the image
- * into tiles rendered by OpenMP threads, and sums the per-thread counters.
+ * into tiles rendered by worker threads, and sums the per-thread counters.
  * Output: an RGB8 framebuffer plus the primitive id (PID) seen at each pixel.
  * Data flow: scene (double) -> ops->compile -> tiles -> render_fb -> sinks. */
 #ifndef RENDER_H
@@ -15,6 +15,10 @@
 #define RENDER_TILE 32        /* tile side in pixels */
 #define RENDER_MAX_AA 16      /* samples per pixel side */
 #define RENDER_MAX_THREADS 256
+/* Secondary (reflected and refracted) rays a pixel may trace, per sample:
+ * with the energy rule (DIFFUSE + MIRROR + TRANSMIT <= 1) and the weight
+ * cut, real decks stay far below it (scenes/glass.scene: under 20). */
+#define RENDER_MAX_RAYS_PER_SAMPLE 1024
 
 typedef struct render_stats {
     unsigned long long rays_primary, rays_shadow, rays_reflected, rays_refracted;
@@ -28,6 +32,7 @@ typedef struct render_stats {
      * PDS, texture or bump on the face), shadow rays not traced (the
      * attribute has no diffuse or specular term) */
     unsigned long long uv_skipped, shadow_skipped;
+    unsigned long long rays_capped;   /* secondary rays not traced: the pixel's ray cap was spent */
     double time_compile_s, time_render_s;
 } render_stats;
 

@@ -26,15 +26,16 @@ static uint64_t render_part_get64(const uint8_t *p)
     return (uint64_t)render_part_get32(p) << 32 | render_part_get32(p + 4);
 }
 
-/* The counters in the order of the layout: thirteen, then the HFP
+/* The counters in the order of the layout: fourteen, then the HFP
  * exceptions. */
 static unsigned long long *render_part_counter(render_stats *s, int i)
 {
-    unsigned long long *const c[13] = {
+    unsigned long long *const c[14] = {
         &s->rays_primary, &s->rays_shadow, &s->rays_reflected, &s->rays_refracted,
         &s->pds_lookups, &s->fx_overflows, &s->prim_tests, &s->bound_tests,
-        &s->csg_pruned, &s->arena_full, &s->range_cut, &s->uv_skipped, &s->shadow_skipped};
-    return i < 13 ? c[i] : &s->hfp_exc[i - 13];
+        &s->csg_pruned, &s->arena_full, &s->range_cut, &s->uv_skipped, &s->shadow_skipped,
+        &s->rays_capped};
+    return i < 14 ? c[i] : &s->hfp_exc[i - 14];
 }
 
 size_t render_part_bytes(const int region[4])

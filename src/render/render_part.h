@@ -9,10 +9,10 @@
  *   16 16  region x0 y0 x1 y1   (pixels [x0,x1) x [y0,y1))
  *   32  4  samples per pixel side (--aa)
  *   36  8  numeric mode name, NUL-padded ("q16", "f64", ...)
- *   44 152 render_stats: 19 counters (u64: the thirteen of render_stats,
+ *   44 160 render_stats: 20 counters (u64: the fourteen of render_stats,
  *          then the six HFP exceptions), then compile and render seconds as
  *          binary64 bit patterns (u64)
- *   212    region pixels, rows top first: RGB8 (3 bytes each), then the
+ *   220    region pixels, rows top first: RGB8 (3 bytes each), then the
  *          primitive ids (i32 each, -1 = background)
  * Pure functions over memory; the caller reads and writes files. */
 #ifndef RENDER_PART_H
@@ -22,7 +22,7 @@
 #include "render/render.h"
 #include "util/diag.h"
 
-#define RENDER_PART_COUNTERS (13 + HFP_EXC_N)
+#define RENDER_PART_COUNTERS (14 + HFP_EXC_N)
 #define RENDER_PART_HEADER (44 + 8 * RENDER_PART_COUNTERS + 16)
 
 typedef struct render_part_info {

@@ -77,6 +77,11 @@ int scene_parse_image(scene_parser *p, const char *what, scene_loc at, const cha
     r = p->loader->image(p->loader->ctx, name, channels, &img, &e);
     if (channels == IMAGE_INDEXED)
         channels = 1;
+    if (r == 0 && (size_t)img.width * (size_t)img.height > SCENE_IMAGE_MAX_PIXELS) {
+        snprintf(e.msg, sizeof e.msg, "image of %dx%d pixels is over the limit of %zu", img.width, img.height,
+                 SCENE_IMAGE_MAX_PIXELS);
+        r = DIAG_INPUT;
+    }
     if (r == 0 && (img.channels != channels || img.width < 1 || img.height < 1 || !img.px)) {
         /* a loader that breaks its contract must not reach the builders */
         snprintf(e.msg, sizeof e.msg, "not a %d-channel image", channels);
@@ -330,6 +335,45 @@ static int scene_parse_add_attr(scene_parser *p, const scene_attr *a, const scen
     return 0;
 }
 
+/* Passes a warning at token t to the loader's warn(). */
+static void scene_parse_warn(scene_parser *p, const scene_lex_tok *t, const char *msg)
+{
+    diag w;
+    if (!p->loader || !p->loader->warn)
+        return;
+    diag_init(&w);
+    diag_at(&w, DIAG_INPUT, p->file, t->line, t->col, "%s", msg);
+    p->loader->warn(p->loader->ctx, &w);
+}
+
+/* Energy conservation: a surface cannot send on more light than reaches
+ * it, DIFFUSE + MIRROR + TRANSMIT <= 1. It also bounds the ray tree: the
+ * weights of the rays of one depth then sum to at most 1, so the weight cut
+ * (trace.c) leaves at most 1/TRACE_MIN_WEIGHT rays per depth. A DIFFUSE the
+ * deck did not write becomes what MIRROR and TRANSMIT leave of 1 (if less
+ * than its default); coefficients the deck wrote that sum over 1 are scaled
+ * to sum 1, with a warning at the attribute's name. */
+static void scene_parse_energy(scene_parser *p, scene_attr *a, int diffuse_written, const scene_lex_tok *at)
+{
+    double sum, k;
+    char msg[256];
+    if (!diffuse_written && a->diffuse + a->mirror + a->transmit > 1)
+        a->diffuse = a->mirror + a->transmit < 1 ? 1 - a->mirror - a->transmit : 0;
+    sum = a->diffuse + a->mirror + a->transmit;
+    if (sum <= 1 + 1e-9)
+        return;
+    k = 1 / sum;
+    snprintf(msg, sizeof msg,
+             "ATTR %s: DIFFUSE %g + MIRROR %g + TRANSMIT %g = %g sends on more light than arrives; scaled by "
+             "%.4g to DIFFUSE %.4g, MIRROR %.4g, TRANSMIT %.4g",
+             a->name, a->diffuse, a->mirror, a->transmit, sum, k, a->diffuse * k, a->mirror * k,
+             a->transmit * k);
+    a->diffuse *= k;
+    a->mirror *= k;
+    a->transmit *= k;
+    scene_parse_warn(p, at, msg);
+}
+
 /* ATTR name COLOR r g b {option value} [TEXTURE t] [BUMP b]: appends an
  * attribute; the option table gives each coefficient's keyword, range and
  * field; TEXTURE and BUMP name a texture or bump defined earlier. */
@@ -400,13 +444,16 @@ static int scene_parse_attr(scene_parser *p, scene_cur *c)
     }
     if (!seen[NOPT])
         return scene_cur_error(c, NULL, "COLOR is required");
-    /* A mirror reflects, a transparent attribute transmits, unless told how much. */
+    /* A mirror reflects, a transparent attribute transmits, unless told how
+     * much: all the light the other written coefficient leaves (the energy
+     * rule below then holds). */
     if (a.model == SHADE_MIRROR && !seen[4])
-        a.mirror = 1;
+        a.mirror = seen[5] ? 1 - a.transmit : 1;
     if (a.model == SHADE_TRANSPARENT && !seen[5])
-        a.transmit = 1;
+        a.transmit = seen[4] ? 1 - a.mirror : 1;
     if (a.model == SHADE_TRANSPARENT && !seen[6])
         a.ior = 1.5;
+    scene_parse_energy(p, &a, seen[1], at);
     return scene_parse_add_attr(p, &a, kw);
 }
 

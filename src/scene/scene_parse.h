@@ -16,7 +16,11 @@
  * image_read_png), or returns a diag status with err saying why; the parser
  * adds the record and column. warn(), if not NULL, receives each warning
  * (a diag with status 0: location and text), e.g. an item that ends in
- * column 72 against a sequence number. */
+ * column 72 against a sequence number, or an attribute that sends on more
+ * light than arrives. */
+#define SCENE_IMAGE_MAX_PIXELS ((size_t)1 << 24)   /* an image a deck names (16 Mpixels) */
+/* A loader must refuse an image over SCENE_IMAGE_MAX_PIXELS from its header,
+ * before decoding it; the parser refuses one that gets through. */
 typedef struct scene_loader {
     int (*image)(void *ctx, const char *name, int channels, image *out, diag *err);
     void *ctx;

@@ -91,6 +91,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
             double sum[3] = {0, 0, 0};
             int pid = -1;
             unsigned char *px = fb->img.px + 3 * ((size_t)y * (size_t)o->width + (size_t)x);
+            tc->rays_left = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)(aa * aa);
             for (j = 0; j < aa; j++)
                 for (i = 0; i < aa; i++) {
                     double sx = (2 * (x + (i + 0.5) / aa) / o->width - 1) * cs->tan_half * aspect;
@@ -139,6 +140,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     st->csg_pruned += tc->gs.pruned;
     st->arena_full += tc->gs.arena_full;
     st->range_cut += tc->rs.range_cut;
+    st->rays_capped += tc->rs.rays_capped;
 }
 
 const render_ops NS(render_ops) = {

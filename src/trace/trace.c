@@ -112,6 +112,17 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
     return 0;
 }
 
+/* Takes one secondary ray from the pixel's cap; 0 (counted) when spent. */
+static int trace_budget(trace_ctx *tc)
+{
+    if (tc->rays_left == 0) {
+        tc->rs.rays_capped++;
+        return 0;
+    }
+    tc->rays_left--;
+    return 1;
+}
+
 void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
                    double weight, double rgb[3], int *pid)
 {
@@ -203,7 +214,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         int tir = at->ior > 0 ? NS(optics_refract)(r->d, nsn, inside ? at->ior : 1.0 / at->ior, &td) : 1;
         if (tir > 0) {
             refl += trans;                   /* total internal reflection */
-        } else if (tir == 0) {
+        } else if (tir == 0 && trace_budget(tc)) {
             prim_ray tr;
             double tc3[3];
             trace_spawn(&tr, p, td, h.prim, sf.n);
@@ -217,7 +228,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         vec3 rd;
         prim_ray rr;
         double rc[3];
-        if (!NS(optics_reflect)(r->d, nsn, &rd)) {
+        if (!NS(optics_reflect)(r->d, nsn, &rd) && trace_budget(tc)) {
             trace_spawn(&rr, p, rd, h.prim, sf.n);
             tc->rs.rays_reflected++;
             NS(trace_ray)(cs, tc, &rr, depth + 1, weight * refl, rc, NULL);

@@ -11,6 +11,7 @@ typedef struct trace_ctx {
     arena ar;
     geom_stats gs;
     render_stats rs;
+    unsigned long rays_left;   /* secondary rays the current pixel may still trace */
 } trace_ctx;
 
 /* 0, or -1 when memory runs out. */

@@ -76,9 +76,11 @@ void diag_print(FILE *f, const diag *d)
     fprintf(f, "maprt: %s\n", buf);
 }
 
+void diag_format_warning(const diag *d, char *buf, size_t size) { diag_format_as(d, "warning", buf, size); }
+
 void diag_print_warning(FILE *f, const diag *d)
 {
     char buf[1024];
-    diag_format_as(d, "warning", buf, sizeof buf);
+    diag_format_warning(d, buf, sizeof buf);
     fprintf(f, "maprt: %s\n", buf);
 }

@@ -38,6 +38,8 @@ int diag_offset(diag *d, int status, const char *file, long long offset,
 void diag_format(const diag *d, char *buf, size_t size);
 /* Prints "maprt: <formatted>\n" to f. */
 void diag_print(FILE *f, const diag *d);
+/* The same for a warning: "FILE:LINE:COL: warning: TEXT". */
+void diag_format_warning(const diag *d, char *buf, size_t size);
 /* The same with "warning:" in place of "error:" (for a diag that reports a
  * warning, whatever its status). */
 void diag_print_warning(FILE *f, const diag *d);

@@ -1,7 +1,10 @@
 /* sniff — file kinds by magic number (see sniff.h). */
 #include "util/sniff.h"
+#include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 static const struct sniff_info {
     const char *name, *reader;
@@ -59,16 +62,31 @@ sniff_kind sniff_data(const void *data, size_t len)
     return n ? SNIFF_TEXT : SNIFF_UNKNOWN;
 }
 
+/* The first SNIFF_BYTES of a regular file; -1 for anything else (a FIFO,
+ * a device, a directory, a file that cannot be opened), which is left to
+ * the reader to report. Opened without blocking: a FIFO with no writer
+ * must not hang the sniff. */
+static long sniff_head(const char *path, unsigned char *buf)
+{
+    struct stat st;
+    ssize_t n;
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    if (fd < 0)
+        return -1;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return -1;
+    }
+    n = read(fd, buf, SNIFF_BYTES);
+    close(fd);
+    return n < 0 ? -1 : (long)n;
+}
+
 sniff_kind sniff_file(const char *path)
 {
     unsigned char buf[SNIFF_BYTES];
-    size_t n;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return SNIFF_UNKNOWN;
-    n = fread(buf, 1, sizeof buf, f);
-    fclose(f);
-    return sniff_data(buf, n);
+    long n = sniff_head(path, buf);
+    return n < 0 ? SNIFF_UNKNOWN : sniff_data(buf, (size_t)n);
 }
 
 
@@ -92,11 +110,8 @@ int sniff_refuse_data(const void *data, size_t len, const char *label, unsigned 
 int sniff_refuse(const char *path, const char *label, unsigned accepted, const char *wanted, diag *err)
 {
     unsigned char buf[SNIFF_BYTES];
-    size_t n;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return 0;      /* the reader reports what is wrong with opening it */
-    n = fread(buf, 1, sizeof buf, f);
-    fclose(f);
-    return sniff_refuse_data(buf, n, label, accepted, wanted, err);
+    long n = sniff_head(path, buf);
+    if (n < 0)
+        return 0;      /* the reader reports what is wrong with it */
+    return sniff_refuse_data(buf, (size_t)n, label, accepted, wanted, err);
 }

@@ -32,7 +32,7 @@ expect 1 "maprt: $t/empty.png: error: empty file (not a PNG, PNM, JPEG or TIFF i
 expect 1 "maprt: $t/text.png: error: this is a text file, not a picture (PNG, PNM, JPEG or TIFF); did you mean \`maprt render\`?" "$t/a.pgm" "$t/text.png"
 expect 1 "maprt: $t/zero.pgm: error: image size 0x12 is empty" "$t/zero.pgm" "$t/a.pgm"
 expect 1 "maprt: $t/short.pgm: offset 13: error: raster truncated: 2 bytes present, 16 needed" "$t/short.pgm" "$t/a.pgm"
-expect 1 "maprt: $t: error: is a directory, not a picture" "$t" "$t/a.pgm"
+expect 1 "maprt: $t: error: is a directory, not a regular file" "$t" "$t/a.pgm"
 expect 1 "maprt: $t/b.pgm: error: size 13x12 differs from the reference's 12x12; use --register to compare pictures of different sizes" "$t/a.pgm" "$t/b.pgm"
 expect 1 "maprt: $t/flat.pgm: error: the picture is one flat tone: there is nothing to register on" "$t/a.pgm" "$t/flat.pgm" --register
 expect 1 "maprt: $t/a.pgm: error: crop 5,5,10,10 is not inside the 12x12 reference" "$t/a.pgm" "$t/a.pgm" --crop 5,5,10,10

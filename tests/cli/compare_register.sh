@@ -60,4 +60,17 @@ out=$("$MAPRT" compare "$t/sbs.png" "$t/sbs.png") || fail "PNG compare failed"
 out=$("$MAPRT" compare "$t/render.ppm" "$t/render.ppm") || fail "identical compare failed"
 [ "$(get psnr)" = inf ] && [ "$(get ssim)" = 1.000000 ] && [ "$(get pixels_over)" = 0.000000 ] &&
   [ "$(get channels)" = rgb ] && [ "$(get overlap)" = 1.000000 ] || fail "identical pair not perfect: $out"
+
+# The registration search is bounded by its cost cap: two 32x32 pictures
+# over scale 0.01..100 and 45 degrees (about 10^12 pixel pairs, past 600 s
+# before the cap) are refused at once, before any search.
+printf 'P5 32 32 255\n' > "$t/small.pgm"
+i=0; while [ $i -lt 1024 ]; do printf "\\$(printf '%03o' $(( (i * 7 + i / 32 * 13) % 256 )))"; i=$((i + 1)); done >> "$t/small.pgm"
+start=$(date +%s)
+timeout 60 "$MAPRT" compare "$t/small.pgm" "$t/small.pgm" --register --scale-range 0.01,100 --max-angle 45 \
+  > /dev/null 2> "$t/err"; rc=$?
+[ "$rc" -eq 1 ] || fail "over-cap registration: exit $rc: $(cat "$t/err")"
+grep -q "would compare more than 4294967296 pixel pairs (32x32 reference, 32x32 test); narrow --scale-range" "$t/err" ||
+  fail "cost cap message: $(cat "$t/err")"
+[ $(( $(date +%s) - start )) -lt 20 ] || fail "the refusal took more than 20 s"
 exit 0

@@ -36,7 +36,7 @@ $MAPRT merge "$tmp/p-0,0,90,33" "$tmp/q16" -o "$tmp/x.png" 2> "$tmp/e"; [ $? -eq
 grep -q 'first part is 90x70 f64 with --aa 2' "$tmp/e" || fail "mix: $(cat "$tmp/e")"
 head -c 100 "$tmp/all" > "$tmp/short"
 $MAPRT merge "$tmp/short" -o "$tmp/x.png" 2> "$tmp/e"; [ $? -eq 1 ] || fail "short"
-grep -q 'offset 100: error: a region file has a 212-byte header' "$tmp/e" || fail "short: $(cat "$tmp/e")"
+grep -q 'offset 100: error: a region file has a 220-byte header' "$tmp/e" || fail "short: $(cat "$tmp/e")"
 $MAPRT render $deck --size 90x70 --region 0,0,91,10 --part "$tmp/x" 2> "$tmp/e"; [ $? -eq 2 ] || fail "outside"
 grep -q 'not inside the 90x70 image' "$tmp/e" || fail "outside: $(cat "$tmp/e")"
 $MAPRT render $deck --size 90x70 --region 5,5,5,9 --part "$tmp/x" 2> "$tmp/e"; [ $? -eq 2 ] || fail "empty"

@@ -6,6 +6,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include <math.h>
+#include <png.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -579,16 +580,24 @@ static void test_compare_input_errors(void **state)
     /* too large for the limit: refused from the header */
     {
         static const char big[] = "P5 40 30 255\n";
-        static const unsigned char png[24] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13,
-                                              'I', 'H', 'D', 'R', 0, 0, 1, 0, 0, 0, 0, 200};
+        /* a real 256x200 PNG, from libpng */
+        static unsigned char grey[256 * 200], png[4096];
+        png_image pi;
+        png_alloc_size_t plen = sizeof png;
+        memset(&pi, 0, sizeof pi);
+        pi.version = PNG_IMAGE_VERSION;
+        pi.width = 256;
+        pi.height = 200;
+        pi.format = PNG_FORMAT_GRAY;
+        assert_true(png_image_write_to_memory(&pi, png, &plen, 0, grey, 256, NULL));
         diag_init(&err);
         assert_int_equal(imgload_memory("big.pgm", big, sizeof big - 1, 1000, &b, &err), DIAG_INPUT);
         diag_format(&err, buf, sizeof buf);
         assert_string_equal(buf, "big.pgm: error: 40x30 pixels is over the 1000 this command reads; scale it down");
         diag_init(&err);
-        assert_int_equal(imgload_memory("big.png", png, sizeof png, 50000, &b, &err), DIAG_INPUT);
+        assert_int_equal(imgload_memory("big.png", png, plen, 50000, &b, &err), DIAG_INPUT);
         diag_format(&err, buf, sizeof buf);
-        assert_string_equal(buf, "big.png: error: 256x200 pixels is over the 50000 this command reads; scale it down");
+        assert_string_equal(buf, "big.png: error: image size 256x200 is over the limit of 32768 per side and 50000 pixels");
     }
     image_free(&a);
     image_free(&b);

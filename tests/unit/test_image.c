@@ -9,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include <dirent.h>
 #include <sys/stat.h>
 #include "image/image_png.h"
 #include "image/image_png_write.h"
@@ -33,19 +32,6 @@ static int teardown(void **state)
     (void)state;
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     return system(cmd) == 0 ? 0 : -1;
-}
-
-/* Number of entries other than . and .. in directory path. */
-static int dir_entries(const char *path)
-{
-    DIR *d = opendir(path);
-    struct dirent *e;
-    int n = 0;
-    assert_non_null(d);
-    while ((e = readdir(d)))
-        n += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
-    closedir(d);
-    return n;
 }
 
 static void test_image_png_round_trip_rgb_and_grey(void **state)
@@ -206,9 +192,9 @@ static void test_image_outfile_commits_only_on_success(void **state)
     assert_int_equal(outfile_write(&of, "abc", 3, &err), 0);
     assert_int_equal(access(path, F_OK), -1);          /* not there before commit */
     outfile_abort(&of);
-    assert_int_equal(dir_entries(sub), 0);                /* abort leaves nothing */
+    assert_int_equal(test_dir_entries(sub), 0);                /* abort leaves nothing */
     assert_int_equal(outfile_write_all(path, "hello", 5, &err), 0);
-    assert_int_equal(dir_entries(sub), 1);
+    assert_int_equal(test_dir_entries(sub), 1);
     assert_int_equal(infile_read_all(path, 5, &data, &len, &err), 0);
     assert_int_equal(len, 5);
     assert_memory_equal(data, "hello", 5);

@@ -125,9 +125,58 @@ static void test_scene_parse_light_and_attr(void **state)
                 a->diffuse == 0.6 && a->specular == 0.7 && a->exponent == 33 &&
                 a->mirror == 0 && a->transmit == 0 && a->ior == 1);
     a = &s->attrs[2];
-    assert_true(a->ior == 1.5 && a->transmit == 0.9 && a->mirror == 0.1 && a->diffuse == 0.8);
+    /* DIFFUSE not written: what MIRROR and TRANSMIT leave of 1 */
+    assert_true(a->ior == 1.5 && a->transmit == 0.9 && a->mirror == 0.1 && a->diffuse == 0);
     assert_int_equal(a->loc.line, 7);
     assert_int_equal(s->prims[0].attr, 2);
+    scene_free(s);
+}
+
+/* Collects the warnings of a parse, formatted. */
+typedef struct warnings {
+    int n;
+    char text[4][512];
+} warnings;
+
+static void collect_warning(void *ctx, const diag *w)
+{
+    warnings *ws = ctx;
+    if (ws->n < 4)
+        diag_format_warning(w, ws->text[ws->n], sizeof ws->text[0]);
+    ws->n++;
+}
+
+/* Energy conservation at parse: the issue's deck (MIRROR 0.9 TRANSMIT 0.9
+ * with DEPTH 32, which never finished) is scaled to sum 1 with a warning at
+ * the attribute's name; a DIFFUSE left to its default gives way silently;
+ * coefficients that conserve energy are kept exactly. */
+static void test_scene_parse_energy(void **state)
+{
+    static const char deck[] = TAIL "DEPTH 32\nATTR GLASS COLOR 1 1 1 DIFFUSE 0.2 MIRROR 0.9 TRANSMIT 0.9 IOR 1.5\n"
+                               "ATTR A COLOR 1 1 1 MIRROR 0.3\nATTR B COLOR 1 1 1 DIFFUSE 0.5 MIRROR 0.5\n"
+                               "SPHERE S 1 ATTR GLASS\nOBJECT S\n";
+    warnings ws;
+    scene_loader ld = {NULL, &ws, collect_warning};
+    recsrc src;
+    recsrc_mem m;
+    scene *s = NULL;
+    diag err;
+    const scene_attr *a;
+    (void)state;
+    memset(&ws, 0, sizeof ws);
+    diag_init(&err);
+    recsrc_from_memory(&src, &m, "t.scene", deck, strlen(deck));
+    assert_int_equal(scene_parse_with(&src, &ld, &s, &err), 0);
+    assert_int_equal(ws.n, 1);
+    assert_string_equal(ws.text[0], "t.scene:5:6: warning: ATTR GLASS: DIFFUSE 0.2 + MIRROR 0.9 + TRANSMIT 0.9 = 2 "
+                                    "sends on more light than arrives; scaled by 0.5 to DIFFUSE 0.1, MIRROR 0.45, "
+                                    "TRANSMIT 0.45");
+    a = &s->attrs[1];
+    assert_true(fabs(a->diffuse - 0.1) < 1e-12 && fabs(a->mirror - 0.45) < 1e-12 && fabs(a->transmit - 0.45) < 1e-12);
+    a = &s->attrs[2];
+    assert_true(a->mirror == 0.3 && fabs(a->diffuse - 0.7) < 1e-12);
+    a = &s->attrs[3];
+    assert_true(a->mirror == 0.5 && a->diffuse == 0.5);
     scene_free(s);
 }
 
@@ -850,6 +899,7 @@ int main(void)
         cmocka_unit_test(test_scene_parse_view_statements),
         cmocka_unit_test(test_scene_parse_defaults),
         cmocka_unit_test(test_scene_parse_light_and_attr),
+        cmocka_unit_test(test_scene_parse_energy),
         cmocka_unit_test(test_scene_parse_primitives),
         cmocka_unit_test(test_scene_parse_csg_fold),
         cmocka_unit_test(test_scene_parse_transform_order),

@@ -154,7 +154,7 @@ static void test_scene_pds_models_local_grooves(void **state)
     assert_int_equal(s->attrs[1].model, SHADE_MIRROR);
     assert_true(s->attrs[1].mirror == 1);
     assert_int_equal(s->attrs[2].model, SHADE_TRANSPARENT);
-    assert_true(s->attrs[2].transmit == 1 && s->attrs[2].ior == 1.5 && s->attrs[2].mirror == 0.1);
+    assert_true(fabs(s->attrs[2].transmit - 0.9) < 1e-12 && s->attrs[2].ior == 1.5 && s->attrs[2].mirror == 0.1);
     assert_int_equal(s->attrs[3].model, SHADE_BLINN);
     assert_int_equal(s->attrs[4].model, SHADE_LAMBERT);
     assert_int_equal(s->attrs[0].model, SHADE_PHONG);
