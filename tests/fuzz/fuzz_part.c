@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include "render/render_part.h"
 #include "util/mem.h"
+#include <string.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -23,6 +24,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (n > ((size_t)1 << 20))
         return 0;
     diag_init(&err);
+    memset(&fb, 0, sizeof fb);
     if (image_alloc(&fb.img, info.width, info.height, 3, "fuzz", &err))
         return 0;
     fb.pid = mem_calloc(n, sizeof *fb.pid);
