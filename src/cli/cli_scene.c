@@ -73,7 +73,7 @@ typedef struct cli_images {
 
 /* A fileid for image name "fn.ft" on disk mode, into out; 0 if the name is
  * not of that form. */
-static int cli_images_fileid(const char *name, char mode, char *out, size_t cap)
+static int cli_scene_images_fileid(const char *name, char mode, char *out, size_t cap)
 {
     const char *dot = strchr(name, '.');
     size_t i, fn = dot ? (size_t)(dot - name) : 0, ft = dot ? strlen(dot + 1) : 0;
@@ -86,7 +86,7 @@ static int cli_images_fileid(const char *name, char mode, char *out, size_t cap)
     return 1;
 }
 
-static int cli_images_read(void *ctx, const char *name, int channels, image *out, diag *err)
+static int cli_scene_images_read(void *ctx, const char *name, int channels, image *out, diag *err)
 {
     const cli_images *im = ctx;
     char fid[3 * CMS_NAME_MAX + 8];
@@ -103,7 +103,7 @@ static int cli_images_read(void *ctx, const char *name, int channels, image *out
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
     snprintf(path, n, "%s/%s", im->dir, name);
     /* A deck on a CMS disk may name its image by fileid in any case. */
-    if (access(path, F_OK) != 0 && cli_images_fileid(name, im->mode, fid, sizeof fid)) {
+    if (access(path, F_OK) != 0 && cli_scene_images_fileid(name, im->mode, fid, sizeof fid)) {
         cms_name cn;
         diag e2;
         diag_init(&e2);
@@ -129,7 +129,7 @@ static void cli_scene_warn(void *ctx, const diag *w)
 /* name, or "./name" when a host file of that name exists and the name
  * would otherwise read as a fileid ('my deck' is not 'MY DECK A1' then):
  * into buf, or *owned (mem_free it) when longer. NULL when out of memory. */
-static const char *cli_host_first(const char *name, char *buf, size_t cap, char **owned)
+static const char *cli_scene_host_first(const char *name, char *buf, size_t cap, char **owned)
 {
     size_t n = strlen(name) + 3;
     *owned = NULL;
@@ -153,7 +153,7 @@ int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err
     int st;
     if (cli_data_scene(given, &shipped))      /* "fig1": a shipped scene */
         given = shipped;
-    name = cli_host_first(given, buf, sizeof buf, &owned);
+    name = cli_scene_host_first(given, buf, sizeof buf, &owned);
     st = name ? cms_name_input(&f->disks, name, &cn, err) : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
     if (st) {
         mem_free(owned);
@@ -176,7 +176,7 @@ int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err
         *(slash == im.dir ? slash + 1 : slash) = 0;
     else
         im.dir[0] = 0;
-    ld.image = cli_images_read;
+    ld.image = cli_scene_images_read;
     ld.ctx = &im;
     ld.warn = cli_scene_warn;
     st = cms_deck_open(&deck, &src, &f->disks, name, &f->decode, err);
@@ -194,7 +194,7 @@ int cli_output_path(const cli_files *f, const char *given, char **path, diag *er
 {
     cms_name n;
     char buf[256], *owned;
-    const char *name = cli_host_first(given, buf, sizeof buf, &owned);
+    const char *name = cli_scene_host_first(given, buf, sizeof buf, &owned);
     int st = name ? cms_name_output(&f->disks, name, &n, err)
                   : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
     mem_free(owned);
@@ -217,7 +217,7 @@ int cli_file_sha256(const cli_files *f, const char *given, char hex[65], diag *e
     int st;
     if (cli_data_scene(given, &shipped))
         given = shipped;
-    name = cli_host_first(given, nbuf, sizeof nbuf, &owned);
+    name = cli_scene_host_first(given, nbuf, sizeof nbuf, &owned);
     st = name ? cms_name_input(&f->disks, name, &cn, err) : diag_at(err, DIAG_IO, given, 0, 0, "out of memory");
     mem_free(owned);
     mem_free(shipped);

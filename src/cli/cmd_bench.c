@@ -36,7 +36,7 @@ typedef struct bench_row {
     unsigned long long rays, overflows, range_cut, hfp_exc;
 } bench_row;
 
-static void bench_help(FILE *f)
+static void cmd_bench_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt bench SCENE... [options]\n"
@@ -72,7 +72,7 @@ static void bench_help(FILE *f)
 }
 
 /* Writes s as one CSV field (RFC 4180: quoted, quotes doubled). */
-static int bench_csv_field(outfile *of, const char *s, diag *err)
+static int cmd_bench_csv_field(outfile *of, const char *s, diag *err)
 {
     char buf[2];
     if (!strpbrk(s, ",\"\r\n"))
@@ -88,7 +88,7 @@ static int bench_csv_field(outfile *of, const char *s, diag *err)
 }
 
 /* Writes the rows as CSV with a header line, committed on close. */
-static int bench_csv(const char *path, const bench_row *rows, int n)
+static int cmd_bench_csv(const char *path, const bench_row *rows, int n)
 {
     outfile of;
     diag err;
@@ -103,7 +103,7 @@ static int bench_csv(const char *path, const bench_row *rows, int n)
     outfile_write(&of, line, strlen(line), &err);
     for (i = 0; i < n; i++) {
         const bench_row *r = &rows[i];
-        bench_csv_field(&of, r->scene, &err);
+        cmd_bench_csv_field(&of, r->scene, &err);
         snprintf(line, sizeof line, ",S%d,%s,%d,%d,%.6f,%llu,%.0f,%.3f,%.4f,%llu,%llu,%llu",
                  r->scene_no, r->mode, r->threads, r->runs, r->seconds, r->rays, r->rays_per_s,
                  r->psnr, r->pct_over2, r->overflows, r->range_cut, r->hfp_exc);
@@ -126,7 +126,7 @@ fail:
 
 /* The chart's y value of a row: % of pixels off, floored at a tenth of one
  * pixel so that a perfect run stays on the logarithmic axis. */
-static double bench_y(const bench_row *r, int ids)
+static double cmd_bench_y(const bench_row *r, int ids)
 {
     double floor_pct = 10.0 / (r->id_compared > 0 ? (double)r->id_compared : 1e6);
     double y = ids ? r->id_pct : r->pct_over2;
@@ -134,7 +134,7 @@ static double bench_y(const bench_row *r, int ids)
 }
 
 /* The gnuplot script: fixed text, numbers, and labels "S<n> <mode>". */
-static void bench_script(FILE *gp, const bench_row *rows, int n, int ids)
+static void cmd_bench_script(FILE *gp, const bench_row *rows, int n, int ids)
 {
     int i;
     fprintf(gp, "set terminal pngcairo size 1000,700 noenhanced font ',11'\n"
@@ -149,7 +149,7 @@ static void bench_script(FILE *gp, const bench_row *rows, int n, int ids)
                 : "% of pixels over 2/255 from f64");
     for (i = 0; i < n; i++)
         fprintf(gp, "%.9g %.9g S%d_%s %d\n", rows[i].seconds > 0 ? rows[i].seconds : 1e-6,
-                bench_y(&rows[i], ids), rows[i].scene_no, rows[i].mode,
+                cmd_bench_y(&rows[i], ids), rows[i].scene_no, rows[i].mode,
                 !strcmp(rows[i].mode, "q16") ? 0 : !strcmp(rows[i].mode, "q32") ? 1
                 : !strcmp(rows[i].mode, "f32") ? 2 : 3);
     /* one colour per mode; labels alternate above and below the point so
@@ -163,7 +163,7 @@ static void bench_script(FILE *gp, const bench_row *rows, int n, int ids)
 /* Runs gnuplot (found on PATH, no shell) with the chart script on its
  * standard input and its standard output into the PNG, committed only when
  * gnuplot succeeds. CLI_OK or CLI_IO. */
-static int bench_plot(const char *out, const bench_row *rows, int n, int ids)
+static int cmd_bench_plot(const char *out, const bench_row *rows, int n, int ids)
 {
     outfile of;
     diag err;
@@ -200,7 +200,7 @@ static int bench_plot(const char *out, const bench_row *rows, int n, int ids)
         fprintf(stderr, "maprt: %s: error: cannot run gnuplot\n", out);
         return CLI_IO;
     }
-    bench_script(gp, rows, n, ids);
+    cmd_bench_script(gp, rows, n, ids);
     fclose(gp);
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
         ;
@@ -215,7 +215,7 @@ static int bench_plot(const char *out, const bench_row *rows, int n, int ids)
 }
 
 /* Parses "q16,f64" into ops tables; 0 or CLI_USAGE. */
-static int bench_modes(const char *s, const render_ops **ops, int *n)
+static int cmd_bench_modes(const char *s, const render_ops **ops, int *n)
 {
     char buf[64], *tok, *save = NULL;
     int k;
@@ -238,7 +238,7 @@ static int bench_modes(const char *s, const render_ops **ops, int *n)
     return 0;
 }
 
-static int bench_dcmp(const void *a, const void *b)
+static int cmd_bench_dcmp(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
     return x < y ? -1 : x > y;
@@ -246,7 +246,7 @@ static int bench_dcmp(const void *a, const void *b)
 
 /* One scene in one mode: `runs` timed renders (the median time), the
  * image against ref, and with an oracle map the identity map against it. */
-static int bench_one(const scene *sc, const render_ops *ops, const render_opts *o, int runs,
+static int cmd_bench_one(const scene *sc, const render_ops *ops, const render_opts *o, int runs,
                      const render_fb *ref, const idmap *orc, bench_row *r, diag *err)
 {
     double t[BENCH_MAX_RUNS];
@@ -261,7 +261,7 @@ static int bench_one(const scene *sc, const render_ops *ops, const render_opts *
         if (k + 1 < runs)
             render_fb_free(&fb);
     }
-    qsort(t, (size_t)runs, sizeof *t, bench_dcmp);
+    qsort(t, (size_t)runs, sizeof *t, cmd_bench_dcmp);
     r->seconds = runs % 2 ? t[runs / 2] : (t[runs / 2 - 1] + t[runs / 2]) / 2;
     r->rays = st.rays_primary + st.rays_shadow + st.rays_reflected + st.rays_refracted;
     r->rays_per_s = r->seconds > 0 ? (double)r->rays / r->seconds : 0;
@@ -304,7 +304,7 @@ int cmd_bench(int argc, char **argv)
     long n;
 
     if (cli_wants_help(argc, argv)) {
-        bench_help(stdout);
+        cmd_bench_help(stdout);
         return CLI_OK;
     }
     memset(&o, 0, sizeof o);
@@ -312,7 +312,7 @@ int cmd_bench(int argc, char **argv)
     o.threads = omp_get_max_threads();
     if (o.threads > RENDER_MAX_THREADS)
         o.threads = RENDER_MAX_THREADS;
-    bench_modes("q16,q32,f32,f64,hfp32,hfp64", modes, &nmodes);
+    cmd_bench_modes("q16,q32,f32,f64,hfp32,hfp64", modes, &nmodes);
     scenes = mem_alloc(sizeof *scenes * (size_t)argc);
     rows = mem_calloc((size_t)argc * BENCH_MAX_MODES, sizeof *rows);
     if (!scenes || !rows) {
@@ -327,7 +327,7 @@ int cmd_bench(int argc, char **argv)
             if (!(v = cli_value("bench", argc, argv, &i)) || cli_size("bench", a, v, SCENE_MAX_SIDE, &o.width, &o.height))
                 goto usage;
         } else if (!strcmp(a, "--modes")) {
-            if (!(v = cli_value("bench", argc, argv, &i)) || bench_modes(v, modes, &nmodes))
+            if (!(v = cli_value("bench", argc, argv, &i)) || cmd_bench_modes(v, modes, &nmodes))
                 goto usage;
         } else if (!strcmp(a, "--threads")) {
             if (!(v = cli_value("bench", argc, argv, &i)) || cli_long("bench", a, v, 1, RENDER_MAX_THREADS, &n))
@@ -347,7 +347,7 @@ int cmd_bench(int argc, char **argv)
             if (!(plot = cli_value("bench", argc, argv, &i)))
                 goto usage;
         } else if (a[0] == '-' && a[1]) {
-            cli_unknown_option("bench", a, bench_help);
+            cli_unknown_option("bench", a, cmd_bench_help);
             goto usage;
         } else {
             scenes[nscenes++] = a;
@@ -396,7 +396,7 @@ int cmd_bench(int argc, char **argv)
             r->mode = modes[m]->name;
             r->threads = o.threads;
             r->runs = runs;
-            if ((status = bench_one(sc, modes[m], &o, runs, &ref, have_orc ? &orc : NULL, r, &err)) != 0) {
+            if ((status = cmd_bench_one(sc, modes[m], &o, runs, &ref, have_orc ? &orc : NULL, r, &err)) != 0) {
                 diag_print(stderr, &err);
                 break;
             }
@@ -418,9 +418,9 @@ int cmd_bench(int argc, char **argv)
         scene_free(sc);
     }
     if (status == CLI_OK && csv)
-        status = bench_csv(csv, rows, nrows);
+        status = cmd_bench_csv(csv, rows, nrows);
     if (status == CLI_OK && plot)
-        status = bench_plot(plot, rows, nrows, oracle != NULL);
+        status = cmd_bench_plot(plot, rows, nrows, oracle != NULL);
     mem_free(scenes);
     mem_free(rows);
     return status;

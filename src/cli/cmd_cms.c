@@ -74,7 +74,7 @@ static const char usage_text[] =
     "filemode, 28 file not found, 36 disk not accessed.\n"
     "Exit status: 0 ok, 1 bad input (incl. those RCs), 2 usage, 3 I/O failure.\n";
 
-static void cms_help_print(FILE *f) { fputs(usage_text, f); }
+static void cmd_cms_help_print(FILE *f) { fputs(usage_text, f); }
 
 /* Which options each action takes (bit per option, see opt_names); the
  * first CMS_OPT_VALUED take a value. */
@@ -88,7 +88,7 @@ enum { OPT_DISK = 1, OPT_READ_AS = 2, OPT_FORM = 4, OPT_CP = 8, OPT_READ_CP = 16
        OPT_COMPRESS = 1024, OPT_USERID = 2048, OPT_TAPE = 4096, OPT_PUNCH = 8192,
        OPT_REPLACE = 16384 };
 
-static unsigned action_opts(const char *action)
+static unsigned cmd_cms_action_opts(const char *action)
 {
     if (!strcmp(action, "import"))
         return OPT_DISK | OPT_READ_AS | OPT_CP | OPT_TO | OPT_TAPE | OPT_PUNCH | OPT_BINARY |
@@ -123,13 +123,13 @@ typedef struct cms_cli {
     cms_import_kind kind;
 } cms_cli;
 
-static int cli_fail(const diag *d)
+static int cmd_cms_cli_fail(const diag *d)
 {
     diag_print(stderr, d);
     return d->status ? d->status : CLI_IO;
 }
 
-static int parse_cp(const char *opt, const char *v, cms_cp_id *cp)
+static int cmd_cms_parse_cp(const char *opt, const char *v, cms_cp_id *cp)
 {
     if (!cms_cp_parse(v, cp))
         return cli_usage_error("cms", "%s: '%s' is not a code page (037 or 1047)", opt, v);
@@ -137,19 +137,19 @@ static int parse_cp(const char *opt, const char *v, cms_cp_id *cp)
 }
 
 /* Parses options after the sub-subcommand into c. */
-static int cms_cli_parse(cms_cli *c, int argc, char **argv)
+static int cmd_cms_cli_parse(cms_cli *c, int argc, char **argv)
 {
     diag d;
     int i;
     diag_init(&d);
     if (cms_disks_from_env(&c->disks, &d))
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     for (i = 2; i < argc; i++) {
         const char *a = argv[i], *v;
         unsigned k, known = 0;
         for (k = 0; k < sizeof opt_names / sizeof opt_names[0]; k++)
             if (!strcmp(a, opt_names[k])) {
-                if (!(action_opts(argv[1]) & (1u << k)))
+                if (!(cmd_cms_action_opts(argv[1]) & (1u << k)))
                     return cli_usage_error("cms", "option %s does not apply to '%s'", a, argv[1]);
                 known = 1u << k;
             }
@@ -158,7 +158,7 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
         switch (known) {
         case OPT_DISK:
             if (cms_disks_set(&c->disks, v, &d))
-                return d.status == DIAG_USAGE ? cli_usage_error("cms", "%s", d.msg) : cli_fail(&d);
+                return d.status == DIAG_USAGE ? cli_usage_error("cms", "%s", d.msg) : cmd_cms_cli_fail(&d);
             break;
         case OPT_READ_AS:
             if (!cms_form_parse(v, &c->read_as))
@@ -176,12 +176,12 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
             c->form_set = 1;
             break;
         case OPT_CP:
-            if (parse_cp(a, v, &c->cp))
+            if (cmd_cms_parse_cp(a, v, &c->cp))
                 return CLI_USAGE;
             c->cp_set = 1;
             break;
         case OPT_READ_CP:
-            if (parse_cp(a, v, &c->read_cp))
+            if (cmd_cms_parse_cp(a, v, &c->read_cp))
                 return CLI_USAGE;
             c->read_cp_set = 1;
             break;
@@ -244,7 +244,7 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
             break;
         default:
             if (a[0] == '-' && a[1])
-                return cli_unknown_option("cms", a, cms_help_print);
+                return cli_unknown_option("cms", a, cmd_cms_help_print);
             c->pos[c->npos++] = a;
         }
     }
@@ -261,14 +261,14 @@ static int cms_cli_parse(cms_cli *c, int argc, char **argv)
 }
 
 /* The decode options list, type and export share. */
-static void cms_cli_decode_opts(const cms_cli *c, cms_decode_opts *o, int set, cms_cp_id cp)
+static void cmd_cms_cli_decode_opts(const cms_cli *c, cms_decode_opts *o, int set, cms_cp_id cp)
 {
     memset(o, 0, sizeof *o);
     o->form = c->read_as;
     o->cp = set ? cp : CMS_CP_AUTO;
 }
 
-static void cms_warn_print(void *ctx, const diag *w)
+static void cmd_cms_warn_print(void *ctx, const diag *w)
 {
     char buf[1024];
     (void)ctx;
@@ -276,7 +276,7 @@ static void cms_warn_print(void *ctx, const diag *w)
     fprintf(stderr, "maprt: %s\n", buf);
 }
 
-static void import_report(void *ctx, const cms_import_item *it)
+static void cmd_cms_import_report(void *ctx, const cms_import_item *it)
 {
     char t[CMS_FILEID_TEXT_MAX];
     (void)ctx;
@@ -294,7 +294,7 @@ static void import_report(void *ctx, const cms_import_item *it)
     printf(")\n");
 }
 
-static int cms_do_import(cms_cli *c)
+static int cmd_cms_do_import(cms_cli *c)
 {
     cms_import_opts o;
     cms_warn w;
@@ -304,7 +304,7 @@ static int cms_do_import(cms_cli *c)
     if (c->npos != 1)
         return cli_usage_error("cms", "import needs exactly one FILE");
     memset(&o, 0, sizeof o);
-    w.fn = cms_warn_print;
+    w.fn = cmd_cms_warn_print;
     w.ctx = NULL;
     o.kind = c->kind;
     o.form = c->read_as;
@@ -316,10 +316,10 @@ static int cms_do_import(cms_cli *c)
     diag_init(&d);
     /* card decks of any form and tapes; a picture or display list is named */
     if (sniff_refuse(c->pos[0], c->pos[0], 1u << SNIFF_TEXT | 1u << SNIFF_AWS, "a card deck or a tape", &d))
-        return cli_fail(&d);
-    rc = cms_import(&c->disks, c->pos[0], &o, import_report, NULL, &n, &d);
+        return cmd_cms_cli_fail(&d);
+    rc = cms_import(&c->disks, c->pos[0], &o, cmd_cms_import_report, NULL, &n, &d);
     if (rc)
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     printf("%ld file%s imported to disk %c\n", n, n == 1 ? "" : "s", o.disk);
     return 0;
 }
@@ -329,14 +329,14 @@ typedef struct list_ctx {
     int bad;
 } list_ctx;
 
-static int list_one(void *ctx, const char *path, const cms_fileid *id)
+static int cmd_cms_list_one(void *ctx, const char *path, const cms_fileid *id)
 {
     list_ctx *l = ctx;
     cms_decode_opts o;
     cms_file_info info;
     char t[CMS_FILEID_TEXT_MAX];
     diag d;
-    cms_cli_decode_opts(l->c, &o, l->c->cp_set, l->c->cp);
+    cmd_cms_cli_decode_opts(l->c, &o, l->c->cp_set, l->c->cp);
     diag_init(&d);
     if (cms_file_stat(&l->c->disks, path, &o, &info, &d)) {
         sniff_kind k = sniff_file(path);
@@ -357,7 +357,7 @@ static int list_one(void *ctx, const char *path, const cms_fileid *id)
     return 0;
 }
 
-static int cms_do_list(cms_cli *c)
+static int cmd_cms_do_list(cms_cli *c)
 {
     list_ctx l;
     diag d;
@@ -382,21 +382,21 @@ static int cms_do_list(cms_cli *c)
         if (lo != hi && !c->disks.dir[k - 'A'])
             continue;
         diag_init(&d);
-        if (cms_disks_list(&c->disks, k, list_one, &l, &d))
-            return cli_fail(&d);
+        if (cms_disks_list(&c->disks, k, cmd_cms_list_one, &l, &d))
+            return cmd_cms_cli_fail(&d);
         listed++;
     }
     if (!listed) {
         diag_init(&d);
         diag_at(&d, DIAG_INPUT, "* * *", 0, 0, "disk not accessed (RC 36): no disks accessed");
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     }
     return l.bad;
 }
 
 /* A binary record as hex: the record number, then 32 bytes a line in
  * groups of four. */
-static void type_hex(long recno, const char *rec, size_t len)
+static void cmd_cms_type_hex(long recno, const char *rec, size_t len)
 {
     size_t i;
     printf("%6ld", recno);
@@ -408,7 +408,7 @@ static void type_hex(long recno, const char *rec, size_t len)
     printf("\n");
 }
 
-static int cms_do_type(cms_cli *c)
+static int cmd_cms_do_type(cms_cli *c)
 {
     cms_decode_opts o;
     cms_file_info info;
@@ -418,14 +418,14 @@ static int cms_do_type(cms_cli *c)
     diag d;
     if (c->npos != 1)
         return cli_usage_error("cms", "type needs exactly one NAME");
-    cms_cli_decode_opts(c, &o, c->cp_set, c->cp);
+    cmd_cms_cli_decode_opts(c, &o, c->cp_set, c->cp);
     diag_init(&d);
     if (cms_file_open_read(&f, &c->disks, c->pos[0], &o, &d))
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     cms_file_state(f, &info);
     while (cms_file_read(f, 0, &rec, &len) == 0) {
         if (info.binary) {
-            type_hex(cms_file_recno(f), rec, len);
+            cmd_cms_type_hex(cms_file_recno(f), rec, len);
             continue;
         }
         while (len && rec[len - 1] == ' ')
@@ -436,14 +436,14 @@ static int cms_do_type(cms_cli *c)
     cms_file_abort(f);
     if (fflush(stdout) != 0) {
         diag_at(&d, DIAG_IO, "<stdout>", 0, 0, "write failed");
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     }
     return 0;
 }
 
 /* The fileid a file goes to tape (or a :READ card) under: its own fileid,
  * its :READ card's, or a host name of the form fn.ft. */
-static int export_fileid(const cms_file_info *info, cms_fileid *id, diag *d)
+static int cmd_cms_export_fileid(const cms_file_info *info, cms_fileid *id, diag *d)
 {
     const char *base = strrchr(info->label, '/');
     char fn[CMS_NAME_MAX + 1], ft[CMS_NAME_MAX + 1], fm[3] = "A1";
@@ -473,13 +473,13 @@ static int export_fileid(const cms_file_info *info, cms_fileid *id, diag *d)
                    "'fn ft fm', or name the host file fn.ft)");
 }
 
-static void export_sink(void *ctx, const void *data, size_t len)
+static void cmd_cms_export_sink(void *ctx, const void *data, size_t len)
 {
     outfile_sink(ctx, data, len);
 }
 
 /* export --form aws|het: every NAME as one file of a VMFPLC2 or TAPE DUMP tape. */
-static int export_tape(cms_cli *c, const char *outpath)
+static int cmd_cms_export_tape(cms_cli *c, const char *outpath)
 {
     cms_name on;
     cms_tape_writer tw;
@@ -488,14 +488,14 @@ static int export_tape(cms_cli *c, const char *outpath)
     int i, rc;
     diag_init(&d);
     if (cms_name_output(&c->disks, outpath, &on, &d))
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     rc = outfile_open(&of, on.path, &d);
     cms_name_free(&on);
     if (rc)
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     cms_tape_writer_init(&tw, c->tape_format ? c->tape_format : CMS_TAPE_VMFPLC2,
                          c->out == OUT_AWS ? CMS_AWS_PLAIN : c->compress ? c->compress : CMS_AWS_ZLIB,
-                         export_sink, &of);
+                         cmd_cms_export_sink, &of);
     for (i = 0; i < c->npos - 1 && !rc; i++) {
         cms_decode_opts o;
         cms_file_info info;
@@ -503,12 +503,12 @@ static int export_tape(cms_cli *c, const char *outpath)
         cms_file *in;
         unsigned char *data = NULL;
         size_t len = 0;
-        cms_cli_decode_opts(c, &o, c->read_cp_set, c->read_cp);
+        cmd_cms_cli_decode_opts(c, &o, c->read_cp_set, c->read_cp);
         if ((rc = cms_file_open_read(&in, &c->disks, c->pos[i], &o, &d)))
             break;
         cms_file_state(in, &info);
         memset(&tf, 0, sizeof tf);
-        if (!(rc = export_fileid(&info, &tf.id, &d)))
+        if (!(rc = cmd_cms_export_fileid(&info, &tf.id, &d)))
             rc = cms_file_stream(in, c->cp_set ? c->cp : CMS_CP_1047, &data, &len, &d);
         if (!rc) {
             tf.id.mode = 'A';
@@ -528,22 +528,22 @@ static int export_tape(cms_cli *c, const char *outpath)
     cms_tape_writer_end(&tw);
     if (rc) {
         outfile_abort(&of);
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     }
     if (outfile_commit(&of, &d))
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     return 0;
 }
 
 /* An EBCDIC card from ASCII text (blank-padded to 80 columns). */
-static void export_card(const cms_cp *cp, const char *text, unsigned char card[CMS_CARD_COLS])
+static void cmd_cms_export_card(const cms_cp *cp, const char *text, unsigned char card[CMS_CARD_COLS])
 {
     size_t i, n = strlen(text);
     for (i = 0; i < CMS_CARD_COLS; i++)
         card[i] = i < n ? cp->from_latin1[(unsigned char)text[i]] : 0x40;
 }
 
-static int cms_do_export(cms_cli *c)
+static int cmd_cms_do_export(cms_cli *c)
 {
     cms_decode_opts o;
     cms_write_opts w;
@@ -558,13 +558,13 @@ static int cms_do_export(cms_cli *c)
     if (c->npos < 2)
         return cli_usage_error("cms", "export needs NAME and OUT");
     if (c->out == OUT_AWS || c->out == OUT_HET)
-        return export_tape(c, c->pos[c->npos - 1]);
+        return cmd_cms_export_tape(c, c->pos[c->npos - 1]);
     if (c->npos != 2)
         return cli_usage_error("cms", "export writes several files only as a tape (--form aws or het)");
-    cms_cli_decode_opts(c, &o, c->read_cp_set, c->read_cp);
+    cmd_cms_cli_decode_opts(c, &o, c->read_cp_set, c->read_cp);
     diag_init(&d);
     if (cms_file_open_read(&in, &c->disks, c->pos[0], &o, &d))
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     cms_file_state(in, &info);
     memset(&w, 0, sizeof w);
     w.form = c->form_set ? c->form : CMS_FORM_TEXT;
@@ -582,7 +582,7 @@ static int cms_do_export(cms_cli *c)
     }
     if (cms_file_open_write(&out, &c->disks, c->pos[1], recfm, lrecl, &w, &d)) {
         cms_file_abort(in);
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     }
     if (c->out == OUT_READER) {
         /* the CP ID card routes the deck to the user's virtual reader; the
@@ -595,20 +595,20 @@ static int cms_do_export(cms_cli *c)
             rc = diag_at(&d, DIAG_INPUT, info.label, 0, 0, "a binary file does not go to a "
                          "reader as cards (write a tape: --form aws or het)");
         if (!rc)
-            rc = export_fileid(&info, &hid, &d);
+            rc = cmd_cms_export_fileid(&info, &hid, &d);
         if (rc) {
             cms_file_abort(out);
             cms_file_abort(in);
-            return cli_fail(&d);
+            return cmd_cms_cli_fail(&d);
         }
         snprintf(text, sizeof text, "ID %s", c->userid);
         for (len = 0; text[len]; len++)
             if (text[len] >= 'a' && text[len] <= 'z')
                 text[len] = (char)(text[len] - 'a' + 'A');
-        export_card(cp, text, card);
+        cmd_cms_export_card(cp, text, card);
         cms_file_put_raw(out, card, sizeof card);
         snprintf(text, sizeof text, ":READ  %-8s %-8s %c%c", hid.fn, hid.ft, 'A', hid.num);
-        export_card(cp, text, card);
+        cmd_cms_export_card(cp, text, card);
         cms_file_put_raw(out, card, sizeof card);
     }
     while (cms_file_read(in, 0, &rec, &len) == 0)
@@ -616,11 +616,11 @@ static int cms_do_export(cms_cli *c)
             snprintf(d.file, sizeof d.file, "%s", info.label);
             cms_file_abort(out);
             cms_file_abort(in);
-            return cli_fail(&d);
+            return cmd_cms_cli_fail(&d);
         }
     cms_file_abort(in);
     if (cms_file_close(out, &d))
-        return cli_fail(&d);
+        return cmd_cms_cli_fail(&d);
     return 0;
 }
 
@@ -636,7 +636,7 @@ int cmd_cms(int argc, char **argv)
         fputs(usage_text, stderr);
         return CLI_USAGE;
     }
-    if (!action_opts(argv[1]))
+    if (!cmd_cms_action_opts(argv[1]))
         return cli_usage_error("cms", "unknown action '%s' (import, list, type, export)", argv[1]);
     memset(&c, 0, sizeof c);
     cms_disks_init(&c.disks);
@@ -645,15 +645,15 @@ int cmd_cms(int argc, char **argv)
         cms_disks_free(&c.disks);
         return CLI_IO;
     }
-    if ((rc = cms_cli_parse(&c, argc, argv)) == 0) {
+    if ((rc = cmd_cms_cli_parse(&c, argc, argv)) == 0) {
         if (!strcmp(argv[1], "import"))
-            rc = cms_do_import(&c);
+            rc = cmd_cms_do_import(&c);
         else if (!strcmp(argv[1], "list"))
-            rc = cms_do_list(&c);
+            rc = cmd_cms_do_list(&c);
         else if (!strcmp(argv[1], "type"))
-            rc = cms_do_type(&c);
+            rc = cmd_cms_do_type(&c);
         else
-            rc = cms_do_export(&c);
+            rc = cmd_cms_do_export(&c);
     }
     cms_disks_free(&c.disks);
     mem_free(c.pos);

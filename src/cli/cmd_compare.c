@@ -75,10 +75,10 @@ static const char compare_help[] =
     "--register a register_score below 0.78, or an ssim below 0.30 (a warning on\n"
     "stderr says which; the figures are printed as usual)\n";
 
-static void compare_help_print(FILE *f) { fputs(compare_help, f); }
+static void cmd_compare_help_print(FILE *f) { fputs(compare_help, f); }
 
 /* Parses "A,B,..." into n doubles; 0 or CLI_USAGE after a message. */
-static int compare_list(const char *opt, const char *s, int n, double *out)
+static int cmd_compare_list(const char *opt, const char *s, int n, double *out)
 {
     int k;
     const char *p = s;
@@ -92,7 +92,7 @@ static int compare_list(const char *opt, const char *s, int n, double *out)
     return 0;
 }
 
-static void compare_print(const compare_opts *o, const compare_result *r)
+static void cmd_compare_print(const compare_opts *o, const compare_result *r)
 {
     printf("width=%d\nheight=%d\nchannels=%s\npixels=%ld\noverlap=%.6f\n", r->width, r->height,
            r->channels == 3 ? "rgb" : "luma", r->pixels, r->overlap);
@@ -140,7 +140,7 @@ int cmd_compare(int argc, char **argv)
                 return CLI_USAGE;
             *(a[2] == 'd' ? &o.diff_path : &o.sbs_path) = v;
         } else if (!strcmp(a, "--scale-range")) {
-            if (!(v = cli_value("compare", argc, argv, &i)) || compare_list(a, v, 2, d))
+            if (!(v = cli_value("compare", argc, argv, &i)) || cmd_compare_list(a, v, 2, d))
                 return CLI_USAGE;
             if (!(d[0] >= 0.01 && d[0] <= d[1] && d[1] <= 100))
                 return cli_usage_error("compare", "%s: need 0.01 <= LO <= HI <= 100, got '%s'", a, v);
@@ -165,7 +165,7 @@ int cmd_compare(int argc, char **argv)
                 return cli_usage_error("compare", "%s: %g is outside 0..255", a, d[0]);
             o.threshold = d[0];
         } else if (!strcmp(a, "--crop")) {
-            if (!(v = cli_value("compare", argc, argv, &i)) || compare_list(a, v, 4, d))
+            if (!(v = cli_value("compare", argc, argv, &i)) || cmd_compare_list(a, v, 4, d))
                 return CLI_USAGE;
             for (rc = 0; rc < 4; rc++)
                 if (d[rc] != floor(d[rc]) || d[rc] < (rc < 2 ? 0 : 1) || d[rc] > IMAGE_MAX_SIDE)
@@ -176,7 +176,7 @@ int cmd_compare(int argc, char **argv)
             o.cw = (int)d[2];
             o.ch = (int)d[3];
         } else if (a[0] == '-' && a[1] != '\0') {
-            return cli_unknown_option("compare", a, compare_help_print);
+            return cli_unknown_option("compare", a, cmd_compare_help_print);
         } else if (nfiles < 2) {
             files[nfiles++] = a;
         } else {
@@ -194,7 +194,7 @@ int cmd_compare(int argc, char **argv)
         diag_print(stderr, &err);
         return rc;
     }
-    compare_print(&o, &r);
+    cmd_compare_print(&o, &r);
     {
         char why[96];
         if (compare_mismatch(&r, why, sizeof why)) {

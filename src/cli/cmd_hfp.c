@@ -7,7 +7,7 @@
 #include <stdint.h>
 #include <string.h>
 
-static void hfp_help(FILE *f)
+static void cmd_hfp_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt hfp decode HEX...\n"
@@ -30,7 +30,7 @@ static void hfp_help(FILE *f)
 }
 
 /* Parses 8 or 16 hex digits into a big-endian field; its width, or 0. */
-static size_t hfp_parse_hex(const char *s, unsigned char *field)
+static size_t cmd_hfp_parse_hex(const char *s, unsigned char *field)
 {
     size_t n = strlen(s), i;
     if (n != 8 && n != 16)
@@ -48,12 +48,12 @@ static size_t hfp_parse_hex(const char *s, unsigned char *field)
     return n / 2;
 }
 
-static int hfp_decode_args(int argc, char **argv)
+static int cmd_hfp_decode_args(int argc, char **argv)
 {
     int i;
     for (i = 2; i < argc; i++) {
         unsigned char field[8];
-        size_t w = hfp_parse_hex(argv[i], field);
+        size_t w = cmd_hfp_parse_hex(argv[i], field);
         double x;
         diag err;
         diag_init(&err);
@@ -68,7 +68,7 @@ static int hfp_decode_args(int argc, char **argv)
     return CLI_OK;
 }
 
-static int hfp_encode_args(int argc, char **argv)
+static int cmd_hfp_encode_args(int argc, char **argv)
 {
     size_t w, j;
     int i;
@@ -96,12 +96,12 @@ static int hfp_encode_args(int argc, char **argv)
 int cmd_hfp(int argc, char **argv)
 {
     if (cli_wants_help(argc, argv)) {
-        hfp_help(stdout);
+        cmd_hfp_help(stdout);
         return CLI_OK;
     }
     if (argc >= 2 && !strcmp(argv[1], "decode"))
-        return hfp_decode_args(argc, argv);
+        return cmd_hfp_decode_args(argc, argv);
     if (argc >= 2 && !strcmp(argv[1], "encode"))
-        return hfp_encode_args(argc, argv);
+        return cmd_hfp_encode_args(argc, argv);
     return cli_usage_error("hfp", "expected 'decode' or 'encode'");
 }

@@ -22,7 +22,7 @@
 
 #define MAPRT_SHARE_HINT "PREFIX/share/maprt/scenes"
 
-static void render_help(FILE *f)
+static void cmd_render_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt render SCENE [-o OUT.png|OUT.ppm|OUT.pam|-] [--dl OUT.dl5080]\n"
@@ -98,7 +98,7 @@ static void render_help(FILE *f)
 
 /* The closing line: what was rendered, the time it took, the rate, and
  * the outputs written. */
-static void render_summary(const char *deck, const render_opts *o, const render_fb *fb,
+static void cmd_render_summary(const char *deck, const render_opts *o, const render_fb *fb,
                            const render_ops *ops, const render_stats *st, clock_t cpu0,
                            const char *png, const char *dl)
 {
@@ -115,7 +115,7 @@ static void render_summary(const char *deck, const render_opts *o, const render_
 
 /* Writes the rendered region (the whole image without --region) as a
  * region file for 'maprt merge'. */
-static int render_write_part(const char *path, const render_fb *fb, const render_opts *o,
+static int cmd_render_write_part(const char *path, const render_fb *fb, const render_opts *o,
                              const scene *sc, const render_ops *ops, const render_stats *st,
                              diag *err)
 {
@@ -167,7 +167,7 @@ int cmd_render(int argc, char **argv)
     clock_t cpu0 = clock();
 
     if (cli_wants_help(argc, argv)) {
-        render_help(stdout);
+        cmd_render_help(stdout);
         return CLI_OK;
     }
     for (i = 1; i < argc; i++)
@@ -239,7 +239,7 @@ int cmd_render(int argc, char **argv)
         } else if (!strcmp(a, "--progress") || !strcmp(a, "--quiet")) {
             progress = a[2] == 'p';
         } else if (a[0] == '-' && a[1]) {
-            status = cli_unknown_option("render", a, render_help);
+            status = cli_unknown_option("render", a, cmd_render_help);
         } else if (scene_name) {
             status = cli_usage_error("render", "more than one SCENE ('%s', '%s')", scene_name, a);
         } else {
@@ -327,7 +327,7 @@ int cmd_render(int argc, char **argv)
     outfile_batch_begin();
     {
         image_meta meta;
-        if ((part_path && render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
+        if ((part_path && cmd_render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
             || (out_png && (cli_sink_provenance(&files, scene_name, ops->name, o.aa, &fb, &meta, &err)
                             || image_out_write(png_path ? png_path : "-", pic_format, &fb.img,
                                                &meta, &err)))
@@ -339,7 +339,7 @@ int cmd_render(int argc, char **argv)
         }
     }
     if (progress)
-        render_summary(scene_name, &o, &fb, ops, &st, cpu0, out_png, out_dl);
+        cmd_render_summary(scene_name, &o, &fb, ops, &st, cpu0, out_png, out_dl);
     if (stats) {
         printf("numeric=%s\n", ops->name);
         render_stats_print(stdout, &st);

@@ -23,7 +23,7 @@ static const cli_command commands[] = {
     {"merge",   cmd_merge,   "assemble region files of 'render --region' into the whole image"},
 };
 
-static void usage(FILE *f)
+static void main_usage(FILE *f)
 {
     size_t i;
     fprintf(f, "usage: maprt COMMAND [ARGS...]\n\n"
@@ -40,15 +40,15 @@ static void usage(FILE *f)
 }
 
 /* The subcommand's exit status; under mpirun every rank runs it. */
-static int run(int argc, char **argv)
+static int main_run(int argc, char **argv)
 {
     size_t i;
     if (argc < 2) {
-        usage(stderr);
+        main_usage(stderr);
         return CLI_USAGE;
     }
     if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "help")) {
-        usage(stdout);
+        main_usage(stdout);
         return CLI_OK;
     }
     /* --opt=value, --, --version: once here for every subcommand */
@@ -63,7 +63,7 @@ static int run(int argc, char **argv)
     }
     if (argc < 2) {
         cli_conventions_free();
-        usage(stderr);
+        main_usage(stderr);
         return CLI_USAGE;
     }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
@@ -94,7 +94,7 @@ static int run(int argc, char **argv)
             fprintf(stderr, "maprt: error: unknown command '%s'\n", argv[1]);
     }
     cli_conventions_free();
-    usage(stderr);
+    main_usage(stderr);
     return CLI_USAGE;
 }
 
@@ -103,7 +103,7 @@ int main(int argc, char **argv)
     int rc;
     if (cli_mpi_start(&argc, &argv))
         return CLI_IO;
-    rc = run(argc, argv);
+    rc = main_run(argc, argv);
     cli_mpi_stop();
     return rc;
 }
