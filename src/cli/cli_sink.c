@@ -2,7 +2,9 @@
  * merge share it; see cli_sink.h). */
 #include "cli/cli_sink.h"
 #include "render/outline.h"
+#include "cli/cli.h"
 #include "util/mem.h"
+#include <string.h>
 #include "util/version.h"
 
 /* Outline segments of the rendered primitives as 2-point polylines in
@@ -71,4 +73,24 @@ int cli_sink_provenance(const cli_files *files, const char *deck, const char *mo
     image_meta_add(m, "maprt:size", "%dx%d", fb->img.width, fb->img.height);
     image_meta_add(m, "maprt:aa", "%d", aa);
     return 0;
+}
+
+int cli_sink_dl_option(const char *cmd, int argc, char **argv, int *i, dl_image_opts *dlo,
+                       int *wireframe, int *status)
+{
+    const char *a = argv[*i], *v;
+    long n;
+    if (!strcmp(a, "--dac")) {
+        if (!(v = cli_value(cmd, argc, argv, i)) || cli_long(cmd, a, v, 4, 8, &n) || (n != 4 && n != 8))
+            *status = v ? cli_usage_error(cmd, "--dac: '%s' is not 4 or 8", v) : CLI_USAGE;
+        else
+            dlo->dac = (int)n;
+    } else if (!strcmp(a, "--dither")) {
+        dlo->dither = 1;
+    } else if (!strcmp(a, "--wireframe")) {
+        *wireframe = 1;
+    } else {
+        return 0;
+    }
+    return 1;
 }

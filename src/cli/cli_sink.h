@@ -10,6 +10,11 @@
 #include "render/render.h"
 #include "util/diag.h"
 
+/* The display-list options render and merge share: --dac 4|8, --dither,
+ * --wireframe. 1 when argv[*i] is one of them (taken, *i advanced past its
+ * value; *status = CLI_USAGE after a message when it is bad), else 0. */
+int cli_sink_dl_option(const char *cmd, int argc, char **argv, int *i, dl_image_opts *dlo,
+                       int *wireframe, int *status);
 /* Writes fb as a display list to the host path `path`; dls receives the
  * colour count, size and PSNR. 0 or the diag status. */
 int cli_sink_dl(const char *path, const render_fb *fb, dl_image_opts *dlo, int wireframe,

@@ -82,7 +82,7 @@ done:
 
 int cmd_merge(int argc, char **argv)
 {
-    const char *out_png = NULL, *out_dl = NULL, *deck = NULL, *v;
+    const char *out_png = NULL, *out_dl = NULL, *deck = NULL;
     image_out_format pic_format = IMAGE_OUT_NONE;
     cli_files files;
     render_part_info first;
@@ -92,7 +92,6 @@ int cmd_merge(int argc, char **argv)
     dl_image_stats dls;
     uint8_t *covered = NULL;
     diag err;
-    long n;
     int i, nparts = 0, stats = 0, wireframe = 0, status = 0;
     size_t k, npx;
     if (cli_wants_help(argc, argv)) {
@@ -112,16 +111,8 @@ int cmd_merge(int argc, char **argv)
             if (!(out_dl = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--deck")) {
             if (!(deck = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
-        } else if (!strcmp(a, "--dac")) {
-            if (!(v = cli_value("merge", argc, argv, &i)) || cli_long("merge", a, v, 4, 8, &n)
-                || (n != 4 && n != 8))
-                status = v ? cli_usage_error("merge", "--dac: '%s' is not 4 or 8", v) : CLI_USAGE;
-            else
-                dlo.dac = (int)n;
-        } else if (!strcmp(a, "--dither")) {
-            dlo.dither = 1;
-        } else if (!strcmp(a, "--wireframe")) {
-            wireframe = 1;
+        } else if (cli_sink_dl_option("merge", argc, argv, &i, &dlo, &wireframe, &status)) {
+            continue;
         } else if (!strcmp(a, "--stats")) {
             stats = 1;
         } else if (a[0] == '-' && a[1]) {

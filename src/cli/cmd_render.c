@@ -206,16 +206,8 @@ int cmd_render(int argc, char **argv)
                 status = CLI_USAGE;
         } else if (!strcmp(a, "--ids")) {
             if (!(out_ids = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
-        } else if (!strcmp(a, "--dac")) {
-            if (!(v = cli_value("render", argc, argv, &i)) || cli_long("render", a, v, 4, 8, &n)
-                || (n != 4 && n != 8))
-                status = v ? cli_usage_error("render", "--dac: '%s' is not 4 or 8", v) : CLI_USAGE;
-            else
-                dlo.dac = (int)n;
-        } else if (!strcmp(a, "--dither")) {
-            dlo.dither = 1;
-        } else if (!strcmp(a, "--wireframe")) {
-            wireframe = 1;
+        } else if (cli_sink_dl_option("render", argc, argv, &i, &dlo, &wireframe, &status)) {
+            continue;
         } else if (!strcmp(a, "--numeric")) {
             if (!(mode = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--size")) {
