@@ -1,5 +1,6 @@
 /* fx — out-of-line fixed-point operations (see fx.h for the rules). */
 #include "num/fx.h"
+#include "num/u128.h"
 #include <math.h>
 
 unsigned long fx_overflows;
@@ -47,18 +48,6 @@ fx16 fx16_rsqrt(fx16 a)
 
 /* ---- portable 128-bit helpers for Q32.32 ------------------------------ */
 
-typedef struct u128 { uint64_t hi, lo; } u128;
-
-static u128 fx_u128_mul64(uint64_t a, uint64_t b)
-{
-    uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
-    uint64_t p00 = a0 * b0, p01 = a0 * b1, p10 = a1 * b0, p11 = a1 * b1;
-    uint64_t mid = (p00 >> 32) + (p01 & 0xffffffffu) + (p10 & 0xffffffffu);
-    u128 r;
-    r.lo = (p00 & 0xffffffffu) | (mid << 32);
-    r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
-    return r;
-}
 
 static u128 fx_u128_add64(u128 a, uint64_t b)
 {
@@ -107,7 +96,7 @@ fx32 fx32_from_double(double x)
 
 fx32 fx32_mul_portable(fx32 a, fx32 b)
 {
-    u128 p = fx_u128_mul64(fx_mag64(a), fx_mag64(b));
+    u128 p = u128_mul64(fx_mag64(a), fx_mag64(b));
     p = fx_u128_add64(p, (uint64_t)1 << 31);          /* round half away from zero */
     /* result magnitude = p >> 32; it must fit in 64 bits */
     return fx32_signed((p.hi << 32) | (p.lo >> 32), (a < 0) != (b < 0), (p.hi >> 32) != 0);
@@ -191,17 +180,17 @@ fx32 fx32_sqrt(fx32 a)
     v.lo = (uint64_t)a << 32;
     s = (uint64_t)sqrt((double)a * 4294967296.0);
     for (;;) {                           /* s*s <= v */
-        sq = fx_u128_mul64(s, s);
+        sq = u128_mul64(s, s);
         if (fx_u128_ge(v, sq)) break;
         s--;
     }
     for (;;) {                           /* (s+1)^2 > v */
-        sq = fx_u128_mul64(s + 1, s + 1);
+        sq = u128_mul64(s + 1, s + 1);
         if (!fx_u128_ge(v, sq)) break;
         s++;
     }
     /* round to nearest: v - s^2 > s */
-    sq = fx_u128_sub(v, fx_u128_mul64(s, s));
+    sq = fx_u128_sub(v, u128_mul64(s, s));
     if (sq.hi != 0 || sq.lo > s) s++;
     return (fx32)s;
 }

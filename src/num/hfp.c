@@ -6,6 +6,7 @@
  * register image of 1 + 7 + 4*nd bits. Long products and the radicands of
  * long square roots need 112 bits: a pair of uint64_t. */
 #include "num/hfp.h"
+#include "num/u128.h"
 #include <math.h>
 
 unsigned long hfp_exc[HFP_EXC_N];
@@ -29,9 +30,7 @@ typedef struct hfp_num {
     uint64_t f;
 } hfp_num;
 
-typedef struct hfp_pair {
-    uint64_t hi, lo;
-} hfp_pair;
+typedef u128 hfp_pair;      /* long products and radicands: 112 bits */
 
 static hfp_num hfp_unpack(uint64_t a, int nd)
 {
@@ -137,17 +136,6 @@ static int hfp_cmp(uint64_t a, uint64_t b, int nd)
 
 /* ---- multiply ------------------------------------------------------------ */
 
-static hfp_pair hfp_mul64(uint64_t a, uint64_t b)
-{
-    uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
-    uint64_t m0 = a0 * b0, m1 = a0 * b1, m2 = a1 * b0, m3 = a1 * b1;
-    uint64_t mid = (m0 >> 32) + (m1 & 0xffffffffu) + (m2 & 0xffffffffu);
-    hfp_pair p;
-    p.lo = (m0 & 0xffffffffu) | (mid << 32);
-    p.hi = m3 + (m1 >> 32) + (m2 >> 32) + (mid >> 32);
-    return p;
-}
-
 /* The normalised product of nd-digit operands as a long number: for nd = 6
  * the exact 12-digit product (ME), for nd = 14 truncated to 14 digits (MD). */
 static uint64_t hfp_mul(uint64_t a, uint64_t b, int nd)
@@ -160,7 +148,7 @@ static uint64_t hfp_mul(uint64_t a, uint64_t b, int nd)
     hfp_prenorm(&x, nd);
     hfp_prenorm(&y, nd);
     c = x.c + y.c - 64;
-    p = hfp_mul64(x.f, y.f);
+    p = u128_mul64(x.f, y.f);
     if (nd == HFP_SHORT) {              /* 48-bit product in p.lo */
         if (!(p.lo >> 44)) {
             p.lo <<= 4;
