@@ -169,3 +169,7 @@ $(BUILD)/bench/minimal: bench/peers/minimal.c
 .PHONY: bench-peers
 bench-peers: deps all $(BUILD)/bench/minimal
 	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal
+
+.PHONY: bench-grow
+bench-grow: deps-bench all
+	@sh bench/peers/grow.sh $(BIN)

@@ -17,15 +17,7 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/maprt-peers-XXXXXX") || exit 3
 trap 'rm -rf "$tmp"' EXIT INT TERM
 command -v povray >/dev/null 2>&1 || { echo "bench-peers: povray (Debian povray) is not installed" >&2; exit 3; }
 
-# run LABEL CMD...: one timed run appended to $tmp/LABEL.t as "cpu wall"
-run() {
-  label=$1; shift
-  /usr/bin/time -f "%U %S %e" -o "$tmp/time" "$@" >/dev/null 2>&1 || { echo "bench-peers: $label failed: $*" >&2; exit 3; }
-  awk '{ printf "%.3f %.3f\n", $1 + $2, $3 }' "$tmp/time" >> "$tmp/$label.t"
-}
-# med LABEL COL: median of column COL (1 cpu, 2 wall)
-med() { sort -n -k"$2" "$tmp/$1.t" | awk -v c="$2" '{ v[NR] = $c } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0 ? a / b : 0) }'; }
+. "$dir/lib.sh"
 pov() { povray "+I$1" "+L$dir" "+O$2" "+W$3" "+H$4" +WT1 -D "File_Gamma=1.0" Display=off "$5"; }
 
 echo "scene,size,pixels_over_8,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_wall_s,f64_wall_s,pov_wall_s,q16/pov_cpu,f64/pov_cpu,q16/pov_wall,f64/pov_wall"

@@ -370,36 +370,53 @@ typedef struct csg_query {
     const prim *prims;
     const prim_ray *r;
     num tmax;
+    int any;                 /* any hit will do (an occlusion test) */
     arena *ar;
     geom_stats *st;
 } csg_query;
 
-/* Span list of compiled node ni along the ray, placed at the arena top on
- * entry (nothing is left allocated when it returns 0). Only parameters in
- * [lo, hi] can matter to the caller, so subtrees whose bounds lie outside
- * are skipped; the right operand of a difference or intersection only
- * matters where the left one has spans, which narrows [lo, hi] further. */
-static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
+/* The bounds test of node nd for parameters in [lo, hi]: 1 when the ray
+ * misses them. Else 0, *tc the parameter closest to the bounding sphere's
+ * centre (what a leaf's primitive test continues from) and *tin a lower
+ * bound of the parameter where the ray enters the bounds (lo for an
+ * unbounded node): the key of nearest-first traversal. */
+static int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, num *tc, num *tin)
+{
+    *tc = NUM_ZERO;
+    *tin = lo;
+    if (!nd->bounded)
+        return 0;
+    q->st->bound_tests++;
+    if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, tc)
+        || (nd->use_box && vec3_box_enter(nd->lo, nd->hi, q->r->o, q->r->d, &q->r->rcp, *tc,
+                                          lo, hi, tin))) {
+        q->st->pruned++;
+        return 1;
+    }
+    if (!nd->use_box)
+        *tin = num_max(lo, num_sub(*tc, nd->br));
+    return 0;
+}
+
+static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out);
+
+/* Span list of compiled node ni along the ray whose bounds test passed with
+ * closest parameter tc, placed at the arena top on entry (nothing is left
+ * allocated when it returns 0). Only parameters in [lo, hi] can matter to
+ * the caller, so subtrees whose bounds lie outside are skipped; the right
+ * operand of a difference or intersection only matters where the left one
+ * has spans, which narrows [lo, hi] further. */
+static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, span **out)
 {
     const csg_node *nd = &q->c->nodes[ni];
     size_t mark = arena_mark(q->ar);
     span *l = NULL, *r = NULL, *tmp, *dst;
     int nl, nr, n;
-    num tc = NUM_ZERO, rlo = lo, rhi = hi;
-    if (nd->use_box) {
-        /* a leaf's sphere is its primitive's: tested here once, with tc */
-        q->st->bound_tests++;
-        if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)
-            || vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, &q->r->rcp, tc, lo, hi)) {
-            q->st->pruned++;
-            return 0;
-        }
-    }
+    num rlo = lo, rhi = hi;
     if (nd->op == CSG_LEAF) {
         span s;
         q->st->prim_tests++;
-        if (nd->use_box ? !NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
-                        : !NS(prim_intersect)(&q->prims[nd->prim], q->r, lo, hi, &s))
+        if (!NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s))
             return 0;
         if (!(dst = arena_alloc(q->ar, sizeof s))) {
             q->st->arena_full++;
@@ -408,13 +425,6 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
         *dst = s;
         *out = dst;
         return 1;
-    }
-    if (nd->bounded && !nd->use_box) {
-        q->st->bound_tests++;
-        if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, &tc)) {
-            q->st->pruned++;
-            return 0;
-        }
     }
     nl = csg_eval(q, nd->left, lo, hi, &l);
     if (nl == 0 && nd->op != CSG_UNION) {
@@ -453,6 +463,15 @@ static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
     return n;
 }
 
+/* csg_eval_in after node ni's own bounds test. */
+static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
+{
+    num tc, tin;
+    if (csg_bounds_miss(q, &q->c->nodes[ni], lo, hi, &tc, &tin))
+        return 0;
+    return csg_eval_in(q, ni, lo, hi, tc, out);
+}
+
 /* The first surface crossing of one object's span list s[0..n-1] with
  * 0 < t <= tmax: 1 and *h, or 0. */
 static int csg_first(const span *s, int n, num tmax, csg_hit *h)
@@ -477,32 +496,34 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
     return 0;
 }
 
-/* Nearest hit below q->tmax in the objects under node ni; a hit found
- * replaces *best (see csg_intersect for ties) and becomes the far end. */
-static void csg_nearest(csg_query *q, int ni, csg_hit *best, int *found)
+/* Nearest hit below q->tmax in the objects under node ni, whose bounds
+ * test passed with closest parameter tc; a hit found replaces *best (see
+ * csg_intersect for ties) and becomes the far end. Returns 1 to stop (an
+ * occlusion test found a hit). The two children of a group are tested
+ * first and visited nearest first, so the nearer one's hit can skip the
+ * farther one without another test. */
+static int csg_nearest(csg_query *q, int ni, num tc, csg_hit *best, int *found)
 {
     const csg_node *nd = &q->c->nodes[ni];
-    num tc;
     if (nd->op == CSG_GROUP) {
-        if (nd->bounded) {
-            q->st->bound_tests++;
-            if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)
-                || (nd->use_box && vec3_box_miss(nd->lo, nd->hi, q->r->o, q->r->d, &q->r->rcp, tc, NUM_ZERO, q->tmax))) {
-                q->st->pruned++;
-                return;
-            }
-        }
-        /* tree order (a spatial split): ordering the two by distance cost
-         * more than the pruning it gained (measured on fig1) */
-        csg_nearest(q, nd->left, best, found);
-        csg_nearest(q, nd->right, best, found);
-        return;
+        num tc2[2], tin[2];
+        int kid[2], miss[2], first;
+        kid[0] = nd->left;
+        kid[1] = nd->right;
+        miss[0] = csg_bounds_miss(q, &q->c->nodes[kid[0]], NUM_ZERO, q->tmax, &tc2[0], &tin[0]);
+        miss[1] = csg_bounds_miss(q, &q->c->nodes[kid[1]], NUM_ZERO, q->tmax, &tc2[1], &tin[1]);
+        first = !miss[1] && (miss[0] || tin[1] < tin[0]);
+        if (!miss[first] && csg_nearest(q, kid[first], tc2[first], best, found))
+            return 1;
+        first = !first;
+        return !miss[first] && tin[first] <= q->tmax
+               && csg_nearest(q, kid[first], tc2[first], best, found);
     }
     {
         size_t mark = arena_mark(q->ar);
         span *s = NULL;
         csg_hit h;
-        int n = csg_eval(q, ni, NUM_ZERO, q->tmax, &s);
+        int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, &s);
         if (n > 0 && csg_first(s, n, q->tmax, &h)
             && (!*found || h.t < best->t
                 || (h.t == best->t && (h.entering > best->entering
@@ -513,12 +534,14 @@ static void csg_nearest(csg_query *q, int ni, csg_hit *best, int *found)
         }
         arena_release(q->ar, mark);
     }
+    return q->any && *found;
 }
 
-int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
-                      arena *ar, geom_stats *st, csg_hit *hit)
+static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num tmax, int any,
+                         arena *ar, geom_stats *st, csg_hit *hit)
 {
     csg_query q;
+    num tc, tin;
     int found = 0;
     if (c->root < 0)
         return 0;
@@ -526,8 +549,22 @@ int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tm
     q.prims = prims;
     q.r = r;
     q.tmax = tmax;
+    q.any = any;
     q.ar = ar;
     q.st = st;
-    csg_nearest(&q, c->root, hit, &found);
+    if (!csg_bounds_miss(&q, &c->nodes[c->root], NUM_ZERO, tmax, &tc, &tin))
+        csg_nearest(&q, c->root, tc, hit, &found);
     return found;
+}
+
+int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
+                      arena *ar, geom_stats *st, csg_hit *hit)
+{
+    return csg_query_run(c, prims, r, tmax, 0, ar, st, hit);
+}
+
+int NS(csg_occluded)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
+                     arena *ar, geom_stats *st, csg_hit *hit)
+{
+    return csg_query_run(c, prims, r, tmax, 1, ar, st, hit);
 }

@@ -62,4 +62,8 @@ size_t NS(csg_arena_bytes)(const csg *c);
  * returning); counters go to st. */
 int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
                       arena *ar, geom_stats *st, csg_hit *hit);
+/* Some surface crossing with 0 < t <= tmax (not always the nearest): for
+ * shadow rays through opaque scenes. Returns 1 and *hit, or 0. */
+int NS(csg_occluded)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
+                     arena *ar, geom_stats *st, csg_hit *hit);
 #endif

@@ -270,6 +270,89 @@ static int prim_same_solid(const prim *a, const prim *b)
     return a->kind == PRIM_CYLINDER && fabs(s[8] + 1) <= e && fabs(t[2] - 1) <= e;
 }
 
+/* A curved solid's sort key: the canonical point every symmetry
+ * prim_same_solid allows keeps fixed (the sphere's centre, the middle of
+ * the cylinder's or cone's axis) in the world, projected on a direction
+ * w no grid of placements lines up with; and how far two keys of the same
+ * solid can lie apart: prim_same_solid bounds the canonical offsets by 1.5
+ * PRIM_SAME_TOL, which row k of the map stretches by at most its L1 norm,
+ * below sqrt(3) times its L2 norm, weighted by |w_k|. */
+typedef struct prim_skey { double key, win; size_t i; } prim_skey;
+
+static int prim_skey_cmp(const void *a, const void *b)
+{
+    const prim_skey *x = a, *y = b;
+    if (x->key != y->key)
+        return x->key < y->key ? -1 : 1;
+    return x->i < y->i ? -1 : x->i > y->i;
+}
+
+/* Identical curved solids: the later one intersects through the earliest
+ * matching one's data (its own frame still gives (u,v)). Candidates come
+ * from a sweep over the sorted keys, so n solids cost O(n log n) plus the
+ * pairs whose keys lie within the window, not n^2 / 2 comparisons. */
+static int prim_share_solids(prim *prims, size_t n, diag *err)
+{
+    prim_skey *sk;
+    size_t m = 0, i, p, q;
+    long *match;
+    for (i = 0; i < n; i++)
+        m += prims[i].bounded && prims[i].kind != PRIM_BLOCK;
+    if (m < 2)
+        return 0;
+    sk = mem_calloc(m, sizeof *sk);
+    match = mem_calloc(n, sizeof *match);
+    if (!sk || !match) {
+        mem_free(sk);
+        mem_free(match);
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    }
+    m = 0;
+    for (i = 0; i < n; i++) {
+        const prim *a = &prims[i];
+        static const double w[3] = {1, 0.7548776662466927, 0.5698402909980532};
+        double cz = a->kind == PRIM_SPHERE ? 0 : 0.5, key = 0, win = 0;
+        int k;
+        match[i] = -1;
+        if (!a->bounded || a->kind == PRIM_BLOCK)
+            continue;
+        for (k = 0; k < 3; k++) {
+            const double *row = a->a_d + 3 * k;
+            key += w[k] * (a->org_d[k] + row[2] * cz);
+            win += w[k] * sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
+        }
+        sk[m].key = key;
+        sk[m].win = 4 * PRIM_SAME_TOL * win + 1e-12 * (fabs(key) + 1);
+        sk[m++].i = i;
+    }
+    qsort(sk, m, sizeof *sk, prim_skey_cmp);
+    for (p = 0; p < m; p++) {
+        size_t bi = sk[p].i;
+        for (q = p; q-- > 0 && sk[p].key - sk[q].key <= 2 * sk[p].win;)
+            if (sk[q].i < bi && (match[bi] < 0 || sk[q].i < (size_t)match[bi])
+                && prim_same_solid(&prims[sk[q].i], &prims[bi]))
+                match[bi] = (long)sk[q].i;
+        for (q = p + 1; q < m && sk[q].key - sk[p].key <= 2 * sk[p].win; q++)
+            if (sk[q].i < bi && (match[bi] < 0 || sk[q].i < (size_t)match[bi])
+                && prim_same_solid(&prims[sk[q].i], &prims[bi]))
+                match[bi] = (long)sk[q].i;
+    }
+    for (i = 0; i < n; i++)           /* in index order: an earlier copy is final */
+        if (match[i] >= 0) {
+            prim *b = &prims[i];
+            const prim *a = &prims[match[i]];
+            b->bc = a->bc;
+            b->br = a->br;
+            b->org = a->org;
+            b->minv_s = a->minv_s;
+            b->smin = a->smin;
+            b->inv_smin = a->inv_smin;
+        }
+    mem_free(sk);
+    mem_free(match);
+    return 0;
+}
+
 int NS(prim_share)(prim *prims, size_t n, diag *err)
 {
     prim_pref *pr;
@@ -305,21 +388,7 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
         }
     }
     mem_free(pr);
-    /* identical curved solids: the later one intersects through the
-     * earlier one's data (its own frame still gives (u,v)) */
-    for (i = 1; i < n; i++)
-        for (j = 0; j < i; j++)
-            if (prim_same_solid(&prims[j], &prims[i])) {
-                prim *b = &prims[i];
-                const prim *a = &prims[j];
-                b->bc = a->bc;
-                b->br = a->br;
-                b->org = a->org;
-                b->minv_s = a->minv_s;
-                b->smin = a->smin;
-                b->inv_smin = a->inv_smin;
-                break;
-            }
+    return prim_share_solids(prims, n, err);
     return 0;
 }
 

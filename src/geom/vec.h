@@ -236,18 +236,23 @@ VEC_HOT int vec3_slab_miss(num lo, num hi, num o, num d, vec3_rcp_t rq, num *a, 
 
 /* Bounding-box rejection, after a bounding-sphere test passed with closest
  * parameter tc: 1 when the ray misses the box [lo, hi] for every t in
- * [tmin, tmax]. The origin is first moved to o + tc d, inside the sphere
+ * [tmin, tmax]; else 0 and *tin = the first parameter in [tmin, tmax] inside
+ * the box. The origin is first moved to o + tc d, inside the sphere
  * that contains the box, so every difference is at most the sphere's
  * diameter. rc holds the reciprocals of d's components. */
-VEC_HOT int vec3_box_miss(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc, num tc,
-                                num tmin, num tmax)
+VEC_HOT int vec3_box_enter(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc, num tc,
+                           num tmin, num tmax, num *tin)
 {
     vec3 o1 = vec3_madd(o, tc, d);
     num a = num_sub(tmin, tc), b = num_sub(tmax, tc);
-    return vec3_slab_miss(lo.x, hi.x, o1.x, d.x, rc->q[0], &a, &b)
+    if (vec3_slab_miss(lo.x, hi.x, o1.x, d.x, rc->q[0], &a, &b)
         || vec3_slab_miss(lo.y, hi.y, o1.y, d.y, rc->q[1], &a, &b)
-        || vec3_slab_miss(lo.z, hi.z, o1.z, d.z, rc->q[2], &a, &b);
+        || vec3_slab_miss(lo.z, hi.z, o1.z, d.z, rc->q[2], &a, &b))
+        return 1;
+    *tin = num_add(a, tc);
+    return 0;
 }
+
 
 /* a*b clamped to [-lim, lim] (lim > 0) without saturating: a product
  * beyond lim gives +-lim and counts no overflow. */

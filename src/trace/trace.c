@@ -94,10 +94,10 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         const scene_attr *at;
         trace_spawn(&s, p, l, pi, n_prim);
         tc->rs.rays_shadow++;
+        if (!cs->transparent)     /* any opaque surface on the way will do */
+            return NS(csg_occluded)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h) ? 0 : pass;
         if (!NS(csg_intersect)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h))
             return pass;
-        if (!cs->transparent)
-            return 0;
         p = vec3_madd(p, h.t, l);
         dist = num_sub(dist, h.t);
         trace_surface(cs, tc, &h, p, &sf);

@@ -1,0 +1,54 @@
+#!/bin/sh
+# make bench-grow: cost against the number of objects, maprt (q16, f64)
+# beside POV-Ray 3.7. An n x n grid of the CSG part of csg81.scene (a box
+# meets a sphere, minus three cylinders), scaled so the grid always covers
+# the same 27 x 27 square on the same mirror floor, seen by the same camera
+# and lights: n = 1, 3, 10, 32, 100 (1 to 10,000 objects, 5 to 50,000
+# primitives). One thread, whole process, medians of N alternated runs
+# (GROW_RUNS, default 3); printed: CPU seconds and each tool's cost over its
+# own cost at one object. The scenes are written here, both from the one
+# list of placements. Usage: sh bench/peers/grow.sh [MAPRT]
+bin=${1:-build/maprt}
+runs=${GROW_RUNS:-3}
+size=${GROW_SIZE:-512x384}
+w=${size%x*}; h=${size#*x}
+dir=$(dirname "$0")
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/maprt-grow-XXXXXX") || exit 3
+trap 'rm -rf "$tmp"' EXIT INT TERM
+command -v povray >/dev/null 2>&1 || { echo "bench-grow: povray (Debian povray) is not installed" >&2; exit 3; }
+. "$dir/lib.sh"
+
+# scenes N: $tmp/gN.scene and $tmp/gN.pov
+scenes() {
+  n=$1
+  awk -v n="$n" 'BEGIN {
+    s = 9 / n; step = 27 / n
+    for (i = 0; i < n; i++) for (j = 0; j < n; j++)
+      printf "%.6f %.6f %.6f %.6f\n", s, -13.5 + step * (i + 0.5), -13.5 + step * (j + 0.5), s - 1
+  }' > "$tmp/place"
+  { sed -n '/^EYE/,/^HALFSPACE/p' "$dir/csg81.scene"
+    awk '{ printf "OBJECT PART SCALE %s TRANSLATE %s %s %s\n", $1, $2, $3, $4 }' "$tmp/place"
+    echo "OBJECT GROUND"; } > "$tmp/g$n.scene"
+  { sed -n '1,/^#include/p' "$dir/csg81.pov"
+    awk '{ printf "object { Part scale %s translate <%s, %s, %s> }\n", $1, $2, $3, $4 }' "$tmp/place"
+    echo "object { Floor }"; } > "$tmp/g$n.pov"
+}
+
+echo "objects,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_growth,f64_growth,pov_growth,pixels_over_8"
+for n in 1 3 10 32 100; do
+  scenes "$n"
+  povray "+I$tmp/g$n.pov" "+L$dir" "+O$tmp/g.ppm" "+W$w" "+H$h" +WT1 +FP -D "File_Gamma=1.0" Display=off >/dev/null 2>&1 \
+    || { echo "bench-grow: povray failed on $n x $n" >&2; exit 3; }
+  "$bin" render "$tmp/g$n.scene" -o "$tmp/g.png" --size "$size" --numeric f64 --threads 1 --quiet || exit 3
+  over=$("$bin" compare "$tmp/g.ppm" "$tmp/g.png" | sed -n 's/^pixels_over=//p')
+  i=0
+  while [ "$i" -lt "$runs" ]; do
+    run "q$n" "$bin" render "$tmp/g$n.scene" -o "$tmp/o.png" --size "$size" --numeric q16 --threads 1 --quiet
+    run "f$n" "$bin" render "$tmp/g$n.scene" -o "$tmp/o.png" --size "$size" --numeric f64 --threads 1 --quiet
+    run "p$n" povray "+I$tmp/g$n.pov" "+L$dir" "+O$tmp/p.png" "+W$w" "+H$h" +WT1 -D "File_Gamma=1.0" Display=off
+    i=$((i + 1))
+  done
+  q=$(med "q$n" 1); f=$(med "f$n" 1); p=$(med "p$n" 1)
+  [ "$n" = 1 ] && { q1=$q; f1=$f; p1=$p; }
+  echo "$((n * n)),$q,$f,$p,$(ratio "$q" "$q1"),$(ratio "$f" "$f1"),$(ratio "$p" "$p1"),$over"
+done
