@@ -380,7 +380,7 @@ typedef struct csg_query {
  * centre (what a leaf's primitive test continues from) and *tin a lower
  * bound of the parameter where the ray enters the bounds (lo for an
  * unbounded node): the key of nearest-first traversal. */
-static int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, num *tc, num *tin)
+VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, num *tc, num *tin)
 {
     *tc = NUM_ZERO;
     *tin = lo;

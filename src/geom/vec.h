@@ -1,6 +1,8 @@
 /* vec — 3-vectors and 3x3 matrices of `num` for the modal geometry code.
  * Small transparent value types; every operation goes through num_* so the
- * fixed-point modes saturate and count overflows instead of wrapping.
+ * fixed-point modes saturate and count overflows instead of wrapping
+ * (except q16's bounds tests, whose exact 64-bit intermediates cannot
+ * overflow: see vec3_sphere_miss).
  * Included only by files compiled per numeric mode. */
 #ifndef GEOM_VEC_H
 #define GEOM_VEC_H
@@ -240,6 +242,39 @@ VEC_HOT int vec3_slab_miss(num lo, num hi, num o, num d, vec3_rcp_t rq, num *a, 
  * the box. The origin is first moved to o + tc d, inside the sphere
  * that contains the box, so every difference is at most the sphere's
  * diameter. rc holds the reciprocals of d's components. */
+#if defined(NUM_MODE_q16)
+/* q16: vec3_slab_miss on exact 64-bit intermediates (see vec3_sphere_miss
+ * for why nothing can overflow). */
+VEC_HOT int vec3_slab_miss64(num lo, num hi, int64_t o, num d, int64_t rq, int64_t *a, int64_t *b)
+{
+    int64_t x[2], t[2];
+    int k;
+    if (d == NUM_ZERO)
+        return o < lo || o > hi;
+    x[0] = lo - o;
+    x[1] = hi - o;
+    for (k = 0; k < 2; k++)
+        t[k] = rq != 0 && x[k] < ((int64_t)1 << 22) && x[k] > -((int64_t)1 << 22)
+               ? fx_shr_round(x[k] * rq, 32)
+               : num_div_clamp(fx16_sat(x[k]), d, num_from_i(GEOM_TBIG));
+    if (d < NUM_ZERO) { int64_t u = t[0]; t[0] = t[1]; t[1] = u; }
+    if (t[0] > *a) *a = t[0];
+    if (t[1] < *b) *b = t[1];
+    return *a > *b;
+}
+
+VEC_HOT int vec3_box_enter(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc, num tc,
+                           num tmin, num tmax, num *tin)
+{
+    int64_t a = (int64_t)tmin - tc, b = (int64_t)tmax - tc;
+    if (vec3_slab_miss64(lo.x, hi.x, o.x + fx_shr_round((int64_t)d.x * tc, 16), d.x, rc->q[0], &a, &b)
+        || vec3_slab_miss64(lo.y, hi.y, o.y + fx_shr_round((int64_t)d.y * tc, 16), d.y, rc->q[1], &a, &b)
+        || vec3_slab_miss64(lo.z, hi.z, o.z + fx_shr_round((int64_t)d.z * tc, 16), d.z, rc->q[2], &a, &b))
+        return 1;
+    *tin = fx16_sat(a + tc);
+    return 0;
+}
+#else
 VEC_HOT int vec3_box_enter(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc, num tc,
                            num tmin, num tmax, num *tin)
 {
@@ -252,6 +287,7 @@ VEC_HOT int vec3_box_enter(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc,
     *tin = num_add(a, tc);
     return 0;
 }
+#endif
 
 
 /* a*b clamped to [-lim, lim] (lim > 0) without saturating: a product
@@ -297,6 +333,28 @@ static inline int num_frac_gt(num n1, num d1, num n2, num d2)
  * sphere (c, r) for every t in [tmin, tmax]; else 0 and *tc = the parameter of
  * the ray point closest to c. Division-free; the only squares are of
  * quantities already checked to be at most r (docs/numerics.md). */
+#if defined(NUM_MODE_q16)
+/* q16: the same arithmetic on exact 64-bit intermediates. Differences of
+ * Q16.16 values stay below 2^33, products with a unit component below
+ * 2^49 and squares of components at most r below 2^62, so nothing can
+ * overflow and nothing needs a saturation check; where the saturating
+ * forms do not saturate, every value and every decision is the same. */
+VEC_HOT int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmin, num tmax, num *tc)
+{
+    int64_t ox = (int64_t)c.x - o.x, oy = (int64_t)c.y - o.y, oz = (int64_t)c.z - o.z;
+    int64_t t = fx_shr_round(ox * d.x / 4 + oy * d.y / 4 + oz * d.z / 4, 14), qx, qy, qz;
+    if (t + r < tmin || t - r > tmax)
+        return 1;
+    qx = ox - fx_shr_round(d.x * t, 16);
+    qy = oy - fx_shr_round(d.y * t, 16);
+    qz = oz - fx_shr_round(d.z * t, 16);
+    if (qx > r || qx < -(int64_t)r || qy > r || qy < -(int64_t)r || qz > r || qz < -(int64_t)r
+        || fx_shr_round(qx * qx / 4 + qy * qy / 4 + qz * qz / 4, 14) > fx_shr_round((int64_t)r * r, 16))
+        return 1;
+    *tc = fx16_sat(t);
+    return 0;
+}
+#else
 VEC_HOT int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmin, num tmax, num *tc)
 {
     vec3 oc = vec3_sub(c, o), q;
@@ -309,4 +367,5 @@ VEC_HOT int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmin, num tmax, 
     *tc = t;
     return 0;
 }
+#endif
 #endif
