@@ -20,27 +20,44 @@ typedef struct image_png_write_band {
     int failed;
 } image_png_write_band;
 
+/* The Paeth predictor of x from its left (a), upper (b) and upper-left
+ * (c) neighbours (PNG specification, 9.4). */
+static inline int image_png_write_paeth(int a, int b, int c)
+{
+    int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p;
+    int pc = p > c ? p - c : c - p;
+    return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+}
+
+static inline unsigned image_png_write_mag(unsigned char v) { return v < 128 ? v : 256u - v; }
+
 /* Filters row cur (n bytes, bpp per pixel; prev is a row of zeros for the
  * first row) into out[0..n]: type byte, then the bytes of the filter (0
  * none, 1 sub, 2 up, 3 average, 4 Paeth) whose outputs, read as signed,
- * have the least sum of magnitudes (libpng's heuristic). */
+ * have the least sum of magnitudes (libpng's heuristic). The first pixel,
+ * whose left neighbours are zero, is done apart so that the loops over
+ * the rest have no branch on the position. */
 static void image_png_write_filter(const unsigned char *cur, const unsigned char *prev, size_t n,
                                    int bpp, unsigned char *out)
 {
     unsigned long sum[5] = {0, 0, 0, 0, 0};
-    size_t i, k = (size_t)bpp;
+    size_t i, k = (size_t)bpp < n ? (size_t)bpp : n;
     int f, best = 0;
-    for (i = 0; i < n; i++) {
-        int x = cur[i], a = i >= k ? cur[i - k] : 0, b = prev[i], c = i >= k ? prev[i - k] : 0;
-        int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p;
-        int pc = p > c ? p - c : c - p, pr = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-        unsigned char v0 = (unsigned char)x, v1 = (unsigned char)(x - a), v2 = (unsigned char)(x - b);
-        unsigned char v3 = (unsigned char)(x - ((a + b) >> 1)), v4 = (unsigned char)(x - pr);
-        sum[0] += v0 < 128 ? v0 : 256u - v0;
-        sum[1] += v1 < 128 ? v1 : 256u - v1;
-        sum[2] += v2 < 128 ? v2 : 256u - v2;
-        sum[3] += v3 < 128 ? v3 : 256u - v3;
-        sum[4] += v4 < 128 ? v4 : 256u - v4;
+    for (i = 0; i < k; i++) {
+        int x = cur[i], b = prev[i];
+        sum[0] += image_png_write_mag((unsigned char)x);
+        sum[1] += image_png_write_mag((unsigned char)x);
+        sum[2] += image_png_write_mag((unsigned char)(x - b));
+        sum[3] += image_png_write_mag((unsigned char)(x - (b >> 1)));
+        sum[4] += image_png_write_mag((unsigned char)(x - image_png_write_paeth(0, b, 0)));
+    }
+    for (; i < n; i++) {
+        int x = cur[i], a = cur[i - k], b = prev[i], c = prev[i - k];
+        sum[0] += image_png_write_mag((unsigned char)x);
+        sum[1] += image_png_write_mag((unsigned char)(x - a));
+        sum[2] += image_png_write_mag((unsigned char)(x - b));
+        sum[3] += image_png_write_mag((unsigned char)(x - ((a + b) >> 1)));
+        sum[4] += image_png_write_mag((unsigned char)(x - image_png_write_paeth(a, b, c)));
     }
     for (f = 1; f < 5; f++)
         if (sum[f] < sum[best])
@@ -52,24 +69,25 @@ static void image_png_write_filter(const unsigned char *cur, const unsigned char
         memcpy(out, cur, n);
         break;
     case 1:
-        for (i = 0; i < n; i++)
-            out[i] = (unsigned char)(cur[i] - (i >= k ? cur[i - k] : 0));
+        memcpy(out, cur, k);
+        for (i = k; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - cur[i - k]);
         break;
     case 2:
         for (i = 0; i < n; i++)
             out[i] = (unsigned char)(cur[i] - prev[i]);
         break;
     case 3:
-        for (i = 0; i < n; i++)
-            out[i] = (unsigned char)(cur[i] - (((i >= k ? cur[i - k] : 0) + prev[i]) >> 1));
+        for (i = 0; i < k; i++)
+            out[i] = (unsigned char)(cur[i] - (prev[i] >> 1));
+        for (; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - ((cur[i - k] + prev[i]) >> 1));
         break;
     default:
-        for (i = 0; i < n; i++) {
-            int a = i >= k ? cur[i - k] : 0, b = prev[i], c = i >= k ? prev[i - k] : 0;
-            int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p;
-            int pc = p > c ? p - c : c - p;
-            out[i] = (unsigned char)(cur[i] - (pa <= pb && pa <= pc ? a : pb <= pc ? b : c));
-        }
+        for (i = 0; i < k; i++)
+            out[i] = (unsigned char)(cur[i] - image_png_write_paeth(0, prev[i], 0));
+        for (; i < n; i++)
+            out[i] = (unsigned char)(cur[i] - image_png_write_paeth(cur[i - k], prev[i], prev[i - k]));
         break;
     }
 }
