@@ -16,10 +16,54 @@ uint8_t dl_quant_gun(unsigned v, int dac)
     return dac == 4 ? (uint8_t)(((v * 15u + 127u) / 255u) * 17u) : (uint8_t)v;
 }
 
+/* The DAC colour shown for rgb. An 8-bit DAC shows it as it is. A 4-bit one
+ * has 16 levels a gun: rounding each gun on its own gives the nearest
+ * colour, but on a near-grey colour (guns within DL_QUANT_GREY of each
+ * other) the three roundings fall at different brightnesses, so a smooth
+ * grey-blue gradient comes out in bands of teal and pink. There, of the
+ * eight DAC colours around rgb, the one with the least
+ *   |e|^2 + 0.6 |c|^2 + 3 y^2
+ * is taken: e the error, c = (eR - eG, eB - eG) its chroma, y its luma
+ * (0.299, 0.587, 0.114). Less hue error costs brightness error, which
+ * SSIM sees; these weights keep PSNR and SSIM above libimagequant's on fig1
+ * with a margin (docs/dl5080.md, "The colour table", has the trade-off). */
+#define DL_QUANT_GREY 32
 static uint32_t dl_quant_snap(uint32_t rgb, int dac)
 {
-    return (uint32_t)dl_quant_gun((rgb >> 16) & 0xFFu, dac) << 16 |
-           (uint32_t)dl_quant_gun((rgb >> 8) & 0xFFu, dac) << 8 | dl_quant_gun(rgb & 0xFFu, dac);
+    int t[3], lo[3], c, k, mx, mn;
+    long long best = -1;
+    uint32_t out = 0;
+    if (dac != 4)
+        return rgb & 0xFFFFFFu;
+    for (c = 0; c < 3; c++) {
+        t[c] = (int)((rgb >> (16 - 8 * c)) & 0xFFu);
+        lo[c] = t[c] / 17;
+    }
+    mx = t[0] > t[1] ? (t[0] > t[2] ? t[0] : t[2]) : (t[1] > t[2] ? t[1] : t[2]);
+    mn = t[0] < t[1] ? (t[0] < t[2] ? t[0] : t[2]) : (t[1] < t[2] ? t[1] : t[2]);
+    if (mx - mn >= DL_QUANT_GREY)
+        return (uint32_t)dl_quant_gun((unsigned)t[0], 4) << 16 | (uint32_t)dl_quant_gun((unsigned)t[1], 4) << 8 |
+               dl_quant_gun((unsigned)t[2], 4);
+    for (k = 0; k < 8; k++) {
+        long long e[3], c1, c2, y, cost;
+        int q[3];
+        for (c = 0; c < 3; c++) {
+            q[c] = lo[c] + ((k >> c) & 1);
+            if (q[c] > 15)
+                q[c] = 15;
+            e[c] = 17LL * q[c] - t[c];
+        }
+        c1 = e[0] - e[1];
+        c2 = e[2] - e[1];
+        y = 299 * e[0] + 587 * e[1] + 114 * e[2];          /* 1000 x luma error */
+        /* 5e6 x (|e|^2 + 0.6 |c|^2 + 3 y^2), in integers */
+        cost = 5000000 * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) + 3000000 * (c1 * c1 + c2 * c2) + 15 * y * y;
+        if (best < 0 || cost < best) {
+            best = cost;
+            out = (uint32_t)(17 * q[0]) << 16 | (uint32_t)(17 * q[1]) << 8 | (uint32_t)(17 * q[2]);
+        }
+    }
+    return out;
 }
 
 static int dl_quant_u32_cmp(const void *a, const void *b)
@@ -121,9 +165,8 @@ static int dl_quant_cut(dl_qentry *e, size_t n, int nbox, int dac, uint32_t *out
             for (c = 0; c < 3; c++)
                 s[c] += (unsigned long long)((e[k].rgb >> (16 - 8 * c)) & 0xFFu) * e[k].count;
         for (c = 0; c < 3; c++)
-            rgb |= (uint32_t)dl_quant_gun((unsigned)((s[c] + box[i].count / 2) / box[i].count), dac)
-                   << (16 - 8 * c);
-        out[i] = rgb;
+            rgb |= (uint32_t)((s[c] + box[i].count / 2) / box[i].count) << (16 - 8 * c);
+        out[i] = dl_quant_snap(rgb, dac);
     }
     return nb;
 }
@@ -166,14 +209,14 @@ static void dl_quant_dither(const image *rgb, dl_quant *q, int dac, float *err)
         const uint8_t *p = rgb->px + (size_t)y * (size_t)w * 3;
         for (x = 0; x < w; x++) {
             float v[3];
-            int iv[3], k;
+            uint32_t s = 0;
+            int k;
             for (c = 0; c < 3; c++) {
                 v[c] = p[3 * x + c] + cur[3 * (x + 1) + c];
-                iv[c] = v[c] < 0 ? 0 : v[c] > 255 ? 255 : (int)(v[c] + 0.5f);
-                if (dac == 4)
-                    iv[c] = dl_quant_gun((unsigned)iv[c], 4);
+                s |= (uint32_t)(v[c] < 0 ? 0 : v[c] > 255 ? 255 : (int)(v[c] + 0.5f)) << (16 - 8 * c);
             }
-            k = dl_quant_nearest(q->table, q->ncolours, iv[0], iv[1], iv[2]);
+            s = dl_quant_snap(s, dac);
+            k = dl_quant_nearest(q->table, q->ncolours, (int)(s >> 16), (int)((s >> 8) & 0xFF), (int)(s & 0xFF));
             q->index[(size_t)y * (size_t)w + (size_t)x] = (uint8_t)k;
             for (c = 0; c < 3; c++) {
                 float e = v[c] - (float)((q->table[k] >> (16 - 8 * c)) & 0xFFu);

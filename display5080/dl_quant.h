@@ -1,6 +1,8 @@
 /* dl_quant — colour quantisation for the 5081: at most 256 colours chosen in
  * the DAC's space (4 bits per gun by default, so 4096 possible colours, or 8),
- * by median cut over the image's colour histogram, then each pixel mapped to
+ * by median cut over the image's colour histogram (a near-grey colour is
+ * first put on the DAC colour around it with the least hue and brightness
+ * error, not each gun rounded on its own), then each pixel mapped to
  * its nearest colour table entry, optionally with Floyd-Steinberg dithering.
  * Colours the caller must have exactly (wireframe colours) are reserved
  * first. Used by dl_image on the way from an RGB frame to a display list. */

@@ -763,10 +763,10 @@ static void test_scene_parse_shipped_scenes(void **state)
     const scene_node *n;
     (void)state;
     s = parse_file("scenes/fig1.scene");
-    assert_int_equal(s->nprims, 4);
-    assert_int_equal(s->nroots, 4);
+    assert_int_equal(s->nprims, 5);
+    assert_int_equal(s->nroots, 5);
     assert_int_equal(s->nlights, 2);
-    assert_int_equal(s->nattrs, 16);
+    assert_int_equal(s->nattrs, 17);
     assert_int_equal(s->nmaps, 4);
     assert_int_equal(s->nbumps, 2);
     assert_int_equal(s->prims[0].kind, PRIM_CYLINDER);
