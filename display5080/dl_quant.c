@@ -22,11 +22,12 @@ uint8_t dl_quant_gun(unsigned v, int dac)
  * other) the three roundings fall at different brightnesses, so a smooth
  * grey-blue gradient comes out in bands of teal and pink. There, of the
  * eight DAC colours around rgb, the one with the least
- *   |e|^2 + 0.6 |c|^2 + 3 y^2
- * is taken: e the error, c = (eR - eG, eB - eG) its chroma, y its luma
- * (0.299, 0.587, 0.114). Less hue error costs brightness error, which
- * SSIM sees; these weights keep PSNR and SSIM above libimagequant's on fig1
- * with a margin (docs/dl5080.md, "The colour table", has the trade-off). */
+ *   |e|^2 + 0.4 |c|^2
+ * is taken: e the error, c = (eR - eG, eB - eG) its chroma. Less hue error
+ * costs brightness error, which SSIM sees: these weights are the least
+ * hue penalty that leaves no teal or pink band on fig1's floor, at a PSNR
+ * still above libimagequant's and an SSIM 0.004 below it (docs/dl5080.md,
+ * "The colour table", has the trade-off). */
 #define DL_QUANT_GREY 32
 static uint32_t dl_quant_snap(uint32_t rgb, int dac)
 {
@@ -45,7 +46,7 @@ static uint32_t dl_quant_snap(uint32_t rgb, int dac)
         return (uint32_t)dl_quant_gun((unsigned)t[0], 4) << 16 | (uint32_t)dl_quant_gun((unsigned)t[1], 4) << 8 |
                dl_quant_gun((unsigned)t[2], 4);
     for (k = 0; k < 8; k++) {
-        long long e[3], c1, c2, y, cost;
+        long long e[3], c1, c2, cost;
         int q[3];
         for (c = 0; c < 3; c++) {
             q[c] = lo[c] + ((k >> c) & 1);
@@ -55,9 +56,8 @@ static uint32_t dl_quant_snap(uint32_t rgb, int dac)
         }
         c1 = e[0] - e[1];
         c2 = e[2] - e[1];
-        y = 299 * e[0] + 587 * e[1] + 114 * e[2];          /* 1000 x luma error */
-        /* 5e6 x (|e|^2 + 0.6 |c|^2 + 3 y^2), in integers */
-        cost = 5000000 * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) + 3000000 * (c1 * c1 + c2 * c2) + 15 * y * y;
+        /* 5 x (|e|^2 + 0.4 |c|^2), in integers */
+        cost = 5 * (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]) + 2 * (c1 * c1 + c2 * c2);
         if (best < 0 || cost < best) {
             best = cost;
             out = (uint32_t)(17 * q[0]) << 16 | (uint32_t)(17 * q[1]) << 8 | (uint32_t)(17 * q[2]);
