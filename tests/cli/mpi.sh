@@ -1,8 +1,9 @@
 #!/bin/sh
 # maprt under mpirun (Open MPI): three ranks (oversubscribed on a small
-# machine) write exactly the bytes of a single-process render, PNG and
-# DL5080, with the counters summed over ranks and each rank's share; a rank
-# killed mid-render fails the job with a message and leaves no output.
+# machine) write exactly the bytes of a single-process render, PNG, DL5080
+# and identity map, with the counters summed over ranks and each rank's
+# share; a bad deck or a rank killed mid-render fails the job with a message
+# and leaves no output.
 # Exit 77 (skipped) when the binary was built without MPI or mpirun is absent.
 set -u
 tmp=$(mktemp -d) || exit 1
@@ -30,30 +31,47 @@ for m in q16 f64; do
   bands=$(sed -n 's/^mpi\.rank[0-9]*\.bands=//p' "$tmp/mpi-$m.st" | awk '{s+=$1} END {print s}')
   [ "$bands" = 3 ] || fail "$m: ranks rendered $bands bands of 3"
 done
+# The identity map travels with the bands: the same bytes, the same counters.
+$MAPRT render $deck --ids "$tmp/one.ids" -o "$tmp/one-i.png" --size 120x90 --aa 2 --numeric f64 \
+  --threads 2 --stats > "$tmp/one-i.st" || fail "single render --ids"
+mpi $MAPRT render $deck --ids "$tmp/mpi.ids" -o "$tmp/mpi-i.png" --size 120x90 --aa 2 --numeric f64 \
+  --threads 1 --stats > "$tmp/mpi-i.st" || fail "mpirun render --ids"
+cmp -s "$tmp/one.ids" "$tmp/mpi.ids" || fail "--ids: identity map differs from the single-process render"
+cmp -s "$tmp/one-i.png" "$tmp/mpi-i.png" || fail "--ids: PNG differs from the single-process render"
+[ "$(wc -c < "$tmp/mpi.ids")" = $((16 + 24 * 120 * 90)) ] || fail "--ids: wrong size"
+grep -v '^time\.' "$tmp/one-i.st" > "$tmp/a"
+grep -v '^time\.\|^mpi\.' "$tmp/mpi-i.st" > "$tmp/b"
+cmp -s "$tmp/a" "$tmp/b" || fail "--ids: counters differ: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
+
 # A deck error is reported once (by rank 0) and fails every rank.
 printf 'SPHERE S 1\nOBJECT T\n' > "$tmp/bad.scene"
 mpi $MAPRT render "$tmp/bad.scene" -o "$tmp/bad.png" 2> "$tmp/e" && fail "bad deck accepted"
 [ "$(grep -c 'error:' "$tmp/e")" = 1 ] || fail "bad deck: not one message: $(cat "$tmp/e")"
 [ ! -e "$tmp/bad.png" ] || fail "bad deck wrote a file"
+# Kills rank 1 of the job started last (pid $job) half a second after it
+# started, and checks that the job fails with a message; $1 names the job.
+kill_rank1() {
+  victim=""
+  i=0
+  while [ -z "$victim" ] && [ $i -lt 200 ]; do
+    for p in /proc/[0-9]*; do
+      { tr '\0' '\n' < "$p/environ" | grep -qx 'OMPI_COMM_WORLD_RANK=1'; } 2>/dev/null || continue
+      grep -q "$tmp" "$p/cmdline" 2>/dev/null && victim=${p#/proc/}
+    done
+    i=$((i + 1))
+    [ -n "$victim" ] || sleep 0.05
+  done
+  [ -n "$victim" ] || { kill $job; fail "$1: rank 1 never started"; }
+  sleep 0.5
+  kill -9 "$victim"
+  wait $job && fail "$1: the job succeeded although rank 1 was killed"
+  [ -s "$tmp/k.err" ] || fail "$1: no message when a rank died"
+}
 # Kill rank 1 while the ranks render: the job fails, nothing is written.
 mpi $MAPRT render $deck -o "$tmp/killed.png" --size 640x480 --aa 3 --threads 1 \
   > "$tmp/k.out" 2> "$tmp/k.err" &
 job=$!
-victim=""
-i=0
-while [ -z "$victim" ] && [ $i -lt 200 ]; do
-  for p in /proc/[0-9]*; do
-    { tr '\0' '\n' < "$p/environ" | grep -qx 'OMPI_COMM_WORLD_RANK=1'; } 2>/dev/null || continue
-    grep -q maprt "$p/cmdline" 2>/dev/null && victim=${p#/proc/}
-  done
-  i=$((i + 1))
-  [ -n "$victim" ] || sleep 0.05
-done
-[ -n "$victim" ] || { kill $job; fail "rank 1 never started"; }
-sleep 0.5
-kill -9 "$victim"
-wait $job && fail "the job succeeded although rank 1 was killed"
-[ -s "$tmp/k.err" ] || fail "no message when a rank died"
+kill_rank1 render
 [ ! -e "$tmp/killed.png" ] || fail "output written although a rank died"
 ls "$tmp" | grep -q 'tmp-' && fail "temporary file left behind"
 exit 0
