@@ -2,7 +2,9 @@
 # maprt under mpirun (Open MPI): three ranks (oversubscribed on a small
 # machine) write exactly the bytes of a single-process render, PNG, DL5080
 # and identity map, with the counters summed over ranks and each rank's
-# share; a bad deck or a rank killed mid-render fails the job with a message
+# share; bench writes the CSV rows of one process (timings and the rank
+# column aside) with the cells spread over the ranks; a failed cell, a bad
+# deck or a rank killed mid-render or mid-sweep fails the job with a message
 # and leaves no output.
 # Exit 77 (skipped) when the binary was built without MPI or mpirun is absent.
 set -u
@@ -43,6 +45,38 @@ grep -v '^time\.' "$tmp/one-i.st" > "$tmp/a"
 grep -v '^time\.\|^mpi\.' "$tmp/mpi-i.st" > "$tmp/b"
 cmp -s "$tmp/a" "$tmp/b" || fail "--ids: counters differ: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
 
+# bench: the rows of one process, in its order, but for the timings
+# (seconds_median, rays_per_s) and the rank that ran each row.
+set -- scenes/fig1.scene scenes/csg.scene scenes/coincident.scene --size 32x24 \
+  --modes q16,q32,f64,hfp32 --runs 2 --threads 1
+$MAPRT bench "$@" --csv "$tmp/b1.csv" > "$tmp/b1.out" || fail "single bench"
+mpi $MAPRT bench "$@" --csv "$tmp/b3.csv" > "$tmp/b3.out" || fail "mpirun bench"
+untimed() { awk -F, 'BEGIN {OFS = ","} {$6 = ""; $8 = ""; $NF = ""; print}' "$1"; }
+untimed "$tmp/b1.csv" > "$tmp/a"
+untimed "$tmp/b3.csv" > "$tmp/b"
+[ "$(wc -l < "$tmp/a")" = 13 ] || fail "bench: $(wc -l < "$tmp/a") CSV lines, not a header and 12 rows"
+cmp -s "$tmp/a" "$tmp/b" || fail "bench: CSV rows differ: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
+head -1 "$tmp/b3.csv" | grep -q ',rank$' || fail "bench: no rank column"
+[ "$(sed 1d "$tmp/b1.csv" | awk -F, '$NF != 0' | wc -l)" = 0 ] || fail "bench: one process is rank 0"
+sed 1d "$tmp/b3.csv" | awk -F, '$NF !~ /^[012]$/ {bad++} !seen[$NF]++ {n++}
+  END {exit !(!bad && n >= 2)}' || fail "bench: rank column $(sed 1d "$tmp/b3.csv" | awk -F, '{printf "%s ", $NF}')"
+awk '/^S/ {$5 = ""; $6 = ""} {print}' "$tmp/b1.out" > "$tmp/a"
+awk '/^S/ {$5 = ""; $6 = ""} {print}' "$tmp/b3.out" > "$tmp/b"
+cmp -s "$tmp/a" "$tmp/b" || fail "bench: the table differs: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
+if command -v gnuplot > /dev/null 2>&1; then
+  mpi $MAPRT bench scenes/csg.scene --size 16x16 --modes q16,f64 --runs 1 --threads 1 \
+    --csv "$tmp/p.csv" --plot "$tmp/p.png" > /dev/null 2> "$tmp/e" || fail "mpirun bench --plot: $(cat "$tmp/e")"
+  [ "$(head -c 4 "$tmp/p.png" | od -An -c | tr -d ' ')" = "211PNG" ] || fail "bench: the chart is not a PNG"
+fi
+# A cell that fails (a bad deck among good ones) fails the job: one
+# message, no CSV.
+printf 'SPHERE S 1\nOBJECT T\n' > "$tmp/bad.scene"
+mpi $MAPRT bench scenes/csg.scene "$tmp/bad.scene" --size 16x16 --modes q16,f64 --runs 1 --threads 1 \
+  --csv "$tmp/bad.csv" > /dev/null 2> "$tmp/e"; [ $? -eq 1 ] || fail "bench: bad deck: exit status"
+[ "$(grep -c 'error:' "$tmp/e")" = 1 ] || fail "bench: bad deck: not one message: $(cat "$tmp/e")"
+grep -q "bad.scene" "$tmp/e" || fail "bench: bad deck: the message does not name it: $(cat "$tmp/e")"
+[ ! -e "$tmp/bad.csv" ] || fail "bench: bad deck wrote a CSV"
+
 # A deck error is reported once (by rank 0) and fails every rank.
 printf 'SPHERE S 1\nOBJECT T\n' > "$tmp/bad.scene"
 mpi $MAPRT render "$tmp/bad.scene" -o "$tmp/bad.png" 2> "$tmp/e" && fail "bad deck accepted"
@@ -73,5 +107,11 @@ mpi $MAPRT render $deck -o "$tmp/killed.png" --size 640x480 --aa 3 --threads 1 \
 job=$!
 kill_rank1 render
 [ ! -e "$tmp/killed.png" ] || fail "output written although a rank died"
+# The same mid-sweep: no CSV.
+mpi $MAPRT bench $deck scenes/csg.scene --size 320x240 --runs 3 --threads 1 --csv "$tmp/killed.csv" \
+  > "$tmp/k.out" 2> "$tmp/k.err" &
+job=$!
+kill_rank1 bench
+[ ! -e "$tmp/killed.csv" ] || fail "bench: CSV written although a rank died"
 ls "$tmp" | grep -q 'tmp-' && fail "temporary file left behind"
 exit 0
