@@ -6,6 +6,7 @@
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #ifdef MAPRT_MPI
 #include <mpi.h>
 #endif
@@ -180,44 +181,100 @@ static int cli_mpi_band_take(void *ctx, int b, int rank, const uint8_t *buf, siz
     return 0;
 }
 
+/* Waiting without spinning: Open MPI's blocking calls poll the CPU, which
+ * on an oversubscribed node takes the core from a rank that renders (with
+ * blocking calls two ranks on two cores cost 60% more CPU than one and ran
+ * slower). A nap grows from 16 us to 1 ms, a rank that waits wakes at most
+ * a thousand times a second. */
+static void cli_mpi_nap(long *us)
+{
+    struct timespec ts;
+    ts.tv_sec = 0;
+    ts.tv_nsec = *us * 1000;
+    nanosleep(&ts, NULL);
+    if (*us < 1000)
+        *us *= 2;
+}
+
+static void cli_mpi_probe(int src, int tag, MPI_Status *ms)
+{
+    long us = 16;
+    int flag = 0;
+    for (MPI_Iprobe(src, tag, MPI_COMM_WORLD, &flag, ms); !flag;
+         MPI_Iprobe(src, tag, MPI_COMM_WORLD, &flag, ms))
+        cli_mpi_nap(&us);
+}
+
+/* A result on its way to rank 0: sent without blocking, so that the rank
+ * renders its next cell while rank 0 is busy with a cell of its own. */
+typedef struct cli_mpi_out {
+    long long meta[CLI_MPI_META_N];
+    char text[sizeof ((diag *)0)->file + sizeof ((diag *)0)->msg];
+    uint8_t *buf;             /* the result (mem_alloc'd), NULL when text goes */
+    MPI_Request req[2];
+    int busy;
+} cli_mpi_out;
+
+/* Waits until the result in flight has left, and frees it. */
+static void cli_mpi_out_done(cli_mpi_out *o)
+{
+    long us = 16;
+    int flag = 0;
+    if (!o->busy)
+        return;
+    for (MPI_Testall(2, o->req, &flag, MPI_STATUSES_IGNORE); !flag;
+         MPI_Testall(2, o->req, &flag, MPI_STATUSES_IGNORE))
+        cli_mpi_nap(&us);
+    mem_free(o->buf);
+    o->buf = NULL;
+    o->busy = 0;
+}
+
 /* A rank other than 0: runs the cells rank 0 sends until told to stop, and
  * sends back each result, or the diag of a cell that failed. */
 static void cli_mpi_farm_worker(const cli_mpi_farm *f)
 {
+    cli_mpi_out out;
+    memset(&out, 0, sizeof out);
     for (;;) {
         MPI_Status ms;
-        long long meta[CLI_MPI_META_N];
-        char text[sizeof ((diag *)0)->file + sizeof ((diag *)0)->msg];
         uint8_t *buf = NULL;
+        const void *data;
         size_t len = 0;
         diag err;
         int c, st;
-        MPI_Recv(&c, 1, MPI_INT, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &ms);
+        cli_mpi_probe(0, MPI_ANY_TAG, &ms);
+        MPI_Recv(&c, 1, MPI_INT, 0, ms.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
         if (ms.MPI_TAG == CLI_MPI_TAG_STOP)
-            return;
+            break;
         diag_init(&err);
         st = f->run(f->ctx, c, &buf, &len, &err);
         if (!st && len > INT_MAX)
             st = diag_at(&err, DIAG_IO, "", 0, 0, "a result of %zu bytes is too large to send", len);
+        cli_mpi_out_done(&out);
         if (st) {
             size_t nf = strlen(err.file) + 1;
             mem_free(buf);
-            memcpy(text, err.file, nf);
-            memcpy(text + nf, err.msg, strlen(err.msg) + 1);
-            buf = (uint8_t *)text;
+            memcpy(out.text, err.file, nf);
+            memcpy(out.text + nf, err.msg, strlen(err.msg) + 1);
+            data = out.text;
             len = nf + strlen(err.msg) + 1;
+        } else {
+            out.buf = buf;
+            data = buf;
         }
-        meta[CLI_MPI_META_CELL] = c;
-        meta[CLI_MPI_META_STATUS] = st;
-        meta[CLI_MPI_META_LEN] = (long long)len;
-        meta[CLI_MPI_META_LINE] = err.line;
-        meta[CLI_MPI_META_COL] = err.col;
-        meta[CLI_MPI_META_OFFSET] = err.offset;
-        MPI_Send(meta, CLI_MPI_META_N, MPI_LONG_LONG, 0, CLI_MPI_TAG_META, MPI_COMM_WORLD);
-        MPI_Send(buf, (int)len, MPI_BYTE, 0, CLI_MPI_TAG_DATA, MPI_COMM_WORLD);
-        if (!st)
-            mem_free(buf);
+        out.meta[CLI_MPI_META_CELL] = c;
+        out.meta[CLI_MPI_META_STATUS] = st;
+        out.meta[CLI_MPI_META_LEN] = (long long)len;
+        out.meta[CLI_MPI_META_LINE] = err.line;
+        out.meta[CLI_MPI_META_COL] = err.col;
+        out.meta[CLI_MPI_META_OFFSET] = err.offset;
+        MPI_Isend(out.meta, CLI_MPI_META_N, MPI_LONG_LONG, 0, CLI_MPI_TAG_META, MPI_COMM_WORLD,
+                  &out.req[0]);
+        MPI_Isend((void *)data, (int)len, MPI_BYTE, 0, CLI_MPI_TAG_DATA, MPI_COMM_WORLD, &out.req[1]);
+        out.busy = 1;
     }
+    cli_mpi_out_done(&out);
 }
 
 /* Rank 0: receives one result from src and takes it, or records its
@@ -257,7 +314,7 @@ static void cli_mpi_farm_recv(const cli_mpi_farm *f, int src, int *failed, diag 
 
 int cli_mpi_farm_run(const cli_mpi_farm *f, diag *err)
 {
-    int *outstanding, depth = f->depth > 0 ? f->depth : 2, next = 0, inflight = 0, failed = 0, r;
+    int *outstanding, next = 0, inflight = 0, failed = 0, r;
     if (!cli_mpi_on || cli_mpi_n < 2)
         return cli_mpi_farm_local(f, err);
     if (cli_mpi_me != 0) {
@@ -269,7 +326,7 @@ int cli_mpi_farm_run(const cli_mpi_farm *f, diag *err)
         cli_mpi_fail(err, DIAG_IO);
     }
     for (r = 1; r < cli_mpi_n; r++) {
-        for (; outstanding[r] < depth && next < f->cells; next++, outstanding[r]++, inflight++)
+        for (; outstanding[r] < 2 && next < f->cells; next++, outstanding[r]++, inflight++)
             MPI_Send(&next, 1, MPI_INT, r, CLI_MPI_TAG_WORK, MPI_COMM_WORLD);
         if (!outstanding[r])
             MPI_Send(&next, 1, MPI_INT, r, CLI_MPI_TAG_STOP, MPI_COMM_WORLD);
@@ -280,7 +337,7 @@ int cli_mpi_farm_run(const cli_mpi_farm *f, diag *err)
         if (inflight && !failed && next < f->cells)
             MPI_Iprobe(MPI_ANY_SOURCE, CLI_MPI_TAG_META, MPI_COMM_WORLD, &flag, &ms);
         else if (inflight)
-            MPI_Probe(MPI_ANY_SOURCE, CLI_MPI_TAG_META, MPI_COMM_WORLD, &ms), flag = 1;
+            cli_mpi_probe(MPI_ANY_SOURCE, CLI_MPI_TAG_META, &ms), flag = 1;
         if (flag) {
             int src = ms.MPI_SOURCE;
             cli_mpi_farm_recv(f, src, &failed, err);

@@ -42,16 +42,13 @@ void cli_mpi_fail(const diag *d, int status);
 int cli_mpi_agree(int status, int *root);
 
 /* A job cut into cells 0..cells-1 that ranks run in any order and rank 0
- * takes in any order: rank 0 hands them out on demand (two in flight per
- * rank) and runs cells itself between messages. run (on the rank the cell
+ * takes in any order: rank 0 hands them out on demand, two in flight per
+ * rank so that a rank has its next cell while rank 0 is busy with one of
+ * its own, and runs cells itself when no result is waiting. run (on the rank the cell
  * went to) returns its result as bytes (*out, mem_alloc'd, may be NULL when
  * *len is 0); take (on rank 0) receives them with the rank that ran it. */
 typedef struct cli_mpi_farm {
     int cells;
-    /* cells in flight per rank other than 0: 2 for short cells, so that no
-     * rank waits for the next; 1 for long ones, so that none sits queued
-     * behind a slow rank at the end (0 = 2) */
-    int depth;
     int (*run)(void *ctx, int cell, uint8_t **out, size_t *len, diag *err);
     int (*take)(void *ctx, int cell, int rank, const uint8_t *buf, size_t len, diag *err);
     void *ctx;

@@ -535,7 +535,6 @@ int cmd_bench(int argc, char **argv)
     w.rows = rows;
     memset(&farm, 0, sizeof farm);
     farm.cells = w.cells;
-    farm.depth = 1;           /* cells are long: none waits behind a slow rank */
     farm.run = cmd_bench_run;
     farm.take = cmd_bench_take;
     farm.ctx = &w;
