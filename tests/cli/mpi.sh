@@ -63,6 +63,19 @@ sed 1d "$tmp/b3.csv" | awk -F, '$NF !~ /^[012]$/ {bad++} !seen[$NF]++ {n++}
 awk '/^S/ {$5 = ""; $6 = ""} {print}' "$tmp/b1.out" > "$tmp/a"
 awk '/^S/ {$5 = ""; $6 = ""} {print}' "$tmp/b3.out" > "$tmp/b"
 cmp -s "$tmp/a" "$tmp/b" || fail "bench: the table differs: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
+# The oracle's columns too, where the oracle is built.
+oracle=$(dirname "$MAPRT")/oracle/ids_oracle
+if [ -x "$oracle" ]; then
+  set -- scenes/coincident.scene scenes/csg.scene --size 32x32 --modes q16,f64,hfp64 --runs 1 \
+    --threads 1 --oracle "$oracle"
+  $MAPRT bench "$@" --csv "$tmp/o1.csv" > /dev/null || fail "single bench --oracle"
+  mpi $MAPRT bench "$@" --csv "$tmp/o3.csv" > /dev/null || fail "mpirun bench --oracle"
+  untimed "$tmp/o1.csv" > "$tmp/a"
+  untimed "$tmp/o3.csv" > "$tmp/b"
+  grep -q '^scenes/coincident.scene,S1,f64,.*,[0-9][0-9]*,[0-9][0-9]*,0,0.0000,' "$tmp/a" \
+    || fail "bench --oracle: no oracle columns: $(cat "$tmp/a")"
+  cmp -s "$tmp/a" "$tmp/b" || fail "bench --oracle: rows differ: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
+fi
 if command -v gnuplot > /dev/null 2>&1; then
   mpi $MAPRT bench scenes/csg.scene --size 16x16 --modes q16,f64 --runs 1 --threads 1 \
     --csv "$tmp/p.csv" --plot "$tmp/p.png" > /dev/null 2> "$tmp/e" || fail "mpirun bench --plot: $(cat "$tmp/e")"
