@@ -9,6 +9,7 @@
 #include <time.h>
 #ifdef MAPRT_MPI
 #include <mpi.h>
+#include <pthread.h>
 #endif
 
 /* The farm on one rank: every cell in order, each taken when it is done. */
@@ -206,7 +207,7 @@ static void cli_mpi_probe(int src, int tag, MPI_Status *ms)
 }
 
 /* A result on its way to rank 0: sent without blocking, so that the rank
- * renders its next cell while rank 0 is busy with a cell of its own. */
+ * renders its next cell before rank 0 has received the last. */
 typedef struct cli_mpi_out {
     long long meta[CLI_MPI_META_N];
     char text[sizeof ((diag *)0)->file + sizeof ((diag *)0)->msg];
@@ -312,9 +313,72 @@ static void cli_mpi_farm_recv(const cli_mpi_farm *f, int src, int *failed, diag 
     mem_free(buf);
 }
 
+/* Rank 0's own cell, run on a thread of its own so that the main thread
+ * keeps answering the other ranks however long the cell takes (a bench
+ * cell in hfp32 can take fifty times one in f64). Only the main thread
+ * calls MPI (MPI_THREAD_FUNNELED) and take; the cell's thread only runs. */
+typedef struct cli_mpi_local {
+    const cli_mpi_farm *f;
+    int cell, status, busy, done;
+    uint8_t *buf;
+    size_t len;
+    diag err;
+    pthread_t thread;
+    pthread_mutex_t lock;
+} cli_mpi_local;
+
+static void *cli_mpi_local_main(void *arg)
+{
+    cli_mpi_local *l = arg;
+    int st = l->f->run(l->f->ctx, l->cell, &l->buf, &l->len, &l->err);
+    pthread_mutex_lock(&l->lock);
+    l->status = st;
+    l->done = 1;
+    pthread_mutex_unlock(&l->lock);
+    return NULL;
+}
+
+/* Starts cell c on the thread; 0, or -1 when no thread could start (then
+ * the caller runs it itself). */
+static int cli_mpi_local_start(cli_mpi_local *l, int c)
+{
+    l->cell = c;
+    l->buf = NULL;
+    l->len = 0;
+    l->status = l->done = 0;
+    diag_init(&l->err);
+    if (pthread_create(&l->thread, NULL, cli_mpi_local_main, l))
+        return -1;
+    l->busy = 1;
+    return 0;
+}
+
+/* When the thread's cell is done: joins it and takes the result (or records
+ * its failure in *failed and *err, unless one is recorded). 1 if it was. */
+static int cli_mpi_local_finish(cli_mpi_local *l, int *failed, diag *err)
+{
+    int done, st;
+    pthread_mutex_lock(&l->lock);
+    done = l->done;
+    pthread_mutex_unlock(&l->lock);
+    if (!l->busy || !done)
+        return 0;
+    pthread_join(l->thread, NULL);
+    l->busy = 0;
+    st = l->status ? l->status : l->f->take(l->f->ctx, l->cell, 0, l->buf, l->len, err);
+    if (l->status && !*failed)
+        *err = l->err;
+    if (!*failed)
+        *failed = st;
+    mem_free(l->buf);
+    return 1;
+}
+
 int cli_mpi_farm_run(const cli_mpi_farm *f, diag *err)
 {
+    cli_mpi_local local;
     int *outstanding, next = 0, inflight = 0, failed = 0, r;
+    long us = 16;
     if (!cli_mpi_on || cli_mpi_n < 2)
         return cli_mpi_farm_local(f, err);
     if (cli_mpi_me != 0) {
@@ -325,19 +389,34 @@ int cli_mpi_farm_run(const cli_mpi_farm *f, diag *err)
         diag_at(err, DIAG_IO, "", 0, 0, "out of memory for %d ranks", cli_mpi_n);
         cli_mpi_fail(err, DIAG_IO);
     }
+    memset(&local, 0, sizeof local);
+    local.f = f;
+    pthread_mutex_init(&local.lock, NULL);
     for (r = 1; r < cli_mpi_n; r++) {
         for (; outstanding[r] < 2 && next < f->cells; next++, outstanding[r]++, inflight++)
             MPI_Send(&next, 1, MPI_INT, r, CLI_MPI_TAG_WORK, MPI_COMM_WORLD);
         if (!outstanding[r])
             MPI_Send(&next, 1, MPI_INT, r, CLI_MPI_TAG_STOP, MPI_COMM_WORLD);
     }
-    while (inflight || (!failed && next < f->cells)) {
+    while (inflight || local.busy || (!failed && next < f->cells)) {
         MPI_Status ms;
         int flag = 0;
-        if (inflight && !failed && next < f->cells)
+        if (!local.busy && !failed && next < f->cells) {
+            if (cli_mpi_local_start(&local, next) == 0) {
+                next++;
+            } else {
+                /* no thread: the cell runs here, the others wait */
+                uint8_t *buf = NULL;
+                size_t len = 0;
+                int c = next++;
+                if ((failed = f->run(f->ctx, c, &buf, &len, err)) == 0)
+                    failed = f->take(f->ctx, c, 0, buf, len, err);
+                mem_free(buf);
+            }
+            continue;
+        }
+        if (inflight)
             MPI_Iprobe(MPI_ANY_SOURCE, CLI_MPI_TAG_META, MPI_COMM_WORLD, &flag, &ms);
-        else if (inflight)
-            cli_mpi_probe(MPI_ANY_SOURCE, CLI_MPI_TAG_META, &ms), flag = 1;
         if (flag) {
             int src = ms.MPI_SOURCE;
             cli_mpi_farm_recv(f, src, &failed, err);
@@ -351,16 +430,14 @@ int cli_mpi_farm_run(const cli_mpi_farm *f, diag *err)
             } else if (!outstanding[src]) {
                 MPI_Send(&next, 1, MPI_INT, src, CLI_MPI_TAG_STOP, MPI_COMM_WORLD);
             }
+            us = 16;
+        } else if (cli_mpi_local_finish(&local, &failed, err)) {
+            us = 16;
         } else {
-            /* no result waiting: rank 0 runs the next cell itself */
-            uint8_t *buf = NULL;
-            size_t len = 0;
-            int c = next++;
-            if ((failed = f->run(f->ctx, c, &buf, &len, err)) == 0)
-                failed = f->take(f->ctx, c, 0, buf, len, err);
-            mem_free(buf);
+            cli_mpi_nap(&us);
         }
     }
+    pthread_mutex_destroy(&local.lock);
     mem_free(outstanding);
     return failed;
 }

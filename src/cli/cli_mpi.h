@@ -1,11 +1,12 @@
 /* cli_mpi — maprt across the ranks of an MPI job (Open MPI), for builds made
  * with MPI (mk/mpi.mk: MAPRT_MPI). Under `mpirun -n N build/maprt render ...`
  * every rank reads the deck and compiles the scene; rank 0 hands out bands of
- * tile rows, renders bands itself between messages, gathers the others'
- * bands (as render_part encodings, with the identity map when asked) and
- * writes the outputs, which are exactly the bytes a single process writes.
- * `bench` hands out its (scene, mode) cells through the same farm. Without MPI, or when the program was
- * not started by an MPI launcher, everything here is a single-rank no-op. */
+ * tile rows, renders bands itself, gathers the others' bands (as render_part
+ * encodings, with the identity map when asked) and writes the outputs,
+ * which are exactly the bytes a single process writes. `bench` hands out
+ * its (scene, mode) cells through the same farm. Without MPI, or when the
+ * program was not started by an MPI launcher, everything here is a
+ * single-rank no-op. */
 #ifndef CLI_MPI_H
 #define CLI_MPI_H
 #include <stddef.h>
@@ -43,10 +44,11 @@ int cli_mpi_agree(int status, int *root);
 
 /* A job cut into cells 0..cells-1 that ranks run in any order and rank 0
  * takes in any order: rank 0 hands them out on demand, two in flight per
- * rank so that a rank has its next cell while rank 0 is busy with one of
- * its own, and runs cells itself when no result is waiting. run (on the rank the cell
- * went to) returns its result as bytes (*out, mem_alloc'd, may be NULL when
- * *len is 0); take (on rank 0) receives them with the rank that ran it. */
+ * rank, and runs cells itself one at a time on a second thread while its
+ * main thread keeps answering. run (on the rank the cell went to; on rank 0
+ * on that thread, so it must not call MPI) returns its result as bytes
+ * (*out, mem_alloc'd, may be NULL when *len is 0); take (on rank 0's main
+ * thread) receives them with the rank that ran it. */
 typedef struct cli_mpi_farm {
     int cells;
     int (*run)(void *ctx, int cell, uint8_t **out, size_t *len, diag *err);
