@@ -1,12 +1,16 @@
 /* cli_mpi — maprt across the ranks of an MPI job (Open MPI), for builds made
  * with MPI (mk/mpi.mk: MAPRT_MPI). Under `mpirun -n N build/maprt render ...`
  * every rank reads the deck and compiles the scene; rank 0 hands out bands of
- * tile rows, renders bands itself between messages, gathers the others'
- * bands (as render_part encodings) and writes the outputs, which are exactly
- * the bytes a single process writes. Without MPI, or when the program was
- * not started by an MPI launcher, everything here is a single-rank no-op. */
+ * tile rows, renders bands itself, gathers the others' bands (as render_part
+ * encodings, with the identity map when asked) and writes the outputs,
+ * which are exactly the bytes a single process writes. `bench` hands out
+ * its (scene, mode) cells through the same farm. Without MPI, or when the
+ * program was not started by an MPI launcher, everything here is a
+ * single-rank no-op. */
 #ifndef CLI_MPI_H
 #define CLI_MPI_H
+#include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include "render/render.h"
 #include "util/diag.h"
@@ -37,6 +41,28 @@ void cli_mpi_fail(const diag *d, int status);
  * deck); *root (may be NULL) receives rank 0's own status, so that a failure
  * every rank shares is reported once, by rank 0. Single rank: status. */
 int cli_mpi_agree(int status, int *root);
+
+/* A job cut into cells 0..cells-1 that ranks run in any order and rank 0
+ * takes in any order: rank 0 hands them out on demand, two in flight per
+ * rank, and runs cells itself one at a time on a second thread while its
+ * main thread keeps answering. run (on the rank the cell went to; on rank 0
+ * on that thread, so it must not call MPI) returns its result as bytes
+ * (*out, mem_alloc'd, may be NULL when *len is 0); take (on rank 0's main
+ * thread) receives them with the rank that ran it. */
+typedef struct cli_mpi_farm {
+    int cells;
+    int (*run)(void *ctx, int cell, uint8_t **out, size_t *len, diag *err);
+    int (*take)(void *ctx, int cell, int rank, const uint8_t *buf, size_t len, diag *err);
+    void *ctx;
+} cli_mpi_farm;
+
+/* Runs the farm on every rank (collective). A cell that fails (run or take)
+ * stops the handing out; the cells in flight are still received (and taken
+ * when they succeeded) and rank 0 returns the first failure's status, with
+ * its diag (and the rank that failed, when not 0) in *err; the other ranks
+ * return 0. With one rank the cells run in order, each taken as it is done,
+ * up to the first failure. */
+int cli_mpi_farm_run(const cli_mpi_farm *f, diag *err);
 
 /* Renders sc like render_scene, with the bands spread over the ranks. On rank
  * 0 *fb and *st receive the whole frame and the counters summed over ranks

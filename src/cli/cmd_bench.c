@@ -6,11 +6,15 @@
  * optional CSV and a Pareto chart drawn by gnuplot. gnuplot is run
  * without a shell and sees numbers and labels of a fixed alphabet only:
  * scenes are named S1, S2, ... in the chart (the table and the CSV say
- * which is which), and the PNG comes back on its standard output. */
+ * which is which), and the PNG comes back on its standard output.
+ * Each (scene, mode) is a cell of cli_mpi's farm: under mpirun the cells
+ * spread over the ranks, each timed where it ran, and rank 0 prints and
+ * writes the rows in the order one process would. */
 #include "cli/cli.h"
 #include "cli/cli_scene.h"
 #include "image/image_diff.h"
 #include "cli/cli_idcheck.h"
+#include "cli/cli_mpi.h"
 #include "render/render.h"
 #include "util/mem.h"
 #include "util/outfile.h"
@@ -29,7 +33,7 @@
 
 typedef struct bench_row {
     const char *scene, *mode;
-    int scene_no, threads, runs, has_ids;
+    int scene_no, threads, runs, has_ids, rank;   /* rank: the MPI rank that ran it */
     double seconds, rays_per_s, psnr, pct_over2;
     double id_pct, err_median, err_max;
     long id_compared, id_flagged, id_mismatch;
@@ -58,7 +62,9 @@ static void cmd_bench_help(FILE *f)
         "  --runs N          timed renders per scene and mode, 1..%d (default 3)\n"
         "  --threads N       worker threads, 1..%d (default: OpenMP's count, %d here)\n"
         "  --oracle PATH     the ids_oracle executable (make builds build/oracle/ids_oracle)\n"
-        "  --csv OUT.csv     also write the rows as CSV with a header line\n"
+        "  --csv OUT.csv     also write the rows as CSV with a header line; its last\n"
+        "                    column, rank, is the MPI rank that ran the row (0 in a\n"
+        "                    single process)\n"
         "  --plot OUT.png    Pareto chart with gnuplot: median seconds against the %% of\n"
         "                    pixels that differ from the oracle (needs --oracle; else\n"
         "                    against the %% over 2/255 from f64), both axes logarithmic;\n"
@@ -67,6 +73,10 @@ static void cmd_bench_help(FILE *f)
         "  -h, --help        show this help\n"
         "\n"
         "Timings depend on machine load; the median of N runs damps the noise.\n"
+        "Under 'mpirun -n N' (a build with MPI) the (scene, mode) cells are handed\n"
+        "out to the ranks, each rank renders its cells' N runs with --threads\n"
+        "threads, and rank 0 prints and writes the rows in the order above; the\n"
+        "outputs are written all or none, and none when a cell or a rank fails.\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
         SCENE_MAX_SIDE, BENCH_MAX_RUNS, RENDER_MAX_THREADS, omp_get_max_threads());
 }
@@ -99,7 +109,7 @@ static int cmd_bench_csv(const char *path, const bench_row *rows, int n)
         goto fail;
     snprintf(line, sizeof line, "scene,label,mode,threads,runs,seconds_median,rays,rays_per_s,psnr_db,"
                                 "pct_pixels_over_2,fx_overflows,range_cut,hfp_exceptions,id_compared,id_flagged,"
-                                "id_mismatch,id_mismatch_pct,hit_err_median,hit_err_max\n");
+                                "id_mismatch,id_mismatch_pct,hit_err_median,hit_err_max,rank\n");
     outfile_write(&of, line, strlen(line), &err);
     for (i = 0; i < n; i++) {
         const bench_row *r = &rows[i];
@@ -109,10 +119,10 @@ static int cmd_bench_csv(const char *path, const bench_row *rows, int n)
                  r->psnr, r->pct_over2, r->overflows, r->range_cut, r->hfp_exc);
         outfile_write(&of, line, strlen(line), &err);
         if (r->has_ids)
-            snprintf(line, sizeof line, ",%ld,%ld,%ld,%.4f,%.3g,%.3g\n", r->id_compared, r->id_flagged,
-                     r->id_mismatch, r->id_pct, r->err_median, r->err_max);
+            snprintf(line, sizeof line, ",%ld,%ld,%ld,%.4f,%.3g,%.3g,%d\n", r->id_compared,
+                     r->id_flagged, r->id_mismatch, r->id_pct, r->err_median, r->err_max, r->rank);
         else
-            snprintf(line, sizeof line, ",,,,,,\n");
+            snprintf(line, sizeof line, ",,,,,,,%d\n", r->rank);
         outfile_write(&of, line, strlen(line), &err);
     }
     if (outfile_commit(&of, &err))
@@ -294,13 +304,152 @@ static int cmd_bench_one(const scene *sc, const render_ops *ops, const render_op
     return 0;
 }
 
+/* The sweep: scenes x modes cells. Each rank keeps the scene of its latest
+ * cell with its f64 reference and oracle map; cells go out in order, so a
+ * rank meets each scene at most once. */
+typedef struct bench_sweep {
+    const char **scenes, *oracle;
+    const render_ops **modes;
+    int nmodes, runs, cells;
+    const render_opts *o;
+    int cur;                  /* the scene loaded, -1 none */
+    scene *sc;
+    render_fb ref;
+    idmap orc;
+    int have_orc;
+    bench_row *rows;          /* rank 0: every row, filled as taken */
+    char *taken;
+    int printed;              /* rows printed so far, in order */
+} bench_sweep;
+
+static void cmd_bench_unload(bench_sweep *w)
+{
+    if (w->cur < 0)
+        return;
+    idmap_free(&w->orc);
+    render_fb_free(&w->ref);
+    scene_free(w->sc);
+    w->sc = NULL;
+    w->have_orc = 0;
+    w->cur = -1;
+}
+
+/* Loads scene s, renders its f64 reference and runs the oracle on it. */
+static int cmd_bench_load(bench_sweep *w, int s, diag *err)
+{
+    render_stats st;
+    cli_files files;
+    int status;
+    if (w->cur == s)
+        return 0;
+    cmd_bench_unload(w);
+    memset(&w->orc, 0, sizeof w->orc);
+    status = cli_files_init(&files, err);
+    if (!status)
+        status = cli_scene_load(&files, w->scenes[s], &w->sc, err);
+    cli_files_free(&files);
+    if (status)
+        return status;
+    if ((status = render_scene(w->sc, &f64_render_ops, w->o, &w->ref, &st, err)) != 0) {
+        scene_free(w->sc);
+        w->sc = NULL;
+        return status;
+    }
+    w->cur = s;
+    if (w->oracle) {
+        if ((status = cli_idcheck_oracle(w->oracle, w->sc, w->ref.img.width, w->ref.img.height,
+                                         &w->orc, err)) != 0) {
+            cmd_bench_unload(w);
+            return status;
+        }
+        w->have_orc = 1;
+    }
+    return 0;
+}
+
+/* A row's measured fields as text for rank 0: hexadecimal floating point,
+ * so that every double arrives exactly. */
+#define BENCH_ROW_FMT "%a %a %a %a %a %a %a %ld %ld %ld %llu %llu %llu %llu %d"
+#define BENCH_ROW_FIELDS 15
+
+/* Runs cell c (scene c / nmodes, mode c % nmodes) on this rank. */
+static int cmd_bench_run(void *ctx, int c, uint8_t **out, size_t *len, diag *err)
+{
+    bench_sweep *w = ctx;
+    bench_row r;
+    char line[512];
+    int status, n;
+    memset(&r, 0, sizeof r);
+    if ((status = cmd_bench_load(w, c / w->nmodes, err)) != 0
+        || (status = cmd_bench_one(w->sc, w->modes[c % w->nmodes], w->o, w->runs, &w->ref,
+                                   w->have_orc ? &w->orc : NULL, &r, err)) != 0)
+        return status;
+    n = snprintf(line, sizeof line, BENCH_ROW_FMT, r.seconds, r.rays_per_s, r.psnr, r.pct_over2,
+                 r.id_pct, r.err_median, r.err_max, r.id_compared, r.id_flagged, r.id_mismatch,
+                 r.rays, r.overflows, r.range_cut, r.hfp_exc, r.has_ids);
+    if (n < 0 || (size_t)n >= sizeof line || !(*out = mem_alloc((size_t)n)))
+        return diag_at(err, DIAG_IO, "", 0, 0, "cannot encode a bench row");
+    memcpy(*out, line, (size_t)n);
+    *len = (size_t)n;
+    return 0;
+}
+
+static void cmd_bench_print(const bench_row *r)
+{
+    printf("S%-2d %-24s %-5s %3d %9.4f %11.0f %8.2f %8.4f ", r->scene_no, r->scene, r->mode,
+           r->threads, r->seconds, r->rays_per_s, r->psnr, r->pct_over2);
+    if (r->has_ids)
+        printf("%9.4f %5ld %9.2g %9.2g", r->id_pct, r->id_flagged, r->err_median, r->err_max);
+    else
+        printf("%9s %5s %9s %9s", "-", "-", "-", "-");
+    printf(" %9llu %7llu\n", r->overflows, r->hfp_exc);
+    if (r->range_cut)
+        printf("    %llu primary rays beyond the %s range (shown as background)\n", r->range_cut,
+               r->mode);
+    fflush(stdout);
+}
+
+/* Rank 0: decodes cell c's row as run on `rank` and prints the rows that
+ * are now complete in order. */
+static int cmd_bench_take(void *ctx, int c, int rank, const uint8_t *buf, size_t len, diag *err)
+{
+    bench_sweep *w = ctx;
+    bench_row *r = &w->rows[c];
+    char line[512];
+    int used = -1;
+    if (len >= sizeof line)
+        return diag_at(err, DIAG_IO, "", 0, 0, "a bench row of %zu bytes from rank %d", len, rank);
+    memcpy(line, buf, len);
+    line[len] = '\0';
+    if (sscanf(line, "%lf %lf %lf %lf %lf %lf %lf %ld %ld %ld %llu %llu %llu %llu %d%n",
+               &r->seconds, &r->rays_per_s, &r->psnr, &r->pct_over2, &r->id_pct, &r->err_median,
+               &r->err_max, &r->id_compared, &r->id_flagged, &r->id_mismatch, &r->rays,
+               &r->overflows, &r->range_cut, &r->hfp_exc, &r->has_ids, &used) != BENCH_ROW_FIELDS
+        || used != (int)len)
+        return diag_at(err, DIAG_IO, "", 0, 0, "a malformed bench row from rank %d", rank);
+    r->scene = w->scenes[c / w->nmodes];
+    r->scene_no = c / w->nmodes + 1;
+    r->mode = w->modes[c % w->nmodes]->name;
+    r->threads = w->o->threads;
+    r->runs = w->runs;
+    r->rank = rank;
+    w->taken[c] = 1;
+    while (w->printed < w->cells && w->taken[w->printed])
+        cmd_bench_print(&w->rows[w->printed++]);
+    return 0;
+}
+
 int cmd_bench(int argc, char **argv)
 {
     const render_ops *modes[BENCH_MAX_MODES];
     const char *csv = NULL, *plot = NULL, *oracle = NULL, *v, **scenes;
+    const char *outs[2];
+    bench_sweep w;
+    cli_mpi_farm farm;
     bench_row *rows;
     render_opts o;
-    int nmodes = 0, nscenes = 0, nrows = 0, runs = 3, i, s, m, status = CLI_OK;
+    diag err;
+    int nmodes = 0, nscenes = 0, runs = 3, i, status = CLI_OK;
     long n;
 
     if (cli_wants_help(argc, argv)) {
@@ -315,9 +464,12 @@ int cmd_bench(int argc, char **argv)
     cmd_bench_modes("q16,q32,f32,f64,hfp32,hfp64", modes, &nmodes);
     scenes = mem_alloc(sizeof *scenes * (size_t)argc);
     rows = mem_calloc((size_t)argc * BENCH_MAX_MODES, sizeof *rows);
-    if (!scenes || !rows) {
+    memset(&w, 0, sizeof w);
+    w.taken = mem_calloc((size_t)argc * BENCH_MAX_MODES, 1);
+    if (!scenes || !rows || !w.taken) {
         mem_free(scenes);
         mem_free(rows);
+        mem_free(w.taken);
         fprintf(stderr, "maprt bench: error: out of memory\n");
         return CLI_IO;
     }
@@ -357,75 +509,58 @@ int cmd_bench(int argc, char **argv)
         cli_usage_error("bench", "no SCENE given");
         goto usage;
     }
-    printf("%-3s %-24s %-5s %3s %9s %11s %8s %8s %9s %5s %9s %9s %9s %7s\n", "", "scene", "mode",
-           "thr", "median_s", "rays/s", "psnr_db", "%>2/255", "%id_diff", "flag", "err_med",
-           "err_max", "overflows", "hfp_exc");
-    for (s = 0; s < nscenes && status == CLI_OK; s++) {
-        scene *sc = NULL;
-        render_fb ref;
-        render_stats st;
-        cli_files files;
-        idmap orc;
-        diag err;
-        int have_orc = 0;
-        diag_init(&err);
-        memset(&orc, 0, sizeof orc);
-        status = cli_files_init(&files, &err);
-        if (!status)
-            status = cli_scene_load(&files, scenes[s], &sc, &err);
-        cli_files_free(&files);
-        if (status != 0
-            || (status = render_scene(sc, &f64_render_ops, &o, &ref, &st, &err)) != 0) {
+    /* The outputs are checked before the sweep, by the rank that writes
+     * them; every rank stops when they are refused. */
+    diag_init(&err);
+    outs[0] = csv;
+    outs[1] = plot;
+    status = cli_mpi_rank() == 0 ? outfile_check_set(outs, 2, &err) : 0;
+    if ((status = cli_mpi_agree(status, NULL)) != 0) {
+        if (err.status)
             diag_print(stderr, &err);
-            scene_free(sc);
-            break;
-        }
-        if (oracle) {
-            if ((status = cli_idcheck_oracle(oracle, sc, ref.img.width, ref.img.height, &orc, &err)) != 0) {
-                diag_print(stderr, &err);
-                render_fb_free(&ref);
-                scene_free(sc);
-                break;
-            }
-            have_orc = 1;
-        }
-        for (m = 0; m < nmodes; m++) {
-            bench_row *r = &rows[nrows];
-            r->scene = scenes[s];
-            r->scene_no = s + 1;
-            r->mode = modes[m]->name;
-            r->threads = o.threads;
-            r->runs = runs;
-            if ((status = cmd_bench_one(sc, modes[m], &o, runs, &ref, have_orc ? &orc : NULL, r, &err)) != 0) {
-                diag_print(stderr, &err);
-                break;
-            }
-            printf("S%-2d %-24s %-5s %3d %9.4f %11.0f %8.2f %8.4f ", r->scene_no, r->scene, r->mode,
-                   r->threads, r->seconds, r->rays_per_s, r->psnr, r->pct_over2);
-            if (r->has_ids)
-                printf("%9.4f %5ld %9.2g %9.2g", r->id_pct, r->id_flagged, r->err_median, r->err_max);
-            else
-                printf("%9s %5s %9s %9s", "-", "-", "-", "-");
-            printf(" %9llu %7llu\n", r->overflows, r->hfp_exc);
-            if (r->range_cut)
-                printf("    %llu primary rays beyond the %s range (shown as background)\n", r->range_cut,
-                       r->mode);
-            fflush(stdout);
-            nrows++;
-        }
-        idmap_free(&orc);
-        render_fb_free(&ref);
-        scene_free(sc);
+        goto done;
     }
-    if (status == CLI_OK && csv)
-        status = cmd_bench_csv(csv, rows, nrows);
-    if (status == CLI_OK && plot)
-        status = cmd_bench_plot(plot, rows, nrows, oracle != NULL);
+    if (cli_mpi_rank() == 0)
+        printf("%-3s %-24s %-5s %3s %9s %11s %8s %8s %9s %5s %9s %9s %9s %7s\n", "", "scene",
+               "mode", "thr", "median_s", "rays/s", "psnr_db", "%>2/255", "%id_diff", "flag",
+               "err_med", "err_max", "overflows", "hfp_exc");
+    w.scenes = scenes;
+    w.oracle = oracle;
+    w.modes = modes;
+    w.nmodes = nmodes;
+    w.runs = runs;
+    w.cells = nscenes * nmodes;
+    w.o = &o;
+    w.cur = -1;
+    w.rows = rows;
+    memset(&farm, 0, sizeof farm);
+    farm.cells = w.cells;
+    farm.run = cmd_bench_run;
+    farm.take = cmd_bench_take;
+    farm.ctx = &w;
+    status = cli_mpi_farm_run(&farm, &err);
+    cmd_bench_unload(&w);
+    if (status)
+        diag_print(stderr, &err);     /* rank 0 only: the others return 0 */
+    if ((status = cli_mpi_agree(status, NULL)) != 0 || cli_mpi_rank() != 0)
+        goto done;
+    /* every output or none */
+    outfile_batch_begin();
+    if ((csv && (status = cmd_bench_csv(csv, rows, w.cells)) != 0)
+        || (plot && (status = cmd_bench_plot(plot, rows, w.cells, oracle != NULL)) != 0)
+        || (status = outfile_batch_commit(&err)) != 0) {
+        if (err.status)
+            diag_print(stderr, &err);
+        outfile_batch_abort();
+    }
+done:
     mem_free(scenes);
     mem_free(rows);
+    mem_free(w.taken);
     return status;
 usage:
     mem_free(scenes);
     mem_free(rows);
+    mem_free(w.taken);
     return CLI_USAGE;
 }

@@ -1,4 +1,4 @@
-/* cmd_merge — `maprt merge PART... -o OUT.png [--dl OUT.dl5080]`: assembles
+/* cmd_merge — `maprt merge PART... -o OUT.png [--dl OUT.dl5080] [--ids OUT.ids]`: assembles
  * the region files of `render --region X0,Y0,X1,Y1 --part FILE` (one per job
  * of a batch array, docs/cluster.md) into the whole frame and writes the
  * outputs a single `maprt render` would have written, byte for byte. */
@@ -16,12 +16,14 @@ static void cmd_merge_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt merge PART... [-o OUT.png|OUT.ppm|OUT.pam] [--deck SCENE]\n"
-        "                   [--dl OUT.dl5080 [--dac 4|8] [--dither] [--wireframe]] [--stats]\n"
+        "                   [--dl OUT.dl5080 [--dac 4|8] [--dither] [--wireframe]]\n"
+        "                   [--ids OUT.ids] [--stats]\n"
         "\n"
         "Assembles region files written by 'maprt render SCENE --region X0,Y0,X1,Y1\n"
         "--part FILE' into the whole image and writes it as 'maprt render' would: the\n"
-        "same PNG and DL5080 bytes. The parts must come from one scene, size, --aa and\n"
-        "--numeric, and cover every pixel exactly once.\n"
+        "same PNG, DL5080 and identity map bytes. The parts must come from one scene,\n"
+        "size, --aa and --numeric, and cover every pixel exactly once. The outputs\n"
+        "are written all or none.\n"
         "\n"
         "  -o OUT         write the picture (.png, .ppm or .pam, as render does)\n"
         "  --deck SCENE   the deck the parts were rendered from: its name and SHA-256\n"
@@ -30,6 +32,8 @@ static void cmd_merge_help(FILE *f)
         "                 render's in those chunks only)\n"
         "  --dl OUT       write a DL5080 display list (--dac, --dither, --wireframe as\n"
         "                 for render)\n"
+        "  --ids OUT      write the identity map (docs/idmap.md); the parts must have\n"
+        "                 been rendered with --part-ids\n"
         "  --stats        print the counters summed over the parts (time.render_s: the\n"
         "                 slowest part's)\n"
         "  -h, --help     show this help\n"
@@ -44,7 +48,8 @@ static int cmd_merge_one(const char *path, render_part_info *first, render_fb *f
 {
     render_part_info info;
     char *data = NULL;
-    size_t len = 0, max = RENDER_PART_HEADER + (size_t)7 * SCENE_MAX_SIDE * SCENE_MAX_SIDE;
+    size_t len = 0, max = RENDER_PART_HEADER + (size_t)(RENDER_PART_PX + RENDER_PART_ID_PX) *
+                                                   SCENE_MAX_SIDE * SCENE_MAX_SIDE;
     int rc;
     if ((rc = infile_read_all(path, max, &data, &len, err)) != 0)
         return rc;
@@ -52,7 +57,8 @@ static int cmd_merge_one(const char *path, render_part_info *first, render_fb *f
         goto done;
     if (!fb->img.px) {
         *first = info;
-        if ((rc = image_alloc(&fb->img, info.width, info.height, 3, path, err)) != 0)
+        if ((rc = image_alloc(&fb->img, info.width, info.height, 3, path, err)) != 0
+            || (info.ids && (rc = idmap_alloc(&fb->ids, info.width, info.height, err)) != 0))
             goto done;
         fb->pid = mem_calloc((size_t)info.width * (size_t)info.height, sizeof *fb->pid);
         *covered = mem_calloc((size_t)info.width * (size_t)info.height, 1);
@@ -66,6 +72,10 @@ static int cmd_merge_one(const char *path, render_part_info *first, render_fb *f
         rc = diag_at(err, DIAG_INPUT, path, 0, 0, "part of a %dx%d %s render with --aa %d; the "
                      "first part is %dx%d %s with --aa %d", info.width, info.height, info.mode,
                      info.aa, first->width, first->height, first->mode, first->aa);
+        goto done;
+    } else if (info.ids != first->ids) {
+        rc = diag_at(err, DIAG_INPUT, path, 0, 0, "part %s an identity map; the first part %s",
+                     info.ids ? "carries" : "carries no", first->ids ? "does" : "does not");
         goto done;
     }
     if ((rc = render_part_place(path, (const uint8_t *)data, &info, fb, *covered, err)) != 0)
@@ -82,7 +92,7 @@ done:
 
 int cmd_merge(int argc, char **argv)
 {
-    const char *out_png = NULL, *out_dl = NULL, *deck = NULL;
+    const char *out_png = NULL, *out_dl = NULL, *out_ids = NULL, *deck = NULL;
     image_out_format pic_format = IMAGE_OUT_NONE;
     cli_files files;
     render_part_info first;
@@ -111,6 +121,8 @@ int cmd_merge(int argc, char **argv)
             if (!(out_dl = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--deck")) {
             if (!(deck = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--ids")) {
+            if (!(out_ids = cli_value("merge", argc, argv, &i))) status = CLI_USAGE;
         } else if (cli_sink_dl_option("merge", argc, argv, &i, &dlo, &wireframe, &status)) {
             continue;
         } else if (!strcmp(a, "--stats")) {
@@ -123,8 +135,9 @@ int cmd_merge(int argc, char **argv)
     }
     if (!status && !nparts)
         status = cli_usage_error("merge", "no PART given");
-    if (!status && !out_png && !out_dl)
-        status = cli_usage_error("merge", "no output: give -o OUT.png and/or --dl OUT.dl5080");
+    if (!status && !out_png && !out_dl && !out_ids)
+        status = cli_usage_error("merge", "no output: give -o OUT.png, --dl OUT.dl5080 or --ids "
+                                 "OUT.ids");
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
         status = cli_usage_error("merge", "--dac, --dither and --wireframe need --dl");
     if (!status && out_png && image_out_choose(out_png, IMAGE_OUT_NONE, &pic_format, &err)) {
@@ -141,7 +154,7 @@ int cmd_merge(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "--dl") || !strcmp(a, "--dac")
-            || !strcmp(a, "--deck")) {
+            || !strcmp(a, "--deck") || !strcmp(a, "--ids")) {
             i++;
             continue;
         }
@@ -158,14 +171,24 @@ int cmd_merge(int argc, char **argv)
                 "uncovered", k % (size_t)first.width, k / (size_t)first.width);
         goto done;
     }
-    if (out_png) {
-        image_meta meta;
-        if (cli_sink_provenance(&files, deck, first.mode, first.aa, &fb, &meta, &err)
-            || image_out_write(out_png, pic_format, &fb.img, &meta, &err))
-            goto done;
-    }
-    if (out_dl && cli_sink_dl(out_dl, &fb, &dlo, wireframe, &dls, &err))
+    if (out_ids && !first.ids) {
+        diag_at(&err, DIAG_INPUT, "", 0, 0, "--ids: the parts carry no identity map; render "
+                "them with --part-ids");
         goto done;
+    }
+    /* every output or none */
+    outfile_batch_begin();
+    {
+        image_meta meta;
+        if ((out_png && (cli_sink_provenance(&files, deck, first.mode, first.aa, &fb, &meta, &err)
+                         || image_out_write(out_png, pic_format, &fb.img, &meta, &err)))
+            || (out_dl && cli_sink_dl(out_dl, &fb, &dlo, wireframe, &dls, &err))
+            || (out_ids && idmap_write(out_ids, &fb.ids, &err))
+            || outfile_batch_commit(&err)) {
+            outfile_batch_abort();
+            goto done;
+        }
+    }
     if (stats) {
         printf("numeric=%s\nparts=%d\n", first.mode, nparts);
         render_stats_print(stdout, &total);

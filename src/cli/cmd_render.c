@@ -26,7 +26,8 @@ static void cmd_render_help(FILE *f)
 {
     fprintf(f,
         "usage: maprt render SCENE [-o OUT.png|OUT.ppm|OUT.pam|-] [--dl OUT.dl5080]\n"
-        "                    [--ids OUT.ids] [--part OUT.part [--region X0,Y0,X1,Y1]] [options]\n"
+        "                    [--ids OUT.ids] [--part OUT.part [--part-ids] [--region X0,Y0,X1,Y1]]\n"
+        "                    [options]\n"
         "       maprt render --list\n"
         "\n"
         "Ray-traces the scene deck SCENE (see docs/scene-format.md) and writes a\n"
@@ -48,6 +49,8 @@ static void cmd_render_help(FILE *f)
         "  --format png|ppm|pam  the format for -o - (a file's name decides its own)\n"
         "  --part OUT.part       write the rendered pixels as a region file for 'maprt\n"
         "                        merge' (docs/cluster.md)\n"
+        "  --part-ids            put the identity map (as --ids) into the region file,\n"
+        "                        for 'maprt merge --ids'\n"
         "  --region X0,Y0,X1,Y1  render only pixels [X0,X1) x [Y0,Y1) (with --part), e.g.\n"
         "                        one job of a batch array\n"
         "  --dl OUT.dl5080       write a DL5080 display list: the frame quantised to at\n"
@@ -116,8 +119,7 @@ static void cmd_render_summary(const char *deck, const render_opts *o, const ren
 /* Writes the rendered region (the whole image without --region) as a
  * region file for 'maprt merge'. */
 static int cmd_render_write_part(const char *path, const render_fb *fb, const render_opts *o,
-                             const scene *sc, const render_ops *ops, const render_stats *st,
-                             diag *err)
+                             int ids, const render_ops *ops, const render_stats *st, diag *err)
 {
     render_part_info info;
     uint8_t *buf;
@@ -132,9 +134,9 @@ static int cmd_render_write_part(const char *path, const render_fb *fb, const re
         info.region[3] = info.height;
     }
     info.aa = o->aa;
+    info.ids = ids;
     strncpy(info.mode, ops->name, sizeof info.mode - 1);
     info.stats = *st;
-    (void)sc;
     if ((rc = render_part_encode(fb, &info, &buf, &len, err)) != 0)
         return rc;
     rc = outfile_write_all(path, buf, len, err);
@@ -162,7 +164,7 @@ int cmd_render(int argc, char **argv)
     diag err;
     long n;
     int i, stats = 0, wireframe = 0, status = 0, rendered = 0, quiet = 0, root_status = 0;
-    int progress = -1;
+    int progress = -1, part_ids = 0;
     cli_progress bar;
     clock_t cpu0 = clock();
 
@@ -201,6 +203,8 @@ int cmd_render(int argc, char **argv)
             if (!(out_dl = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
         } else if (!strcmp(a, "--part")) {
             if (!(out_part = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--part-ids")) {
+            part_ids = 1;
         } else if (!strcmp(a, "--region")) {
             if (!(v = cli_value("render", argc, argv, &i)) || cli_region("render", a, v, SCENE_MAX_SIDE, o.region))
                 status = CLI_USAGE;
@@ -246,9 +250,8 @@ int cmd_render(int argc, char **argv)
     if (!status && o.region[2] && (out_png || out_dl || out_ids))
         status = cli_usage_error("render", "--region renders part of the image: write it with "
                                  "--part and assemble the parts with 'maprt merge'");
-    if (!status && out_ids && (out_part || cli_mpi_size() > 1))
-        status = cli_usage_error("render", "--ids is written by single-process renders only "
-                                 "(not with --part or under mpirun)");
+    if (!status && part_ids && !out_part)
+        status = cli_usage_error("render", "--part-ids needs --part");
     if (!status && format && !out_png)
         status = cli_usage_error("render", "--format applies to -o");
     if (!status && out_png && !strcmp(out_png, "-") && stats)
@@ -302,9 +305,11 @@ int cmd_render(int argc, char **argv)
         o.progress = cli_progress_update;
         o.progress_ctx = &bar;
     }
-    o.ids = out_ids != NULL;
-    if (cli_mpi_render(sc, ops, &o, &fb, &st, share, &err))
+    o.ids = out_ids || part_ids;
+    if (cli_mpi_render(sc, ops, &o, &fb, &st, share, &err)) {
+        quiet = cli_mpi_rank() != 0;  /* the ranks agreed; rank 0 says why */
         goto done;
+    }
     rendered = 1;
     if (cli_mpi_rank() != 0)
         goto done;                    /* rank 0 writes and reports */
@@ -319,7 +324,7 @@ int cmd_render(int argc, char **argv)
     outfile_batch_begin();
     {
         image_meta meta;
-        if ((part_path && cmd_render_write_part(part_path, &fb, &o, sc, ops, &st, &err))
+        if ((part_path && cmd_render_write_part(part_path, &fb, &o, part_ids, ops, &st, &err))
             || (out_png && (cli_sink_provenance(&files, scene_name, ops->name, o.aa, &fb, &meta, &err)
                             || image_out_write(png_path ? png_path : "-", pic_format, &fb.img,
                                                &meta, &err)))

@@ -3,7 +3,12 @@
 #include "util/mem.h"
 #include <string.h>
 
-static const char render_part_magic[8] = {'M', 'A', 'P', 'R', 'T', 'P', 'T', '1'};
+static const char render_part_magic[8] = {'M', 'A', 'P', 'R', 'T', 'P', 'T', '2'};
+
+/* Every field of render_stats is in the layout: one that is added there
+ * without a place here stops the build. */
+typedef char render_part_in_step[sizeof(render_stats) == 8 * RENDER_PART_COUNTERS + 2 * sizeof(double)
+                                 ? 1 : -1];
 
 static void render_part_put32(uint8_t *p, uint32_t v)
 {
@@ -38,20 +43,42 @@ static unsigned long long *render_part_counter(render_stats *s, int i)
     return i < 14 ? c[i] : &s->hfp_exc[i - 14];
 }
 
-size_t render_part_bytes(const int region[4])
+size_t render_part_bytes(const int region[4], int ids)
 {
     size_t n = (size_t)(region[2] - region[0]) * (size_t)(region[3] - region[1]);
-    return RENDER_PART_HEADER + 7 * n;
+    return RENDER_PART_HEADER + (RENDER_PART_PX + (ids ? RENDER_PART_ID_PX : 0)) * n;
+}
+
+/* One identity map record at p (the layout of the header comment). */
+static void render_part_put_id(uint8_t *p, const idmap_px *id)
+{
+    uint64_t bits;
+    memcpy(&bits, &id->t, 8);
+    render_part_put32(p, (uint32_t)id->prim);
+    render_part_put32(p + 4, (uint32_t)id->face);
+    render_part_put32(p + 8, (uint32_t)id->region);
+    render_part_put32(p + 12, (uint32_t)id->flags);
+    render_part_put64(p + 16, bits);
+}
+
+static void render_part_get_id(const uint8_t *p, idmap_px *id)
+{
+    uint64_t bits = render_part_get64(p + 16);
+    id->prim = (int32_t)render_part_get32(p);
+    id->face = (int32_t)render_part_get32(p + 4);
+    id->region = (int32_t)render_part_get32(p + 8);
+    id->flags = (int32_t)render_part_get32(p + 12);
+    memcpy(&id->t, &bits, 8);
 }
 
 int render_part_encode(const render_fb *fb, const render_part_info *info, uint8_t **out,
                        size_t *len, diag *err)
 {
     const int *r = info->region;
-    size_t n = render_part_bytes(r), w = (size_t)(r[2] - r[0]), h = (size_t)(r[3] - r[1]);
+    size_t n = render_part_bytes(r, info->ids), w = (size_t)(r[2] - r[0]), h = (size_t)(r[3] - r[1]);
     size_t y, x;
     render_stats st = info->stats;
-    uint8_t *b = mem_alloc(n), *px, *ids;
+    uint8_t *b = mem_alloc(n), *px, *ids, *idm;
     uint64_t bits;
     int i;
     if (!b)
@@ -64,19 +91,24 @@ int render_part_encode(const render_fb *fb, const render_part_info *info, uint8_
         render_part_put32(b + 16 + 4 * i, (uint32_t)r[i]);
     render_part_put32(b + 32, (uint32_t)info->aa);
     memcpy(b + 36, info->mode, strnlen(info->mode, 8));
+    render_part_put32(b + 44, info->ids ? RENDER_PART_IDS : 0);
     for (i = 0; i < RENDER_PART_COUNTERS; i++)
-        render_part_put64(b + 44 + 8 * i, *render_part_counter(&st, i));
+        render_part_put64(b + 48 + 8 * i, *render_part_counter(&st, i));
     memcpy(&bits, &st.time_compile_s, 8);
     render_part_put64(b + RENDER_PART_HEADER - 16, bits);
     memcpy(&bits, &st.time_render_s, 8);
     render_part_put64(b + RENDER_PART_HEADER - 8, bits);
     px = b + RENDER_PART_HEADER;
     ids = px + 3 * w * h;
+    idm = ids + 4 * w * h;
     for (y = 0; y < h; y++) {
         size_t row = (size_t)(r[1] + (int)y) * (size_t)info->width + (size_t)r[0];
         memcpy(px + 3 * w * y, fb->img.px + 3 * row, 3 * w);
-        for (x = 0; x < w; x++)
+        for (x = 0; x < w; x++) {
             render_part_put32(ids + 4 * (w * y + x), (uint32_t)fb->pid[row + x]);
+            if (info->ids)
+                render_part_put_id(idm + RENDER_PART_ID_PX * (w * y + x), &fb->ids.px[row + x]);
+        }
     }
     *out = b;
     *len = n;
@@ -90,12 +122,16 @@ int render_part_decode(const char *name, const uint8_t *buf, size_t len, render_
     uint64_t bits;
     int i;
     memset(&in, 0, sizeof in);
+    if (len >= 8 && !memcmp(buf, "MAPRTPT1", 8))
+        return diag_offset(err, DIAG_INPUT, name, 0, "a region file of format 1 (MAPRTPT1, from an "
+                           "older maprt); this maprt reads format 2 (MAPRTPT2): render the part "
+                           "again");
     if (len < RENDER_PART_HEADER)
         return diag_offset(err, DIAG_INPUT, name, (long long)len,
                            "a region file has a %d-byte header; this one ends first",
                            RENDER_PART_HEADER);
     if (memcmp(buf, render_part_magic, 8))
-        return diag_offset(err, DIAG_INPUT, name, 0, "not a maprt region file (magic MAPRTPT1)");
+        return diag_offset(err, DIAG_INPUT, name, 0, "not a maprt region file (magic MAPRTPT2)");
     if (render_part_get32(buf + 8) < 1 || render_part_get32(buf + 8) > SCENE_MAX_SIDE ||
         render_part_get32(buf + 12) < 1 || render_part_get32(buf + 12) > SCENE_MAX_SIDE)
         return diag_offset(err, DIAG_INPUT, name, 8, "image size %lux%lu is outside 1..%d",
@@ -128,18 +164,25 @@ int render_part_decode(const char *name, const uint8_t *buf, size_t len, render_
         }
     if (!in.mode[0])
         return diag_offset(err, DIAG_INPUT, name, 36, "numeric mode name is empty");
+    if (render_part_get32(buf + 44) & ~(uint32_t)RENDER_PART_IDS)
+        return diag_offset(err, DIAG_INPUT, name, 44, "contents word 0x%lx has bits other than "
+                           "the identity map's (0x%x)", (unsigned long)render_part_get32(buf + 44),
+                           RENDER_PART_IDS);
+    in.ids = (render_part_get32(buf + 44) & RENDER_PART_IDS) != 0;
     for (i = 0; i < RENDER_PART_COUNTERS; i++)
-        *render_part_counter(&in.stats, i) = render_part_get64(buf + 44 + 8 * i);
+        *render_part_counter(&in.stats, i) = render_part_get64(buf + 48 + 8 * i);
     bits = render_part_get64(buf + RENDER_PART_HEADER - 16);
     memcpy(&in.stats.time_compile_s, &bits, 8);
     bits = render_part_get64(buf + RENDER_PART_HEADER - 8);
     memcpy(&in.stats.time_render_s, &bits, 8);
-    if (len != render_part_bytes(in.region))
-        return diag_offset(err, DIAG_INPUT, name, (long long)(len < render_part_bytes(in.region)
-                                                              ? len : render_part_bytes(in.region)),
-                           "region %d,%d,%d,%d needs %zu bytes; the file has %zu", in.region[0],
+    if (len != render_part_bytes(in.region, in.ids))
+        return diag_offset(err, DIAG_INPUT, name,
+                           (long long)(len < render_part_bytes(in.region, in.ids)
+                                       ? len : render_part_bytes(in.region, in.ids)),
+                           "region %d,%d,%d,%d needs %zu bytes%s; the file has %zu", in.region[0],
                            in.region[1], in.region[2], in.region[3],
-                           render_part_bytes(in.region), len);
+                           render_part_bytes(in.region, in.ids),
+                           in.ids ? " with its identity map" : "", len);
     *info = in;
     return 0;
 }
@@ -149,7 +192,7 @@ int render_part_place(const char *name, const uint8_t *buf, const render_part_in
 {
     const int *r = info->region;
     size_t w = (size_t)(r[2] - r[0]), h = (size_t)(r[3] - r[1]), x, y;
-    const uint8_t *px = buf + RENDER_PART_HEADER, *ids = px + 3 * w * h;
+    const uint8_t *px = buf + RENDER_PART_HEADER, *ids = px + 3 * w * h, *idm = ids + 4 * w * h;
     for (y = 0; y < h; y++) {
         size_t row = (size_t)(r[1] + (int)y) * (size_t)info->width + (size_t)r[0];
         for (x = 0; x < w; x++)
@@ -158,8 +201,11 @@ int render_part_place(const char *name, const uint8_t *buf, const render_part_in
                                (size_t)r[0] + x, (size_t)r[1] + y);
         memset(covered + row, 1, w);
         memcpy(fb->img.px + 3 * row, px + 3 * w * y, 3 * w);
-        for (x = 0; x < w; x++)
+        for (x = 0; x < w; x++) {
             fb->pid[row + x] = (int32_t)render_part_get32(ids + 4 * (w * y + x));
+            if (info->ids)
+                render_part_get_id(idm + RENDER_PART_ID_PX * (w * y + x), &fb->ids.px[row + x]);
+        }
     }
     return 0;
 }

@@ -4,16 +4,20 @@
  * whole framebuffer and write exactly the bytes a single process writes.
  *
  * Layout (docs/cluster.md), all integers big-endian:
- *   0   8  magic "MAPRTPT1"
+ *   0   8  magic "MAPRTPT2" (format 2; "MAPRTPT1", without the contents
+ *          word and the identity map, is refused with a message)
  *   8   4  image width          12  4  image height
  *   16 16  region x0 y0 x1 y1   (pixels [x0,x1) x [y0,y1))
  *   32  4  samples per pixel side (--aa)
  *   36  8  numeric mode name, NUL-padded ("q16", "f64", ...)
- *   44 160 render_stats: 20 counters (u64: the fourteen of render_stats,
+ *   44  4  contents: bit 0 = the identity map follows the ids; others 0
+ *   48 160 render_stats: 20 counters (u64: the fourteen of render_stats,
  *          then the six HFP exceptions), then compile and render seconds as
  *          binary64 bit patterns (u64)
- *   220    region pixels, rows top first: RGB8 (3 bytes each), then the
- *          primitive ids (i32 each, -1 = background)
+ *   224    region pixels, rows top first: RGB8 (3 bytes each), then the
+ *          primitive ids (i32 each, -1 = background), then with bit 0 the
+ *          identity map records (24 bytes each: primitive, face, region,
+ *          flags as i32, distance as a binary64 bit pattern)
  * Pure functions over memory; the caller reads and writes files. */
 #ifndef RENDER_PART_H
 #define RENDER_PART_H
@@ -23,21 +27,28 @@
 #include "util/diag.h"
 
 #define RENDER_PART_COUNTERS (14 + HFP_EXC_N)
-#define RENDER_PART_HEADER (44 + 8 * RENDER_PART_COUNTERS + 16)
+#define RENDER_PART_HEADER (48 + 8 * RENDER_PART_COUNTERS + 16)
+#define RENDER_PART_IDS 1     /* contents bit: the identity map is included */
+/* Bytes per pixel: RGB8 and the primitive id, and an identity record. */
+#define RENDER_PART_PX 7
+#define RENDER_PART_ID_PX 24
 
 typedef struct render_part_info {
     int width, height;        /* the whole image */
     int region[4];            /* x0 y0 x1 y1 */
     int aa;
     char mode[9];             /* NUL-terminated */
+    int ids;                  /* the identity map is included (fb->ids) */
     render_stats stats;       /* this region's counters */
 } render_part_info;
 
-/* Bytes of the encoding of a region of that size (header included). */
-size_t render_part_bytes(const int region[4]);
+/* Bytes of the encoding of a region of that size (header included), with
+ * or without the identity map. */
+size_t render_part_bytes(const int region[4], int ids);
 /* Encodes the region info->region of fb (a whole-image framebuffer of
- * info->width x info->height) into a new buffer *out of *len bytes
- * (mem_free it). 0, or DIAG_IO when memory runs out. */
+ * info->width x info->height, with fb->ids filled when info->ids) into a
+ * new buffer *out of *len bytes (mem_free it). 0, or DIAG_IO when memory
+ * runs out. */
 int render_part_encode(const render_fb *fb, const render_part_info *info, uint8_t **out,
                        size_t *len, diag *err);
 /* Decodes buf (len bytes, named `name` in diagnostics) into *info and the
@@ -48,7 +59,7 @@ int render_part_encode(const render_fb *fb, const render_part_info *info, uint8_
 int render_part_decode(const char *name, const uint8_t *buf, size_t len, render_part_info *info,
                        diag *err);
 /* Copies a decoded part's pixels into fb (a whole-image framebuffer of the
- * part's size). covered (width*height bytes, 0 = not yet) marks the pixels
+ * part's size, with fb->ids allocated when info->ids). covered (width*height bytes, 0 = not yet) marks the pixels
  * placed so far; a pixel placed twice is an error (DIAG_INPUT, naming the
  * part and the pixel). */
 int render_part_place(const char *name, const uint8_t *buf, const render_part_info *info,

@@ -13,12 +13,12 @@ $MAPRT bench scenes/fig1.scene --size 24x24 --modes q16,f64 --threads 1 --runs 3
   || fail "bench failed"
 [ "$(wc -l < "$tmp/b.csv")" -eq 3 ] || fail "CSV should hold a header and 2 rows"
 head -1 "$tmp/b.csv" | grep -q '^scene,label,mode,threads,runs,seconds_median' || fail "CSV header"
-grep -q '^scenes/fig1.scene,S1,f64,1,3,.*,inf,0.0000,0,0,0,,,,,,$' "$tmp/b.csv" || fail "f64 row should match its reference"
+grep -q '^scenes/fig1.scene,S1,f64,1,3,.*,inf,0.0000,0,0,0,,,,,,,0$' "$tmp/b.csv" || fail "f64 row should match its reference"
 # The System/370 HFP modes: a row each, no exceptions beyond significance on fig1.
 $MAPRT bench scenes/fig1.scene --size 24x24 --modes hfp32,hfp64 --runs 1 --threads 1 --csv "$tmp/h.csv" > /dev/null \
   || fail "bench hfp failed"
-grep -q '^scenes/fig1.scene,S1,hfp32,1,1,.*,0,0,0,,,,,,$' "$tmp/h.csv" || fail "hfp32 row: $(cat "$tmp/h.csv")"
-grep -q '^scenes/fig1.scene,S1,hfp64,1,1,.*,0,0,0,,,,,,$' "$tmp/h.csv" || fail "hfp64 row: $(cat "$tmp/h.csv")"
+grep -q '^scenes/fig1.scene,S1,hfp32,1,1,.*,0,0,0,,,,,,,0$' "$tmp/h.csv" || fail "hfp32 row: $(cat "$tmp/h.csv")"
+grep -q '^scenes/fig1.scene,S1,hfp64,1,1,.*,0,0,0,,,,,,,0$' "$tmp/h.csv" || fail "hfp64 row: $(cat "$tmp/h.csv")"
 $MAPRT bench scenes/fig1.scene --modes q16,x 2> /dev/null; [ $? -eq 2 ] || fail "bad mode should exit 2"
 $MAPRT bench scenes/fig1.scene --runs 0 2> /dev/null; [ $? -eq 2 ] || fail "--runs 0 should exit 2"
 $MAPRT bench 2> /dev/null; [ $? -eq 2 ] || fail "no scene should exit 2"
@@ -26,7 +26,7 @@ $MAPRT bench 2> /dev/null; [ $? -eq 2 ] || fail "no scene should exit 2"
 if [ -x "$oracle" ]; then
   $MAPRT bench scenes/coincident.scene --size 32x32 --modes q16,f64 --threads 1 --runs 1 \
     --oracle "$oracle" --csv "$tmp/o.csv" > "$tmp/out" || fail "bench --oracle failed"
-  grep -q '^scenes/coincident.scene,S1,f64,.*,0,0.0000,[0-9.e+-]*,[0-9.e+-]*$' "$tmp/o.csv" \
+  grep -q '^scenes/coincident.scene,S1,f64,.*,0,0.0000,[0-9.e+-]*,[0-9.e+-]*,0$' "$tmp/o.csv" \
     || fail "f64 should match the oracle: $(cat "$tmp/o.csv")"
   $MAPRT bench scenes/coincident.scene --size 16x16 --runs 1 --oracle "$tmp/nonexistent" \
     > /dev/null 2>&1; [ $? -eq 3 ] || fail "a missing oracle should exit 3"

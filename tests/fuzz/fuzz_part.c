@@ -1,11 +1,14 @@
 /* fuzz_part — the region-file decoder of `maprt merge` and of MPI bands
  * (render_part) on arbitrary bytes: a status, never a crash or a read past
  * the input; a part that decodes is placed into a framebuffer of its size
- * only when that is small (the decoder itself allocates nothing). */
+ * (with the identity map when the part carries one) only when that is small
+ * (the decoder itself allocates nothing), then placed again, which must be
+ * refused as an overlap. */
 #include <stddef.h>
 #include <stdint.h>
 #include "render/render_part.h"
 #include "util/mem.h"
+#include <stdlib.h>
 #include <string.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -29,8 +32,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     fb.pid = mem_calloc(n, sizeof *fb.pid);
     covered = mem_calloc(n, 1);
-    if (fb.pid && covered)
-        render_part_place("fuzz", data, &info, &fb, covered, &err);
+    if (fb.pid && covered && (!info.ids || !idmap_alloc(&fb.ids, info.width, info.height, &err))
+        && !render_part_place("fuzz", data, &info, &fb, covered, &err)
+        && !render_part_place("fuzz", data, &info, &fb, covered, &err))
+        abort();   /* every pixel placed twice must be refused */
     mem_free(covered);
     render_fb_free(&fb);
     return 0;
