@@ -21,8 +21,8 @@ demo make                the build
 demo pkg-config          finds zlib, Open MPI, libjpeg and libtiff
 demo libpng-dev          PNG input and output
 demo zlib1g-dev          the threaded PNG encoder and HET tapes (zlib blocks)
-demo libbz2-dev          HET tapes with bzip2 blocks (vm_cms_shim)
 test libcmocka-dev       the unit tests (tests/unit)
+test libbz2-dev          HET tapes with bzip2 blocks (vm_cms_shim; without it maprt names the package)
 test gfortran            the REAL(16) geometry oracle (test_oracle)
 test libosmesa6-dev      dl2png --backend osmesa and its tests
 test libegl-dev          dl2png --backend egl and its tests

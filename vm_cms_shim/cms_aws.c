@@ -1,7 +1,9 @@
 /* cms_aws — AWS and HET tape image reader and writer (see cms_aws.h). */
 #include "vm_cms_shim/cms_aws.h"
 #include "util/mem.h"
+#if defined(CMS_HAVE_BZIP2)
 #include <bzlib.h>
+#endif
 #include <limits.h>
 #include <string.h>
 #include <zlib.h>
@@ -62,6 +64,7 @@ static int cms_aws_inflate(cms_aws *a, unsigned method, size_t have, long long s
                                : "is corrupt");
         *len = (size_t)out;
     } else if (method == 2) {
+#if defined(CMS_HAVE_BZIP2)
         unsigned int out = (unsigned int)a->outcap;
         int br;
         if (have > UINT_MAX)
@@ -75,6 +78,11 @@ static int cms_aws_inflate(cms_aws *a, unsigned method, size_t have, long long s
                                : br == BZ_MEM_ERROR ? "needs more memory than there is"
                                : "is corrupt or cut short");
         *len = (size_t)out;
+#else
+        return diag_offset(err, DIAG_INPUT, a->name, start, "HET record is compressed with bzip2, "
+                           "and this maprt was built without libbz2 (apt-get install libbz2-dev, "
+                           "then rebuild)");
+#endif
     } else {
         return diag_offset(err, DIAG_INPUT, a->name, start,
                            "HET compression method %u is not zlib (1) or bzip2 (2)", method);
@@ -245,11 +253,15 @@ static int cms_aws_deflate(cms_aws_writer *w, const unsigned char *rec, size_t l
             return -1;
         *olen = (size_t)n;
     } else {
+#if defined(CMS_HAVE_BZIP2)
         unsigned int n = (unsigned int)w->tmpcap;
         if (BZ2_bzBuffToBuffCompress((char *)w->tmp, &n, (char *)rec, (unsigned int)len, 4, 0, 0)
             != BZ_OK)
             return -1;
         *olen = (size_t)n;
+#else
+        return -1;                /* refused before: cms_aws_have_bzip2 */
+#endif
     }
     *out = w->tmp;
     return *olen < len;
@@ -292,4 +304,13 @@ void cms_aws_put_mark(cms_aws_writer *w)
 {
     cms_aws_header(w, 0, AWS_MARK);
     w->prev = 0;
+}
+
+int cms_aws_have_bzip2(void)
+{
+#if defined(CMS_HAVE_BZIP2)
+    return 1;
+#else
+    return 0;
+#endif
 }

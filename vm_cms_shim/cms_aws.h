@@ -63,6 +63,9 @@ typedef struct cms_aws_writer {
 } cms_aws_writer;
 
 /* chunk 0 means CMS_AWS_MAX_CHUNK (Hercules' default). */
+/* 1 when this build has libbz2 (HET bzip2 blocks read and written). */
+int cms_aws_have_bzip2(void);
+
 void cms_aws_writer_init(cms_aws_writer *w, cms_aws_sink sink, void *ctx, cms_aws_comp comp,
                          size_t chunk);
 void cms_aws_writer_free(cms_aws_writer *w);

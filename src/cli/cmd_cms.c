@@ -220,6 +220,9 @@ static int cmd_cms_cli_parse(cms_cli *c, int argc, char **argv)
             if (strcmp(v, "zlib") && strcmp(v, "bzip2"))
                 return cli_usage_error("cms", "--compress: '%s' is not zlib or bzip2", v);
             c->compress = v[0] == 'z' ? CMS_AWS_ZLIB : CMS_AWS_BZIP2;
+            if (c->compress == CMS_AWS_BZIP2 && !cms_aws_have_bzip2())
+                return cli_usage_error("cms", "--compress bzip2: this maprt was built without libbz2 "
+                                       "(apt-get install libbz2-dev, then rebuild)");
             break;
         case OPT_USERID: {
             size_t n = strlen(v), j;

@@ -17,20 +17,31 @@ imp() {   # imp TAPE DIR: import TAPE into a fresh DIR
   "$MAPRT" cms import "$1" --disk A="$2" > "$2.log" 2>&1 || fail "import $1: $(cat "$2.log")"
 }
 
+# a build without libbz2 (Debian libbz2-dev) refuses bzip2 with the package
+# named; the bzip2 forms below are then left out
+mkdir "$d/empty"
+bz2=het-bzip2
+msg=$("$MAPRT" cms export "X Y A" "$d/x.het" --form het --compress bzip2 --disk A="$d/empty" 2>&1)
+case "$msg" in
+  *"built without libbz2 (apt-get install libbz2-dev"*) bz2= ;;
+esac
+
 # Hercules' own HET tapes (zlib, bzip2): labelled and empty; read, labels noted.
 # This part needs no Hercules tool.
 for h in tests/data/hercules-hetbsf-zlib.het tests/data/hercules-hetbsf-bzip2.het; do
   rm -rf "$d/e"; mkdir "$d/e"
   msg=$("$MAPRT" cms import "$h" --disk A="$d/e" 2>&1); rc=$?
   [ $rc -eq 1 ] || fail "$h: exit $rc"
-  case "$msg" in
-    *"offset 0: warning: standard label skipped: VOL1000000"*"error: no CMS files found"*) ;;
+  case "$h,$bz2,$msg" in
+    *bzip2.het,,*"offset 0: error: HET record is compressed with bzip2, and this maprt was built without libbz2"*) ;;
+    *,*"offset 0: warning: standard label skipped: VOL1000000"*"error: no CMS files found"*) ;;
     *) fail "$h: $msg" ;;
   esac
 done
 
+. tests/need.sh
 for t in tapemap hetmap hetupd; do
-  command -v $t >/dev/null 2>&1 || { echo "SKIP: $t not installed (apt-get install hercules)"; exit 0; }
+  need_cmd $t hercules
 done
 
 # the real tape: HET -> AWS by Hercules, both import to the same 46 files
@@ -70,7 +81,7 @@ cp "$d"/h1/* "$d/h2/" 2>/dev/null
 names=$(cd "$d/h2" && ls | grep -v '\.cms$' | tr 'a-z' 'A-Z' | sed "s/^\(.*\)\.\(.*\)$/\1 \2 A/")
 ok=1
 for fmt in vmfplc2 dump; do
-  for form in aws het-zlib het-bzip2; do
+  for form in aws het-zlib $bz2; do
     out="$d/out-$fmt-$form.tape"
     case $form in
       aws) set -- --form aws ;;
@@ -93,7 +104,7 @@ for fmt in vmfplc2 dump; do
       cmp -s "$f" "$d/r/$b" || { echo "differs after $fmt $form: $b"; ok=0; }
     done
     # Hercules converts the tape; the copy imports to the same files
-    for conv in "-z" "-b" "-d"; do
+    for conv in "-z" ${bz2:+"-b"} "-d"; do
       hetupd $conv "$out" "$d/conv.het" >/dev/null 2>&1 || fail "hetupd $conv of $fmt $form"
       imp "$d/conv.het" "$d/c"
       diff -r "$d/r" "$d/c" >/dev/null || fail "hetupd $conv copy of $fmt $form imports differently"

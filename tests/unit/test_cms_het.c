@@ -37,7 +37,7 @@ static void test_cms_het_round_trip(void **state)
     (void)state;
     for (i = 0; i < (int)sizeof big; i++)
         big[i] = (unsigned char)(i % 7 == 0 ? i * 31 : 0x40);   /* compressible, not trivial */
-    for (c = 0; c < 3; c++) {
+    for (c = 0; c < (cms_aws_have_bzip2() ? 3 : 2); c++) {
         tbuf t = {0};
         cms_aws_writer w;
         cms_aws a;
@@ -106,7 +106,10 @@ static void test_cms_het_errors(void **state)
     cms_aws_init(&a, t.p, t.n, "bad.het", NULL);
     diag_init(&e);
     assert_int_equal(cms_aws_next(&a, &rec, &len, &off, &e), -1);
-    assert_string_equal(e.msg, "HET record: bzip2 data is corrupt or cut short");
+    assert_string_equal(e.msg, cms_aws_have_bzip2()
+                        ? "HET record: bzip2 data is corrupt or cut short"
+                        : "HET record is compressed with bzip2, and this maprt was built without "
+                          "libbz2 (apt-get install libbz2-dev, then rebuild)");
     assert_int_equal(e.offset, 0);
     cms_aws_free(&a);
     /* chunks of one record that disagree on the compression */
@@ -389,7 +392,8 @@ static void test_cms_import_transaction(void **state)
         s[19] = 4;
         memcpy(s + 20, bin + 12, 4);
         t_tape_file(&f, "PROG", "MODULE", '3', 'V', 16, 2, s, sizeof s);
-        cms_tape_writer_init(&w, CMS_TAPE_VMFPLC2, CMS_AWS_BZIP2, sink_tb, &t);
+        cms_tape_writer_init(&w, CMS_TAPE_VMFPLC2, cms_aws_have_bzip2() ? CMS_AWS_BZIP2 : CMS_AWS_ZLIB,
+                             sink_tb, &t);
         assert_int_equal(cms_tape_write_file(&w, &f, &e), 0);
         cms_tape_writer_end(&w);
         t_write(dir, "in.het", t.p, t.n);
