@@ -9,9 +9,8 @@ set -u
 t=$(mktemp -d) || exit 1
 trap 'rm -rf "$t"' EXIT
 fail() { echo "dl_budget.sh: $*" >&2; exit 1; }
-printf 'leak:libOSMesa.so\nleak:libEGL_mesa.so\nleak:swrast_dri.so\nleak:libLLVM\nleak:libglapi.so\n' > "$t/lsan.supp"
-LSAN_OPTIONS="suppressions=$t/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-export LSAN_OPTIONS
+. tests/need.sh
+gl_leaks_not_ours "$t"
 
 # clears N FILE: a 4096x4096 version 1 list of N clears (colour 5) and an end.
 printf '\000\006\137\001\000\005' > "$t/one"
