@@ -5,10 +5,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-void dl_cover_init(dl_cover *c, unsigned long long limit)
+void dl_cover_init(dl_cover *c, dl_work *work)
 {
     memset(c, 0, sizeof *c);
-    c->limit = limit ? limit : DL_COVER_WORK_LIMIT;
+    c->work = work;
 }
 
 void dl_cover_free(dl_cover *c)
@@ -34,8 +34,7 @@ static int dl_cover_charge(dl_cover *c, unsigned long long n)
 {
     if (c->status)
         return 0;
-    c->work += n;
-    if (c->work > c->limit) {
+    if (!dl_work_charge(c->work, n)) {
         c->status = DIAG_INPUT;
         return 0;
     }

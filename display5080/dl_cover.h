@@ -4,15 +4,14 @@
  * even-odd polygons sampled at pixel centres. Pixels are collected as
  * horizontal runs clipped to the element's clip rectangle; dl_cover_finish
  * merges them into disjoint runs, so an element writes each pixel once
- * however often its strokes cross. A work budget (pixel steps, shared by all
- * elements of a list) turns pathological input into an error.
+ * however often its strokes cross. Each step is charged to the list's
+ * drawing budget (dl_work) first, so pathological input becomes an error.
  * Data flow: dl_interp -> dl_cover -> dl_box runs -> dl_device. */
 #ifndef DL_COVER_H
 #define DL_COVER_H
 #include <stddef.h>
 #include "display5080/dl_device.h"
-
-#define DL_COVER_WORK_LIMIT (1ull << 30)
+#include "display5080/dl_work.h"
 
 /* How a line is drawn: brush width, 16-bit pattern (bit 0 first, 1 = drawn;
  * 0xFFFF solid), pixels per pattern bit, and the pattern position reached. */
@@ -29,12 +28,12 @@ typedef struct dl_cover {
     size_t n, cap;
     int *xs;                   /* polygon crossings */
     size_t xs_cap;
-    unsigned long long work, limit;
-    int status;                /* sticky: 0, DIAG_INPUT (work limit) or DIAG_IO (memory) */
+    dl_work *work;             /* the list's budget (not owned) */
+    int status;                /* sticky: 0, DIAG_INPUT (budget spent) or DIAG_IO (memory) */
 } dl_cover;
 
-/* limit 0 = DL_COVER_WORK_LIMIT. */
-void dl_cover_init(dl_cover *c, unsigned long long limit);
+/* Steps are charged to work. */
+void dl_cover_init(dl_cover *c, dl_work *work);
 void dl_cover_free(dl_cover *c);
 /* Starts an element with an empty set clipped to the inclusive rectangle. */
 void dl_cover_start(dl_cover *c, int cx0, int cy0, int cx1, int cy1);

@@ -20,7 +20,8 @@ void dl_interp_init(dl_interp *in, const char *name, int force_dac, unsigned lon
     in->force_dac = force_dac;
     in->open = open;
     in->octx = octx;
-    dl_cover_init(&in->cover, work_limit);
+    dl_work_init(&in->work, work_limit);
+    dl_cover_init(&in->cover, &in->work);
 }
 
 void dl_interp_free(dl_interp *in)
@@ -103,6 +104,26 @@ static void dl_interp_gc(const dl_interp *in, const dl_element *e, unsigned colo
     gc->offset = e->offset;
 }
 
+/* The located error for a list whose drawing budget is spent. */
+static int dl_interp_spent(const dl_interp *in, const dl_element *e, diag *err)
+{
+    return diag_offset(err, DIAG_INPUT, in->name, e->offset,
+                       "drawing work limit of %llu pixel steps exceeded", in->work.limit);
+}
+
+/* Charges n boxes' pixels, then hands them to the device. */
+static int dl_interp_boxes(dl_interp *in, const dl_element *e, const dl_gc *gc, const dl_box *b,
+                           size_t n, diag *err)
+{
+    unsigned long long px = 0;
+    size_t k;
+    for (k = 0; k < n; k++)
+        px += (unsigned long long)(b[k].x1 - b[k].x0 + 1) * (unsigned)(b[k].y1 - b[k].y0 + 1);
+    if (!dl_work_charge(&in->work, px))
+        return dl_interp_spent(in, e, err);
+    return in->ops->boxes(in->dev, gc, b, n, err);
+}
+
 /* Writes one clipped box. */
 static int dl_interp_box(dl_interp *in, const dl_element *e, unsigned colour, long long x0,
                          long long y0, long long x1, long long y1, diag *err)
@@ -118,7 +139,7 @@ static int dl_interp_box(dl_interp *in, const dl_element *e, unsigned colour, lo
     if (!dl_interp_clip_box(in, &b))
         return 0;
     dl_interp_gc(in, e, colour, in->op, &gc);
-    return in->ops->boxes(in->dev, &gc, &b, 1, err);
+    return dl_interp_boxes(in, e, &gc, &b, 1, err);
 }
 
 /* Starts collecting the pixels of an element; 0 if the clip is empty. */
@@ -139,14 +160,13 @@ static int dl_interp_flush(dl_interp *in, const dl_element *e, unsigned colour, 
     size_t n = dl_cover_finish(&in->cover, &b);
     dl_gc gc;
     if (in->cover.status == DIAG_INPUT)
-        return diag_offset(err, DIAG_INPUT, in->name, e->offset,
-                           "drawing work limit of %llu pixel steps exceeded", in->cover.limit);
+        return dl_interp_spent(in, e, err);
     if (in->cover.status)
         return diag_offset(err, DIAG_IO, in->name, e->offset, "out of memory while drawing");
     if (!n)
         return 0;
     dl_interp_gc(in, e, colour, op, &gc);
-    return in->ops->boxes(in->dev, &gc, b, n, err);
+    return dl_interp_boxes(in, e, &gc, b, n, err);
 }
 
 /* Copies the element's points into *dst as ints. */
@@ -250,6 +270,8 @@ static int dl_interp_blt(dl_interp *in, const dl_element *e, diag *err)
     const uint8_t *rows;
     if (!dl_interp_clip_box(in, &b))
         return 0;
+    if (!dl_work_charge(&in->work, (unsigned long long)(b.x1 - b.x0 + 1) * (unsigned)(b.y1 - b.y0 + 1)))
+        return dl_interp_spent(in, e, err);
     rows = e->data + (ptrdiff_t)(b.y0 - e->y0) * e->stride + (b.x0 - e->x0);
     dl_interp_gc(in, e, 0, e->op, &gc);
     return in->ops->blt(in->dev, &gc, b.x0, b.y0, b.x1 - b.x0 + 1, b.y1 - b.y0 + 1, rows,

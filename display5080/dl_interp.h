@@ -4,6 +4,8 @@
  * character height, up vector and code page; scissor; viewport; the polygon
  * being built), rasterises each shape once (dl_cover, dl_font), clips it, and
  * hands the pixels to a dl_device, so every backend writes the same pixels.
+ * Every device operation is charged to the list's drawing budget (dl_work)
+ * before it is issued, so every backend refuses the same lists for their work.
  * Data flow: dl_decode -> dl_interp -> dl_cover -> dl_device (dl_raster | dl_gl). */
 #ifndef DL_INTERP_H
 #define DL_INTERP_H
@@ -40,6 +42,7 @@ typedef struct dl_interp {
     size_t pts_cap;
     int *poly;
     size_t poly_n, poly_cap;
+    dl_work work;                  /* drawing budget: dl_cover's steps and the device writes */
     dl_cover cover;
     unsigned long src_blts;        /* 0x5012 elements left undrawn (adapter memory) */
     long long src_blt_offset;      /* the first of them */
@@ -47,8 +50,8 @@ typedef struct dl_interp {
 
 extern const dl_visitor dl_interp_visitor;
 
-/* Prepares an interpreter; force_dac 0, 4 or 8; work_limit for dl_cover (0 =
- * its default). */
+/* Prepares an interpreter; force_dac 0, 4 or 8; work_limit the drawing
+ * budget in pixel steps (0 = DL_WORK_LIMIT). */
 void dl_interp_init(dl_interp *in, const char *name, int force_dac, unsigned long long work_limit,
                     dl_interp_open_fn open, void *octx);
 /* Frees scratch memory (not the device: its creator owns it). */

@@ -1,19 +1,16 @@
 /* dl_raster — the software 5081 frame buffer: width x height 8-bit indices,
  * written box by box and block by block through the logic op and plane
  * mask. The png backend, and the reference the GL backends are tested
- * against. A work budget (pixels written) turns pathological input into an
- * error instead of a hang. */
+ * against. It writes what it is given: the interpreter has charged every
+ * operation to the list's drawing budget (dl_work) before issuing it. */
 #ifndef DL_RASTER_H
 #define DL_RASTER_H
 #include <stdint.h>
 #include "display5080/dl_device.h"
 
-#define DL_RASTER_WORK_LIMIT (1ull << 30)
-
 typedef struct dl_raster {
     int width, height;
     uint8_t *px;               /* row y (0 = bottom) at px + y*width */
-    unsigned long long work, work_limit;
 } dl_raster;
 
 extern const dl_device dl_raster_device;

@@ -2,7 +2,6 @@
 #include "image/image_png.h"
 #include "display5080/dl_render.h"
 #include "display5080/dl_interp.h"
-#include "display5080/dl_raster.h"
 #include "util/mem.h"
 #include <string.h>
 
@@ -19,8 +18,6 @@ static int dl_render_open(void *octx, int width, int height, const dl_device **o
     int rc = c->b->open(width, height, &c->dev, err);
     if (rc)
         return rc;
-    if (c->b == &dl_backend_png && c->opts && c->opts->work_limit)
-        ((dl_raster *)c->dev)->work_limit = c->opts->work_limit;
     *ops = c->b->ops;
     *dev = c->dev;
     return 0;
@@ -60,6 +57,7 @@ int dl_render(const uint8_t *buf, size_t len, const char *name, const dl_backend
         f.dac = in.dac;
         f.src_blts = in.src_blts;
         f.src_blt_offset = in.src_blt_offset;
+        f.work = in.work.used;
         dl_interp_palette(&in, f.palette);
         f.px = mem_alloc((size_t)f.width * (size_t)f.height);
         if (!f.px)

@@ -17,6 +17,7 @@ typedef struct dl_frame {
     uint8_t palette[768];      /* colour table as shown */
     unsigned long src_blts;    /* 0x5012 elements not drawn: their pixels are in adapter memory */
     long long src_blt_offset;  /* byte offset of the first */
+    unsigned long long work;   /* drawing budget spent, in pixel steps (dl_work) */
 } dl_frame;
 
 typedef struct dl_render_opts {

@@ -4,7 +4,10 @@
 #include "util/outfile.h"
 #include "util/suggest.h"
 #include "util/version.h"
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct cli_command {
     const char *name;
@@ -39,6 +42,19 @@ static void main_usage(FILE *f)
                "exit status: 0 ok, 1 bad input, 2 usage, 3 I/O or internal failure\n");
 }
 
+/* Writes out what stdio still holds for stdout: a full disk or /dev/full
+ * must not end in exit 0. Returns rc, or CLI_IO when that write fails. */
+static int main_flush(int rc)
+{
+    diag err;
+    diag_init(&err);
+    if (outfile_close_stdout(&err) && rc == CLI_OK) {
+        diag_print(stderr, &err);
+        rc = CLI_IO;
+    }
+    return rc;
+}
+
 /* The subcommand's exit status; under mpirun every rank runs it. */
 static int main_run(int argc, char **argv)
 {
@@ -49,13 +65,13 @@ static int main_run(int argc, char **argv)
     }
     if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "help")) {
         main_usage(stdout);
-        return CLI_OK;
+        return main_flush(CLI_OK);
     }
     /* --opt=value, --, --version: once here for every subcommand */
     if (cli_conventions(&argc, &argv)) {
         printf("maprt %s\n", version_string());
         cli_conventions_free();
-        return CLI_OK;
+        return main_flush(CLI_OK);
     }
     if (!argv) {
         fprintf(stderr, "maprt: error: out of memory\n");
@@ -69,18 +85,10 @@ static int main_run(int argc, char **argv)
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (!strcmp(argv[1], commands[i].name)) {
             int rc;
-            diag err;
             outfile_track_inputs();   /* no output of this command replaces one of its inputs */
             rc = commands[i].run(argc - 1, argv + 1);
             cli_conventions_free();
-            diag_init(&err);
-            /* output that stdio still held is written now: a full disk or
-             * /dev/full must not end in exit 0 */
-            if (outfile_close_stdout(&err) && rc == CLI_OK) {
-                diag_print(stderr, &err);
-                rc = CLI_IO;
-            }
-            return rc;
+            return main_flush(rc);
         }
     {
         suggest sg;
@@ -98,12 +106,33 @@ static int main_run(int argc, char **argv)
     return CLI_USAGE;
 }
 
+/* Set when main returns. An exit before that was taken by a library:
+ * libgomp ends the process with status 1 when it cannot create a thread
+ * ("libgomp: Thread creation failed: ..."), which is not bad input. */
+static volatile int main_returned;
+
+/* The contract's status for such an exit: an I/O (resource) failure, 3,
+ * with the temporaries removed. Left alone under mpirun with several ranks,
+ * where MPI_Abort ends the run with the status it was given. */
+static void main_at_exit(void)
+{
+    if (main_returned || cli_mpi_size() > 1)
+        return;
+    outfile_remove_temporaries();
+    fprintf(stderr, "maprt: error: a library ended the run (the line above says why)\n");
+    _exit(CLI_IO);
+}
+
 int main(int argc, char **argv)
 {
     int rc;
-    if (cli_mpi_start(&argc, &argv))
+    atexit(main_at_exit);
+    if (cli_mpi_start(&argc, &argv)) {
+        main_returned = 1;
         return CLI_IO;
+    }
     rc = main_run(argc, argv);
     cli_mpi_stop();
+    main_returned = 1;
     return rc;
 }

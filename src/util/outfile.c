@@ -23,7 +23,7 @@ static char *volatile outfile_live[OUTFILE_LIVE_MAX];
 static int outfile_handlers_set;
 static const int outfile_signals[] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
 
-static void outfile_on_signal(int sig)
+void outfile_remove_temporaries(void)
 {
     int i;
     for (i = 0; i < OUTFILE_LIVE_MAX; i++) {
@@ -31,6 +31,11 @@ static void outfile_on_signal(int sig)
         if (t)
             unlink(t);
     }
+}
+
+static void outfile_on_signal(int sig)
+{
+    outfile_remove_temporaries();
     signal(sig, SIG_DFL);
     raise(sig);
 }

@@ -51,6 +51,9 @@ int outfile_open(outfile *of, const char *path, diag *err);   /* outfile_check, 
 int outfile_write(outfile *of, const void *data, size_t len, diag *err);
 int outfile_commit(outfile *of, diag *err);   /* flush, close, rename; 0 or DIAG_IO */
 void outfile_abort(outfile *of);              /* close and remove; safe to repeat */
+/* Unlinks every temporary file still open (async-signal-safe): for the
+ * signal handler, and for an exit that a library takes behind our back. */
+void outfile_remove_temporaries(void);
 /* Writes a whole buffer to path through open/write/commit. */
 int outfile_write_all(const char *path, const void *data, size_t len, diag *err);
 /* A writer callback (stb style) that appends to an outfile: ctx is the outfile;

@@ -6,10 +6,8 @@ set -u
 t=$(mktemp -d) || exit 1
 trap 'rm -rf "$t"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
-# Under the sanitizer build, leaks inside Mesa's libraries are not maprt's.
-printf 'leak:libOSMesa.so\nleak:libEGL_mesa.so\nleak:swrast_dri.so\nleak:libLLVM\nleak:libglapi.so\n' > "$t/lsan.supp"
-LSAN_OPTIONS="suppressions=$t/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
-export LSAN_OPTIONS
+. tests/need.sh
+gl_leaks_not_ours "$t"
 
 $MAPRT dl2png --help | grep -q -- '--backend B' || fail "dl2png --help"
 $MAPRT dl --help | grep -q 'encode IN.png' || fail "dl --help"

@@ -109,6 +109,24 @@ if [ -c /dev/full ]; then
   grep -q "^maprt: <stdout>: error: write failed: No space left on device" "$tmp/err" || fail "stdout message: $(cat "$tmp/err")"
   $MAPRT dl dump "$tmp/a.dl" > /dev/full 2> /dev/null; [ $? -eq 3 ] || fail "dl dump to /dev/full should exit 3"
   $MAPRT compare "$tmp/a.png" "$tmp/t.png" > /dev/full 2> /dev/null; [ $? -eq 3 ] || fail "compare to /dev/full should exit 3"
+  # ... also where maprt itself, not a subcommand, writes: help and version
+  for a in --help help --version; do
+    $MAPRT $a > /dev/full 2> /dev/null; [ $? -eq 3 ] || fail "maprt $a to /dev/full should exit 3"
+  done
+fi
+# A render thread that cannot be created (1 GB stacks under a 400 MB address
+# space): libgomp ends the process itself, with status 1; maprt turns that
+# into the contract's 3 and removes its temporaries. (A sanitizer build,
+# whose shadow memory needs more address space, cannot start under the limit
+# at all: the case is left to the plain build there.)
+if ( ulimit -v 400000; exec $MAPRT --version ) > /dev/null 2>&1; then
+  ( ulimit -v 400000; OMP_STACKSIZE=1G exec $MAPRT render "$tmp/d.scene" -o "$tmp/th.png" --size 32x32 --threads 2 ) \
+    2> "$tmp/err"; rc=$?
+  [ "$rc" -eq 3 ] || fail "thread-creation failure: exit $rc, expected 3: $(cat "$tmp/err")"
+  grep -q "^libgomp: Thread creation failed" "$tmp/err" || fail "thread-creation message: $(cat "$tmp/err")"
+  grep -qx "maprt: error: a library ended the run (the line above says why)" "$tmp/err" ||
+    fail "thread-creation message: $(cat "$tmp/err")"
+  [ ! -e "$tmp/th.png" ] || fail "an output was written although no thread could start"
 fi
 ls "$tmp" | grep -q 'tmp-' && fail "temporary file left behind: $(ls "$tmp")"
 exit 0

@@ -22,7 +22,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (scene_parse(&src, &s, &err) != 0)
         return 0;
     for (i = 0; i < 2; i++) {
-        render_opts o = {8, 8, 1, 1, NULL, NULL};
+        render_opts o = {.width = 8, .height = 8, .threads = 1, .aa = 1};
         render_fb fb;
         render_stats st;
         diag_init(&err);

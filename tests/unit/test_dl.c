@@ -624,6 +624,31 @@ static void test_dl_interp_work_limit(void **state)
     assert_int_equal(dl_render(s.b, s.n, "t.dl", &dl_backend_png, &ro, &f, &err), DIAG_INPUT);
     diag_format(&err, buf, sizeof buf);
     assert_string_equal(buf, "t.dl: offset 16: error: drawing work limit of 1000 pixel steps exceeded");
+    /* Clears and fills cost their pixels, counted by hand: three clears of
+     * 16x16 and a 4x4 fill are 3*256 + 16 = 784 steps. */
+    header(&s, 16, 16);
+    elem(&s, DL_CLEAR, 1, 1);
+    elem(&s, DL_CLEAR, 1, 2);
+    elem(&s, DL_CLEAR, 1, 3);
+    elem(&s, DL_FILL_RECT, 4, 2, 2, 5, 5);   /* offset 16 + 3*6 */
+    end(&s);
+    ro.work_limit = 784;
+    diag_init(&err);
+    assert_int_equal(dl_render(s.b, s.n, "t.dl", &dl_backend_png, &ro, &f, &err), 0);
+    assert_int_equal(f.work, 784);
+    assert_int_equal(px(&f, 2, 2), 1);
+    assert_int_equal(px(&f, 6, 6), 3);
+    dl_frame_free(&f);
+    ro.work_limit = 783;
+    diag_init(&err);
+    assert_int_equal(dl_render(s.b, s.n, "t.dl", &dl_backend_png, &ro, &f, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "t.dl: offset 34: error: drawing work limit of 783 pixel steps exceeded");
+    ro.work_limit = 767;   /* the third clear no longer fits */
+    diag_init(&err);
+    assert_int_equal(dl_render(s.b, s.n, "t.dl", &dl_backend_png, &ro, &f, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "t.dl: offset 28: error: drawing work limit of 767 pixel steps exceeded");
 }
 
 /* Fails each allocation in turn: a clean error, never a crash (leaks are

@@ -3,7 +3,10 @@
  * (catches flips and channel swaps), exact agreement of the GL backends with
  * the software raster for pixel and fill elements, and the documented bound
  * for lines, circles and polygons (every differing pixel lies within one
- * pixel of a pixel the other backend set). GL cases skip, with the reason,
+ * pixel of a pixel the other backend set), and one drawing budget: a list
+ * drawn within its budget draws the same pixels everywhere, and a budget one
+ * step short is refused by every backend with the same located error. GL
+ * cases skip, with the reason,
  * where no context can be created. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -412,6 +415,96 @@ static void test_dl_backend_egl_written_exact(void **state)
     written_exact(&dl_backend_egl, "test_dl_backend_egl_written_exact");
 }
 
+/* ---- one drawing budget ------------------------------------------------- */
+
+/* Draws with a budget: 0 or the status, with the message in msg. */
+static int draw_limited(const dl_backend *b, const uint8_t *buf, size_t len,
+                        unsigned long long limit, dl_frame *f, char *msg, size_t cap)
+{
+    dl_render_opts ro;
+    diag err;
+    int rc;
+    memset(&ro, 0, sizeof ro);
+    ro.work_limit = limit;
+    diag_init(&err);
+    rc = dl_render(buf, len, "t", b, &ro, f, &err);
+    diag_format(&err, msg, cap);
+    return rc;
+}
+
+/* Random lists of every kind with a clear, fills and a block: drawn with
+ * exactly the budget the software raster spent, b gives its pixels; with any
+ * smaller budget b refuses it exactly as the software raster does. */
+static void budget_same(const dl_backend *b, const char *test)
+{
+    uint64_t seed = test_seed(test);
+    int t, kind;
+    if (!usable(b)) {
+        skip();
+        return;
+    }
+    for (t = 0; t < 6; t++) {
+        dl_encoder enc;
+        uint8_t *buf, rows[40 * 30];
+        size_t len, i;
+        dl_frame ref, got;
+        char want[600], msg[600];
+        unsigned long long w, cuts[3];
+        int c;
+        dl_encode_init(&enc, 64, 64, 0);
+        dl_encode_word(&enc, DL_CLEAR, (unsigned)rnd(&seed, 0, 255));
+        for (kind = 0; kind < DL_TEST_KINDS; kind++)
+            shape(&enc, &seed, kind, 0);
+        dl_encode_word(&enc, DL_INTERIOR_COLOUR, (unsigned)rnd(&seed, 0, 255));
+        dl_encode_rect(&enc, DL_FILL_RECT, rnd(&seed, -10, 30), rnd(&seed, -10, 30),
+                       rnd(&seed, 30, 80), rnd(&seed, 30, 80));
+        for (i = 0; i < sizeof rows; i++)
+            rows[i] = (uint8_t)test_rand(&seed);
+        dl_encode_blt(&enc, rnd(&seed, -10, 40), rnd(&seed, -10, 40), 40, 30,
+                      (unsigned)rnd(&seed, 1, 16), rows, 40);
+        shape(&enc, &seed, (int)(t % DL_TEST_KINDS), 0);
+        encode(&enc, &buf, &len);
+        draw(&dl_backend_png, buf, len, &ref);
+        w = ref.work;
+        assert_true(w > 64 * 64);   /* the clear alone costs the frame */
+        assert_int_equal(draw_limited(b, buf, len, w, &got, msg, sizeof msg), 0);
+        assert_int_equal(got.work, w);
+        assert_memory_equal(got.px, ref.px, (size_t)64 * 64);
+        dl_frame_free(&got);
+        cuts[0] = w - 1;
+        cuts[1] = 1 + test_rand(&seed) % (w - 1);
+        cuts[2] = 64 * 64 - 1;   /* the clear does not fit */
+        for (c = 0; c < 3; c++) {
+            assert_int_equal(draw_limited(&dl_backend_png, buf, len, cuts[c], &got, want,
+                                          sizeof want), DIAG_INPUT);
+            assert_non_null(strstr(want, "error: drawing work limit of"));
+            assert_int_equal(draw_limited(b, buf, len, cuts[c], &got, msg, sizeof msg), DIAG_INPUT);
+            assert_string_equal(msg, want);
+        }
+        assert_non_null(strstr(want, "t: offset 16: error:"));   /* the clear, first element */
+        dl_frame_free(&ref);
+        mem_free(buf);
+    }
+}
+
+static void test_dl_backend_png_budget(void **state)
+{
+    (void)state;
+    budget_same(&dl_backend_png, "test_dl_backend_png_budget");
+}
+
+static void test_dl_backend_osmesa_budget(void **state)
+{
+    (void)state;
+    budget_same(&dl_backend_osmesa, "test_dl_backend_osmesa_budget");
+}
+
+static void test_dl_backend_egl_budget(void **state)
+{
+    (void)state;
+    budget_same(&dl_backend_egl, "test_dl_backend_egl_budget");
+}
+
 static void test_dl_backend_find(void **state)
 {
     (void)state;
@@ -459,6 +552,9 @@ int main(void)
         cmocka_unit_test(test_dl_backend_egl_shapes_exact),
         cmocka_unit_test(test_dl_backend_osmesa_written_exact),
         cmocka_unit_test(test_dl_backend_egl_written_exact),
+        cmocka_unit_test(test_dl_backend_png_budget),
+        cmocka_unit_test(test_dl_backend_osmesa_budget),
+        cmocka_unit_test(test_dl_backend_egl_budget),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
