@@ -41,5 +41,8 @@ for b in png osmesa egl; do
     [ ! -e "$t/x-$b.png" ] || fail "$b: $l: output left behind"
   done
 done
-if [ -n "$skipped" ]; then echo "skipped:$skipped"; exit 77; fi
+if [ -n "$skipped" ]; then
+  echo "skipped: needs the GL backends (apt-get install -y libosmesa6-dev libegl-dev libegl-mesa0 libgl1-mesa-dri):$skipped"
+  exit 77
+fi
 exit 0

@@ -11,8 +11,8 @@ set -u
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "mpi.sh: $*" >&2; exit 1; }
-command -v mpirun >/dev/null 2>&1 || { echo "mpi.sh: skipped: no mpirun (apt-get install openmpi-bin)"; exit 77; }
-ldd "$MAPRT" 2>/dev/null | grep -q libmpi || { echo "mpi.sh: skipped: $MAPRT built without MPI (apt-get install libopenmpi-dev)"; exit 77; }
+command -v mpirun >/dev/null 2>&1 || { echo "skipped: needs mpirun (apt-get install -y openmpi-bin)"; exit 77; }
+ldd "$MAPRT" 2>/dev/null | grep -q libmpi || { echo "skipped: needs a build with MPI (apt-get install -y libopenmpi-dev, then rebuild)"; exit 77; }
 # Open MPI refuses root unless told; leak checkers do not know its caches.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=detect_leaks=0
 # The pictures carry their date in their provenance: one date for all.
