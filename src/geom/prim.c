@@ -550,6 +550,11 @@ int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out)
 {
     const num big = num_from_i(GEOM_TBIG);
     span s;
+    /* The ray starts on this convex primitive's surface: leaving it, the
+     * primitive is behind (nothing to solve); entering it, the span starts
+     * at the origin. */
+    if (r->excl_prim == p->id && !r->excl_enter)
+        return 0;
     s.a.t = num_neg(big);
     s.b.t = big;
     s.a.prim = s.b.prim = p->id;
@@ -560,9 +565,7 @@ int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out)
         && !prim_side(p, r, tc, &s))
         return 0;
     if (r->excl_prim == p->id) {
-        /* The ray starts on this convex primitive's surface: leaving it, the
-         * primitive is behind; entering it, the span starts at the origin. */
-        if (!r->excl_enter || s.b.t <= NUM_ZERO)
+        if (s.b.t <= NUM_ZERO)
             return 0;
         s.a.t = NUM_ZERO;
     }
