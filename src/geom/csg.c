@@ -520,19 +520,27 @@ static int csg_nearest(csg_query *q, int ni, num tc, csg_hit *best, int *found)
                && csg_nearest(q, kid[first], tc2[first], best, found);
     }
     {
-        size_t mark = arena_mark(q->ar);
-        span *s = NULL;
         csg_hit h;
-        int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, &s);
-        if (n > 0 && csg_first(s, n, q->tmax, &h)
-            && (!*found || h.t < best->t
-                || (h.t == best->t && (h.entering > best->entering
-                                       || (h.entering == best->entering && h.prim < best->prim))))) {
+        int hit;
+        if (nd->op == CSG_LEAF) {     /* an object of one primitive: one span, no arena */
+            span s;
+            q->st->prim_tests++;
+            hit = NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
+                  && csg_first(&s, 1, q->tmax, &h);
+        } else {
+            size_t mark = arena_mark(q->ar);
+            span *s = NULL;
+            int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, &s);
+            hit = n > 0 && csg_first(s, n, q->tmax, &h);
+            arena_release(q->ar, mark);
+        }
+        if (hit && (!*found || h.t < best->t
+                    || (h.t == best->t && (h.entering > best->entering
+                                           || (h.entering == best->entering && h.prim < best->prim))))) {
             *best = h;
             *found = 1;
             q->tmax = h.t;
         }
-        arena_release(q->ar, mark);
     }
     return q->any && *found;
 }
