@@ -228,9 +228,16 @@ VEC_HOT int vec3_slab_miss(num lo, num hi, num o, num d, vec3_rcp_t rq, num *a, 
     num t0, t1, big = num_from_i(GEOM_TBIG);
     if (d == NUM_ZERO)
         return o < lo || o > hi;
-    t0 = vec3_slab_t(num_sub(lo, o), d, rq, big);
-    t1 = vec3_slab_t(num_sub(hi, o), d, rq, big);
-    if (d < NUM_ZERO) { num t = t0; t0 = t1; t1 = t; }
+    /* the entry plane is chosen by d's sign before dividing: the same for
+     * every node a ray meets, so the branch predicts where a swap of the
+     * two quotients after them would not */
+    if (d > NUM_ZERO) {
+        t0 = vec3_slab_t(num_sub(lo, o), d, rq, big);
+        t1 = vec3_slab_t(num_sub(hi, o), d, rq, big);
+    } else {
+        t0 = vec3_slab_t(num_sub(hi, o), d, rq, big);
+        t1 = vec3_slab_t(num_sub(lo, o), d, rq, big);
+    }
     if (t0 > *a) *a = t0;
     if (t1 < *b) *b = t1;
     return *a > *b;
@@ -245,21 +252,27 @@ VEC_HOT int vec3_slab_miss(num lo, num hi, num o, num d, vec3_rcp_t rq, num *a, 
 #if defined(NUM_MODE_q16)
 /* q16: vec3_slab_miss on exact 64-bit intermediates (see vec3_sphere_miss
  * for why nothing can overflow). */
+VEC_HOT int64_t vec3_slab_t64(int64_t x, num d, int64_t rq)
+{
+    return rq != 0 && x < ((int64_t)1 << 22) && x > -((int64_t)1 << 22)
+           ? fx_shr_round(x * rq, 32)
+           : num_div_clamp(fx16_sat(x), d, num_from_i(GEOM_TBIG));
+}
+
 VEC_HOT int vec3_slab_miss64(num lo, num hi, int64_t o, num d, int64_t rq, int64_t *a, int64_t *b)
 {
-    int64_t x[2], t[2];
-    int k;
+    int64_t t0, t1;
     if (d == NUM_ZERO)
         return o < lo || o > hi;
-    x[0] = lo - o;
-    x[1] = hi - o;
-    for (k = 0; k < 2; k++)
-        t[k] = rq != 0 && x[k] < ((int64_t)1 << 22) && x[k] > -((int64_t)1 << 22)
-               ? fx_shr_round(x[k] * rq, 32)
-               : num_div_clamp(fx16_sat(x[k]), d, num_from_i(GEOM_TBIG));
-    if (d < NUM_ZERO) { int64_t u = t[0]; t[0] = t[1]; t[1] = u; }
-    if (t[0] > *a) *a = t[0];
-    if (t[1] < *b) *b = t[1];
+    if (d > NUM_ZERO) {
+        t0 = vec3_slab_t64(lo - o, d, rq);
+        t1 = vec3_slab_t64(hi - o, d, rq);
+    } else {
+        t0 = vec3_slab_t64(hi - o, d, rq);
+        t1 = vec3_slab_t64(lo - o, d, rq);
+    }
+    if (t0 > *a) *a = t0;
+    if (t1 < *b) *b = t1;
     return *a > *b;
 }
 
