@@ -2,7 +2,8 @@
 # make bench-peers: maprt (q16 and f64, one thread) against POV-Ray 3.7 on
 # the scenes of bench/peers (each .pov the same picture as its .scene,
 # checked here: share of pixels differing by more than 8/255), and f64
-# against bench/peers/minimal.c (a hand-written tracer of sphere.scene).
+# against bench/peers/minimal.c (a hand-written tracer of sphere.scene;
+# maprt both as PNG and, like the minimal tracer, as PPM).
 # Each command runs N times (PEERS_RUNS, default 5), the commands
 # alternating so load changes hit all alike; the medians of whole-process
 # CPU seconds (user + sys) and wall seconds are printed, then the ratios
@@ -51,11 +52,14 @@ i=0
 while [ "$i" -lt "$runs" ]; do
   run min "$minimal" "$tmp/min.ppm" 2048 1536
   run sf64 "$bin" render bench/peers/sphere.scene -o "$tmp/o.png" --size 2048x1536 --numeric f64 --threads 1
+  run sf64p "$bin" render bench/peers/sphere.scene -o "$tmp/o.ppm" --size 2048x1536 --numeric f64 --threads 1
   run sq16 "$bin" render bench/peers/sphere.scene -o "$tmp/o.png" --size 2048x1536 --numeric q16 --threads 1
   i=$((i + 1))
 done
-echo "minimal cpu_s=$(med min 1) wall_s=$(med min 2); f64 cpu_s=$(med sf64 1) wall_s=$(med sf64 2); q16 cpu_s=$(med sq16 1)"
+echo "minimal cpu_s=$(med min 1) wall_s=$(med min 2); f64 cpu_s=$(med sf64 1) wall_s=$(med sf64 2); f64 writing PPM cpu_s=$(med sf64p 1); q16 cpu_s=$(med sq16 1)"
 echo "f64/minimal cpu=$(ratio "$(med sf64 1)" "$(med min 1)") wall=$(ratio "$(med sf64 2)" "$(med min 2)")"
+# the minimal tracer writes an uncompressed PPM: the same output, like for like
+echo "f64 (PPM)/minimal cpu=$(ratio "$(med sf64p 1)" "$(med min 1)") wall=$(ratio "$(med sf64p 2)" "$(med min 2)")"
 echo "q16/f64 (sphere) cpu=$(ratio "$(med sq16 1)" "$(med sf64 1)")"
 
 echo
