@@ -347,22 +347,23 @@ static inline int num_frac_gt(num n1, num d1, num n2, num d2)
  * the ray point closest to c. Division-free; the only squares are of
  * quantities already checked to be at most r (docs/numerics.md). */
 #if defined(NUM_MODE_q16)
-/* q16: the same arithmetic on exact 64-bit intermediates. Differences of
- * Q16.16 values stay below 2^33, products with a unit component below
- * 2^49 and squares of components at most r below 2^62, so nothing can
- * overflow and nothing needs a saturation check; where the saturating
- * forms do not saturate, every value and every decision is the same. */
+/* q16: the same test on exact 64-bit intermediates. Differences of Q16.16
+ * values stay below 2^33 and products with a unit component below 2^49, so
+ * the dot product is summed exactly and rounded once; squares of
+ * components at most r are below 2^62, so |q|^2 is summed exactly in
+ * unsigned 64 bits and compared with r^2 without rounding. Nothing can
+ * overflow and nothing needs a saturation check. */
 VEC_HOT int vec3_sphere_miss(vec3 c, num r, vec3 o, vec3 d, num tmin, num tmax, num *tc)
 {
     int64_t ox = (int64_t)c.x - o.x, oy = (int64_t)c.y - o.y, oz = (int64_t)c.z - o.z;
-    int64_t t = fx_shr_round(ox * d.x / 4 + oy * d.y / 4 + oz * d.z / 4, 14), qx, qy, qz;
+    int64_t t = fx_shr_round(ox * d.x + oy * d.y + oz * d.z, 16), qx, qy, qz;
     if (t + r < tmin || t - r > tmax)
         return 1;
     qx = ox - fx_shr_round(d.x * t, 16);
     qy = oy - fx_shr_round(d.y * t, 16);
     qz = oz - fx_shr_round(d.z * t, 16);
     if (qx > r || qx < -(int64_t)r || qy > r || qy < -(int64_t)r || qz > r || qz < -(int64_t)r
-        || fx_shr_round(qx * qx / 4 + qy * qy / 4 + qz * qz / 4, 14) > fx_shr_round((int64_t)r * r, 16))
+        || (uint64_t)(qx * qx) + (uint64_t)(qy * qy) + (uint64_t)(qz * qz) > (uint64_t)((int64_t)r * r))
         return 1;
     *tc = fx16_sat(t);
     return 0;
