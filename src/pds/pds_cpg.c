@@ -36,7 +36,7 @@
 #include "pds/pds_ring.h"
 #include "util/mem.h"
 
-enum { K_BOX, K_ELLIPSE, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
+enum { K_BOX, K_ELLIPSE, K_POLY, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
 
 #define PDS_CPG_ACCEL_MIN 8      /* operands from which a union is indexed */
 #define PDS_CPG_CELL_SCAN 24     /* longer cell lists use the hierarchy */
@@ -44,15 +44,22 @@ enum { K_BOX, K_ELLIPSE, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
 #define PDS_CPG_NO_ACCEL UINT32_MAX
 #define PDS_CPG_BVH_LEAF UINT32_MAX
 
+/* A node. An ellipse's map and a small polygon's vertices follow their node
+ * in the node array itself (the slots up to `end`), so that the test of a
+ * candidate reads adjacent memory, in the same spatial order as the nodes;
+ * only the rare large polygons and nested PDSs live in side arrays. */
 typedef struct cnode {
     num box[4];          /* closed bounding box; box[0] > box[2] when empty */
     int32_t attr;        /* leaf id, or operator override / PDS_INHERIT */
-    uint32_t end;        /* one past the last node of this subtree */
-    uint32_t shape;      /* ellipses, rings, nest index; union: accel or NO_ACCEL */
-    uint32_t prio;       /* operand position in an indexed union (its memory
-                            order is spatial, see pds_cpg_emit_union) */
+    uint32_t end;        /* one past the last slot of this subtree */
+    uint32_t shape;      /* K_POLY: vertex count; rings, nest index; union:
+                            accel or NO_ACCEL */
     uint8_t kind;
 } cnode;
+
+/* K_POLY: polygons of at most PDS_RING_LEAF edges, whose strip tree would
+ * be a single node with the leaf's box: their closed vertex list alone. */
+#define PDS_CPG_POLY_MAX PDS_RING_LEAF
 
 typedef struct ellipse {
     num m[4];            /* disk_from_root linear part (row-major) */
@@ -86,7 +93,6 @@ typedef struct accel {
 
 typedef struct cpg {
     cnode *nodes; size_t nnodes, cap;
-    ellipse *ell; size_t nell, cap_ell;
     NS(pds_ring) *rings; size_t nrings, cap_rings;
     nested *nest; size_t nnest, cap_nest;
     accel *acc; size_t nacc, cap_acc;
@@ -102,6 +108,9 @@ typedef struct builder {
     const pds_def *def;
     double (*m)[6];      /* root_from_node placements */
     cpg *c;
+    uint32_t *prio;      /* by node: operand position in an indexed union
+                            (whose memory order is spatial) */
+    size_t cap_prio;
 } builder;
 
 static void pds_cpg_release(void *impl)
@@ -122,7 +131,6 @@ static void pds_cpg_release(void *impl)
         mem_free(c->acc[i].ops);
     }
     mem_free(c->acc);
-    mem_free(c->ell);
     mem_free(c->nodes);
     mem_free(c);
 }
@@ -139,6 +147,21 @@ static long pds_cpg_push(cpg *c, uint8_t kind, int32_t attr)
     n->shape = PDS_CPG_NO_ACCEL;
     return (long)c->nnodes++;
 }
+
+/* Appends the shape data of the leaf just pushed, as whole slots after it. */
+static int pds_cpg_payload(cpg *c, const void *data, size_t bytes)
+{
+    size_t slots = (bytes + sizeof *c->nodes - 1) / sizeof *c->nodes;
+    if (mem_grow((void **)&c->nodes, &c->cap, c->nnodes + slots, sizeof *c->nodes))
+        return -1;
+    memset(&c->nodes[c->nnodes], 0, slots * sizeof *c->nodes);
+    memcpy(&c->nodes[c->nnodes], data, bytes);
+    c->nnodes += slots;
+    return 0;
+}
+
+/* The shape data of leaf n (pds_cpg_payload). */
+static const void *pds_cpg_data(const cnode *n) { return n + 1; }
 
 static void pds_cpg_box_set(num box[4], double u0, double v0, double u1, double v1)
 {
@@ -197,6 +220,33 @@ static int pds_cpg_emit(builder *b, size_t di);
 static int pds_cpg_leaf(builder *b, size_t di);
 static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t attr);
 
+/* A K_POLY leaf over the closed polyline pts[2 n] (freed here). */
+static int pds_cpg_poly(cpg *c, double *pts, size_t n, int32_t attr)
+{
+    num *uv = NS(pds_ring_vertices)(pts, n);
+    long me = uv ? pds_cpg_push(c, K_POLY, attr) : -1;
+    size_t i;
+    int rc = -1;
+    mem_free(pts);
+    if (me >= 0) {
+        cnode *nd = &c->nodes[me];
+        nd->shape = (uint32_t)n;
+        nd->box[0] = nd->box[2] = uv[0];
+        nd->box[1] = nd->box[3] = uv[1];
+        for (i = 1; i < n; i++) {
+            nd->box[0] = num_min(nd->box[0], uv[2 * i]);
+            nd->box[2] = num_max(nd->box[2], uv[2 * i]);
+            nd->box[1] = num_min(nd->box[1], uv[2 * i + 1]);
+            nd->box[3] = num_max(nd->box[3], uv[2 * i + 1]);
+        }
+        rc = pds_cpg_payload(c, uv, (n + 1) * 2 * sizeof *uv);
+        if (rc == 0)
+            c->nodes[me].end = (uint32_t)c->nnodes;
+    }
+    mem_free(uv);
+    return rc;
+}
+
 static int pds_cpg_leaf(builder *b, size_t di)
 {
     const pds_cpg_node *dn = &b->def->cpg.nodes[di];
@@ -243,21 +293,19 @@ static int pds_cpg_leaf(builder *b, size_t di)
         double cu = m[0] * dn->p[0] + m[1] * dn->p[1] + m[2], cv = m[3] * dn->p[0] + m[4] * dn->p[1] + m[5];
         double det = a * d - bb * cc, eu = hypot(a, bb), ev = hypot(cc, d);
         double pad = 1.0 / 16384;   /* the exact test follows; keep the box conservative */
-        ellipse *e;
-        if (mem_grow((void **)&c->ell, &c->cap_ell, c->nell + 1, sizeof *c->ell))
-            return -1;
+        ellipse e;
+        e.m[0] = num_from_d(d / det);
+        e.m[1] = num_from_d(-bb / det);
+        e.m[2] = num_from_d(-cc / det);
+        e.m[3] = num_from_d(a / det);
+        e.c[0] = num_from_d(cu);
+        e.c[1] = num_from_d(cv);
         me = pds_cpg_push(c, K_ELLIPSE, dn->attr);
         if (me < 0)
             return -1;
-        c->nodes[me].shape = (uint32_t)c->nell;
-        e = &c->ell[c->nell++];
-        e->m[0] = num_from_d(d / det);
-        e->m[1] = num_from_d(-bb / det);
-        e->m[2] = num_from_d(-cc / det);
-        e->m[3] = num_from_d(a / det);
-        e->c[0] = num_from_d(cu);
-        e->c[1] = num_from_d(cv);
         pds_cpg_box_set(c->nodes[me].box, cu - eu - pad, cv - ev - pad, cu + eu + pad, cv + ev + pad);
+        if (pds_cpg_payload(c, &e, sizeof e))
+            return -1;
     } else {
         double corners[8], *pts;
         const double *src;
@@ -278,6 +326,8 @@ static int pds_cpg_leaf(builder *b, size_t di)
             pts[2 * i] = m[0] * src[2 * i] + m[1] * src[2 * i + 1] + m[2];
             pts[2 * i + 1] = m[3] * src[2 * i] + m[4] * src[2 * i + 1] + m[5];
         }
+        if (n <= PDS_CPG_POLY_MAX)
+            return pds_cpg_poly(c, pts, n, dn->attr);
         if (mem_grow((void **)&c->rings, &c->cap_rings, c->nrings + 1, sizeof *c->rings)) {
             mem_free(pts);
             return -1;
@@ -322,18 +372,19 @@ static int pds_cpg_keyed_cmp(const void *pa, const void *pb)
 }
 
 /* Builds the hierarchy over ks[0..n) (Morton order) at acc->h[acc->nh]. */
-static uint32_t pds_cpg_bvh_build(accel *acc, const cpg *c, const keyed *ks, size_t n)
+static uint32_t pds_cpg_bvh_build(accel *acc, const builder *b, const keyed *ks, size_t n)
 {
+    const cpg *c = b->c;
     uint32_t me = (uint32_t)acc->nh++;
     bvh *h = &acc->h[me];
     if (n == 1) {
         memcpy(h->box, c->nodes[ks[0].node].box, sizeof h->box);
-        h->minp = c->nodes[ks[0].node].prio;
+        h->minp = b->prio[ks[0].node];
         h->a = PDS_CPG_BVH_LEAF;
         h->b = ks[0].node;
     } else {
-        uint32_t l = pds_cpg_bvh_build(acc, c, ks, n / 2);
-        uint32_t r = pds_cpg_bvh_build(acc, c, ks + n / 2, n - n / 2);
+        uint32_t l = pds_cpg_bvh_build(acc, b, ks, n / 2);
+        uint32_t r = pds_cpg_bvh_build(acc, b, ks + n / 2, n - n / 2);
         h = &acc->h[me];
         memcpy(h->box, acc->h[l].box, sizeof h->box);
         pds_cpg_box_grow(h->box, acc->h[r].box);
@@ -406,8 +457,9 @@ static int pds_cpg_grid(accel *acc, const cpg *c, const uint32_t *ops, size_t n,
 }
 
 /* Indexes the operands of union node me (already emitted). */
-static int pds_cpg_index(cpg *c, uint32_t me)
+static int pds_cpg_index(const builder *b, uint32_t me)
 {
+    cpg *c = b->c;
     const cnode *u = &c->nodes[me];
     uint32_t *ops = NULL, j;
     keyed *ks = NULL;
@@ -457,7 +509,7 @@ static int pds_cpg_index(cpg *c, uint32_t me)
         for (i = 0; i < total; i++)
             by[i] = UINT32_MAX;
         for (i = 0; i < n; i++)
-            by[c->nodes[ops[i]].prio] = ops[i];
+            by[b->prio[ops[i]]] = ops[i];
         for (i = 0; i < total; i++)
             if (by[i] != UINT32_MAX)
                 ops[w++] = by[i];
@@ -482,7 +534,7 @@ static int pds_cpg_index(cpg *c, uint32_t me)
         if (!(acc->h = mem_calloc(2 * n - 1, sizeof *acc->h)))
             goto done;
         qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
-        pds_cpg_bvh_build(acc, c, ks, n);
+        pds_cpg_bvh_build(acc, b, ks, n);
     }
     c->nodes[me].shape = (uint32_t)c->nacc++;
     rc = 0;
@@ -554,10 +606,11 @@ static int pds_cpg_emit_spatial(builder *b, const size_t *kids, size_t n)
     }
     qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
     for (k = 0; k < n; k++) {
-        uint32_t at = (uint32_t)b->c->nnodes;
-        if (pds_cpg_emit(b, kids[ks[k].node]))
+        size_t at = b->c->nnodes;
+        if (pds_cpg_emit(b, kids[ks[k].node]) ||
+            mem_grow((void **)&b->prio, &b->cap_prio, at + 1, sizeof *b->prio))
             goto done;
-        b->c->nodes[at].prio = ks[k].node;
+        b->prio[at] = ks[k].node;
     }
     rc = 0;
 done:
@@ -590,7 +643,7 @@ static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t 
     for (j = (uint32_t)me + 1; j < c->nnodes; j = c->nodes[j].end)
         if (!pds_cpg_box_empty(c->nodes[j].box))
             pds_cpg_box_grow(c->nodes[me].box, c->nodes[j].box);
-    return n < PDS_CPG_ACCEL_MIN ? 0 : pds_cpg_index(c, (uint32_t)me);
+    return n < PDS_CPG_ACCEL_MIN ? 0 : pds_cpg_index(b, (uint32_t)me);
 }
 
 static int pds_cpg_emit(builder *b, size_t di)
@@ -660,6 +713,17 @@ done:
     return rc;
 }
 
+/* Gives back what mem_grow's doubling left unused: lookups never read it,
+ * but it is memory the structure holds. Keeps the block if realloc fails. */
+static void pds_cpg_trim(void **p, size_t *cap, size_t n, size_t elem)
+{
+    void *q;
+    if (n == 0 || n >= *cap || !(q = mem_realloc(*p, n * elem)))
+        return;
+    *p = q;
+    *cap = n;
+}
+
 static int pds_cpg_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     builder b;
@@ -668,6 +732,8 @@ static int pds_cpg_compile(const pds_def *def, const char *file, void **out, dia
     size_t nn = def->cpg.nnodes;
     b.def = def;
     b.c = c;
+    b.prio = NULL;
+    b.cap_prio = 0;
     b.m = mem_calloc(nn, sizeof *b.m);
     depth = mem_calloc(nn, sizeof *depth);
     if (!c || !b.m || !depth)
@@ -675,12 +741,18 @@ static int pds_cpg_compile(const pds_def *def, const char *file, void **out, dia
     pds_cpg_placements(def, b.m, depth);
     if (pds_cpg_emit(&b, def->cpg.root))
         goto oom;
+    pds_cpg_trim((void **)&c->nodes, &c->cap, c->nnodes, sizeof *c->nodes);
+    pds_cpg_trim((void **)&c->rings, &c->cap_rings, c->nrings, sizeof *c->rings);
+    pds_cpg_trim((void **)&c->nest, &c->cap_nest, c->nnest, sizeof *c->nest);
+    pds_cpg_trim((void **)&c->acc, &c->cap_acc, c->nacc, sizeof *c->acc);
     mem_free(b.m);
+    mem_free(b.prio);
     mem_free(depth);
     *out = c;
     return 0;
 oom:
     mem_free(b.m);
+    mem_free(b.prio);
     mem_free(depth);
     pds_cpg_release(c);
     return NS(pds_oom)(def, file, err);
@@ -731,7 +803,12 @@ static inline int pds_cpg_visit(const cpg *c, uint32_t k, num u, num v, int32_t 
     case K_BOX:
         break;
     case K_ELLIPSE:
-        if (!pds_cpg_ellipse_in(&c->ell[n->shape], u, v))
+        if (!pds_cpg_ellipse_in(pds_cpg_data(n), u, v))
+            return 0;
+        break;
+    case K_POLY:
+        ++*steps;   /* as the ring's single strip node would count */
+        if (!NS(pds_ring_edges)(pds_cpg_data(n), 0, n->shape, u, v))
             return 0;
         break;
     case K_RING:
@@ -830,7 +907,7 @@ static int32_t pds_cpg_locate(const void *impl, num u, num v, unsigned long *ste
 static size_t pds_cpg_bytes(const void *impl)
 {
     const cpg *c = impl;
-    size_t s = sizeof *c + c->cap * sizeof *c->nodes + c->cap_ell * sizeof *c->ell + c->cap_rings * sizeof *c->rings, i;
+    size_t s = sizeof *c + c->cap * sizeof *c->nodes + c->cap_rings * sizeof *c->rings, i;
     for (i = 0; i < c->nrings; i++)
         s += (c->rings[i].n + 1) * 2 * sizeof(num) +
              c->rings[i].nnodes * sizeof *c->rings[i].nodes;
