@@ -58,7 +58,8 @@ typedef struct cnode {
 } cnode;
 
 /* K_POLY: polygons of at most PDS_RING_LEAF edges, whose strip tree would
- * be a single node with the leaf's box: their closed vertex list alone. */
+ * be a single node with the leaf's box: their n vertices alone (the first
+ * not repeated: pds_ring_edges_open). */
 #define PDS_CPG_POLY_MAX PDS_RING_LEAF
 
 typedef struct ellipse {
@@ -81,10 +82,18 @@ typedef struct bvh {
     uint32_t minp, a, b;
 } bvh;
 
+/* A cell of the index: where its list starts in ops, and a copy of the
+ * list's first entry, so that a lookup whose first candidate decides it
+ * (most do) reads the cell table and the node, not the list as well. */
+typedef struct cellent {
+    uint32_t start, first;
+} cellent;
+
 typedef struct accel {
     bvh *h;              /* 2 n - 1 nodes, root first */
     size_t nh;
-    uint32_t *start;     /* gn * gn + 1 offsets into ops; NULL: no cell index */
+    cellent *cells;      /* gn * gn + 1 (the last one ends the lists); NULL:
+                            no cell index */
     uint32_t *ops;       /* operand node indices per cell, in operand order */
     size_t nops;
     double g0[2], gs[2]; /* cell of x = floor((x - g0) * gs), clamped */
@@ -127,7 +136,7 @@ static void pds_cpg_release(void *impl)
     mem_free(c->nest);
     for (i = 0; i < c->nacc; i++) {
         mem_free(c->acc[i].h);
-        mem_free(c->acc[i].start);
+        mem_free(c->acc[i].cells);
         mem_free(c->acc[i].ops);
     }
     mem_free(c->acc);
@@ -239,7 +248,7 @@ static int pds_cpg_poly(cpg *c, double *pts, size_t n, int32_t attr)
             nd->box[1] = num_min(nd->box[1], uv[2 * i + 1]);
             nd->box[3] = num_max(nd->box[3], uv[2 * i + 1]);
         }
-        rc = pds_cpg_payload(c, uv, (n + 1) * 2 * sizeof *uv);
+        rc = pds_cpg_payload(c, uv, n * 2 * sizeof *uv);
         if (rc == 0)
             c->nodes[me].end = (uint32_t)c->nnodes;
     }
@@ -410,7 +419,7 @@ static int pds_cpg_grid(accel *acc, const cpg *c, const uint32_t *ops, size_t n,
 {
     size_t total = 0, i, budget = 8 * n + (size_t)(gn * gn);
     long cx, cy, x0, x1, y0, y1, a;
-    uint32_t *fill;
+    uint32_t *fill, *start;
     for (a = 0; a < 2; a++) {
         double lo = fmax(0, num_to_d(box[a])), hi = fmin(1, num_to_d(box[a + 2]));
         acc->g0[a] = lo;
@@ -424,10 +433,12 @@ static int pds_cpg_grid(accel *acc, const cpg *c, const uint32_t *ops, size_t n,
         if (total > budget)
             return 1;
     }
-    acc->start = mem_calloc((size_t)(gn * gn + 1), sizeof *acc->start);
+    start = mem_calloc((size_t)(gn * gn + 1), sizeof *start);
+    acc->cells = mem_calloc((size_t)(gn * gn + 1), sizeof *acc->cells);
     acc->ops = mem_calloc(total ? total : 1, sizeof *acc->ops);
     fill = mem_calloc((size_t)(gn * gn), sizeof *fill);
-    if (!acc->start || !acc->ops || !fill) {
+    if (!start || !acc->cells || !acc->ops || !fill) {
+        mem_free(start);
         mem_free(fill);
         return -1;
     }
@@ -437,10 +448,10 @@ static int pds_cpg_grid(accel *acc, const cpg *c, const uint32_t *ops, size_t n,
         y0 = pds_cpg_cell(acc, 1, b[1]); y1 = pds_cpg_cell(acc, 1, b[3]);
         for (cy = y0; cy <= y1; cy++)
             for (cx = x0; cx <= x1; cx++)
-                acc->start[cy * gn + cx + 1]++;
+                start[cy * gn + cx + 1]++;
     }
     for (i = 0; i < (size_t)(gn * gn); i++)
-        acc->start[i + 1] += acc->start[i];
+        start[i + 1] += start[i];
     for (i = 0; i < n; i++) {       /* in operand order: lists come out ascending */
         const num *b = c->nodes[ops[i]].box;
         x0 = pds_cpg_cell(acc, 0, b[0]); x1 = pds_cpg_cell(acc, 0, b[2]);
@@ -448,10 +459,15 @@ static int pds_cpg_grid(accel *acc, const cpg *c, const uint32_t *ops, size_t n,
         for (cy = y0; cy <= y1; cy++)
             for (cx = x0; cx <= x1; cx++) {
                 long cell = cy * gn + cx;
-                acc->ops[acc->start[cell] + fill[cell]++] = ops[i];
+                acc->ops[start[cell] + fill[cell]++] = ops[i];
             }
     }
+    for (i = 0; i <= (size_t)(gn * gn); i++) {
+        acc->cells[i].start = start[i];
+        acc->cells[i].first = start[i] < total ? acc->ops[start[i]] : 0;
+    }
     acc->nops = total;
+    mem_free(start);
     mem_free(fill);
     return 0;
 }
@@ -529,7 +545,7 @@ static int pds_cpg_index(const builder *b, uint32_t me)
     /* The hierarchy, unless every cell is short enough to scan (it would
      * never be read, and a lookup touches less memory without it). */
     for (i = 0, j = 0; acc->gn && i < (size_t)(acc->gn * acc->gn); i++)
-        j = acc->start[i + 1] - acc->start[i] > j ? acc->start[i + 1] - acc->start[i] : j;
+        j = acc->cells[i + 1].start - acc->cells[i].start > j ? acc->cells[i + 1].start - acc->cells[i].start : j;
     if (!acc->gn || j > PDS_CPG_CELL_SCAN) {
         if (!(acc->h = mem_calloc(2 * n - 1, sizeof *acc->h)))
             goto done;
@@ -541,7 +557,7 @@ static int pds_cpg_index(const builder *b, uint32_t me)
 done:
     if (rc) {
         mem_free(acc->h);
-        mem_free(acc->start);
+        mem_free(acc->cells);
         mem_free(acc->ops);
     }
     mem_free(ops);
@@ -808,7 +824,7 @@ static inline int pds_cpg_visit(const cpg *c, uint32_t k, num u, num v, int32_t 
         break;
     case K_POLY:
         ++*steps;   /* as the ring's single strip node would count */
-        if (!NS(pds_ring_edges)(pds_cpg_data(n), 0, n->shape, u, v))
+        if (!NS(pds_ring_edges_open)(pds_cpg_data(n), n->shape, u, v))
             return 0;
         break;
     case K_RING:
@@ -832,10 +848,15 @@ static int pds_cpg_indexed(const cpg *c, const accel *acc, num u, num v, int32_t
     int top = 0;
     if (acc->gn) {
         long cell = pds_cpg_cell(acc, 1, v) * acc->gn + pds_cpg_cell(acc, 0, u);
-        uint32_t s = acc->start[cell], e = acc->start[cell + 1];
+        const cellent *ce = &acc->cells[cell];
+        uint32_t s = ce[0].start, e = ce[1].start;
         ++*steps;
         if (e - s <= PDS_CPG_CELL_SCAN) {
-            for (; s < e; s++)
+            if (s == e)
+                return 0;
+            if (pds_cpg_visit(c, ce->first, u, v, attr, steps))
+                return 1;
+            for (s++; s < e; s++)
                 if (pds_cpg_visit(c, acc->ops[s], u, v, attr, steps))
                     return 1;
             return 0;
@@ -917,7 +938,7 @@ static size_t pds_cpg_bytes(const void *impl)
     s += c->cap_acc * sizeof *c->acc;
     for (i = 0; i < c->nacc; i++)
         s += c->acc[i].nh * sizeof *c->acc[i].h +
-             (c->acc[i].gn ? (size_t)(c->acc[i].gn * c->acc[i].gn + 1) * sizeof(uint32_t) + c->acc[i].nops * sizeof(uint32_t) : 0);
+             (c->acc[i].gn ? (size_t)(c->acc[i].gn * c->acc[i].gn + 1) * sizeof(cellent) + c->acc[i].nops * sizeof(uint32_t) : 0);
     return s;
 }
 
