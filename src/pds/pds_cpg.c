@@ -43,6 +43,7 @@ enum { K_BOX, K_ELLIPSE, K_POLY, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
 #define PDS_CPG_GRID_MAX 512     /* cells a side */
 #define PDS_CPG_NO_ACCEL UINT32_MAX
 #define PDS_CPG_BVH_LEAF UINT32_MAX
+#define PDS_CPG_LINE 64          /* cache line bytes the node array is aligned to */
 
 /* A node. An ellipse's map and a small polygon's vertices follow their node
  * in the node array itself (the slots up to `end`), so that the test of a
@@ -102,6 +103,8 @@ typedef struct accel {
 
 typedef struct cpg {
     cnode *nodes; size_t nnodes, cap;
+    void *block;         /* the compiled node array's allocation (nodes sits
+                            in it at a cache-line boundary); NULL while building */
     NS(pds_ring) *rings; size_t nrings, cap_rings;
     nested *nest; size_t nnest, cap_nest;
     accel *acc; size_t nacc, cap_acc;
@@ -140,7 +143,7 @@ static void pds_cpg_release(void *impl)
         mem_free(c->acc[i].ops);
     }
     mem_free(c->acc);
-    mem_free(c->nodes);
+    mem_free(c->block ? c->block : c->nodes);
     mem_free(c);
 }
 
@@ -729,6 +732,23 @@ done:
     return rc;
 }
 
+/* Moves the node array to a block of exactly its size, starting at a
+ * cache-line boundary: a node (32 bytes in q16) then never straddles two
+ * lines. Keeps the growing array if memory runs out. */
+static void pds_cpg_settle(cpg *c)
+{
+    size_t bytes = c->nnodes * sizeof *c->nodes;
+    unsigned char *blk = mem_alloc(bytes + PDS_CPG_LINE - 1), *at;
+    if (!blk)
+        return;
+    at = blk + (PDS_CPG_LINE - (uintptr_t)blk % PDS_CPG_LINE) % PDS_CPG_LINE;
+    memcpy(at, c->nodes, bytes);
+    mem_free(c->nodes);
+    c->nodes = (cnode *)(void *)at;
+    c->cap = c->nnodes;
+    c->block = blk;
+}
+
 /* Gives back what mem_grow's doubling left unused: lookups never read it,
  * but it is memory the structure holds. Keeps the block if realloc fails. */
 static void pds_cpg_trim(void **p, size_t *cap, size_t n, size_t elem)
@@ -757,7 +777,7 @@ static int pds_cpg_compile(const pds_def *def, const char *file, void **out, dia
     pds_cpg_placements(def, b.m, depth);
     if (pds_cpg_emit(&b, def->cpg.root))
         goto oom;
-    pds_cpg_trim((void **)&c->nodes, &c->cap, c->nnodes, sizeof *c->nodes);
+    pds_cpg_settle(c);
     pds_cpg_trim((void **)&c->rings, &c->cap_rings, c->nrings, sizeof *c->rings);
     pds_cpg_trim((void **)&c->nest, &c->cap_nest, c->nnest, sizeof *c->nest);
     pds_cpg_trim((void **)&c->acc, &c->cap_acc, c->nacc, sizeof *c->acc);
@@ -928,7 +948,7 @@ static int32_t pds_cpg_locate(const void *impl, num u, num v, unsigned long *ste
 static size_t pds_cpg_bytes(const void *impl)
 {
     const cpg *c = impl;
-    size_t s = sizeof *c + c->cap * sizeof *c->nodes + c->cap_rings * sizeof *c->rings, i;
+    size_t s = sizeof *c + c->cap * sizeof *c->nodes + (c->block ? PDS_CPG_LINE - 1 : 0) + c->cap_rings * sizeof *c->rings, i;
     for (i = 0; i < c->nrings; i++)
         s += (c->rings[i].n + 1) * 2 * sizeof(num) +
              c->rings[i].nnodes * sizeof *c->rings[i].nodes;
