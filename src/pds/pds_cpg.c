@@ -3,9 +3,11 @@
  * root (u,v) coordinates -> locate.
  *
  * Compilation bakes every placement into the leaves: an axis-aligned
- * rectangle becomes its box, any other rectangle or polygon a pds_ring, an
- * ellipse the affine map that takes it to the unit disk, a nested PDS its
- * own compiled structure and the map into its unit square. Each node keeps its
+ * rectangle becomes its box, a polygon of up to 8 edges (or another
+ * rectangle) its vertex list, a larger one a pds_ring, an ellipse the affine
+ * map that takes it to the unit disk, a nested PDS its own compiled
+ * structure and the map into its unit square. Vertex lists and ellipse maps
+ * are stored in the node array right after their node. Each node keeps its
  * bounding box; a point outside a node's box is outside the whole subtree.
  *
  * Cost does not depend on the operand order. Chains of one operator are
@@ -24,9 +26,9 @@
  *     wins. Cells with long lists use the hierarchy instead (it is built
  *     only when some cell needs it).
  * The operands of such a union are laid out in memory in the Morton order
- * of their positions, each keeping its operand position (prio) for the
- * priority rule, so that nearby lookups touch nearby memory whatever the
- * operand order. Priority rules are in docs/pds.md. */
+ * of their positions (the builder keeps each one's operand position, prio,
+ * for the priority rule), so that nearby lookups touch nearby memory
+ * whatever the operand order. Priority rules are in docs/pds.md. */
 #include "pds/pds_kind.h"
 #include <math.h>
 #include <stdlib.h>
@@ -52,7 +54,8 @@ enum { K_BOX, K_ELLIPSE, K_POLY, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
 typedef struct cnode {
     num box[4];          /* closed bounding box; box[0] > box[2] when empty */
     int32_t attr;        /* leaf id, or operator override / PDS_INHERIT */
-    uint32_t end;        /* one past the last slot of this subtree */
+    uint32_t end;        /* one past the last slot of this subtree (at most
+                            4 PDS_MAX_NODES slots: a node and 3 of shape data) */
     uint32_t shape;      /* K_POLY: vertex count; rings, nest index; union:
                             accel or NO_ACCEL */
     uint8_t kind;
@@ -84,8 +87,9 @@ typedef struct bvh {
 } bvh;
 
 /* A cell of the index: where its list starts in ops, and a copy of the
- * list's first entry, so that a lookup whose first candidate decides it
- * (most do) reads the cell table and the node, not the list as well. */
+ * list's first entry (unused when the list is empty), so that a lookup whose
+ * first candidate decides it (most do) reads the cell table and the node,
+ * not the list as well. */
 typedef struct cellent {
     uint32_t start, first;
 } cellent;
