@@ -7,7 +7,10 @@
  * shared; the times are the process's CPU time). Output: one line per case,
  *     kind  size  mode  lookups_per_second  ns_per_lookup  mean_steps  bytes
  * mean_steps is the mean number of nodes / cells / edges a lookup visited.
- * Usage: pds_bench [--modes q16,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves] */
+ * --lookups K replaces the timing by exactly K lookups per case, once (for
+ * cachegrind and callgrind, whose counts are deterministic).
+ * Usage: pds_bench [--modes q16,f64] [--seconds S] [--quick] [--scan]
+ *        [--cpg|--curves] [--n LIST] [--orders LIST] [--lookups K] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,6 +29,8 @@ static const pds_mode_ops *const all_modes[] = {
 static int use_mode[4] = { 1, 0, 0, 1 };
 static double min_seconds = 0.3;
 static int scan_order;       /* 1: points in raster order, like a renderer */
+static unsigned long fixed_lookups;   /* --lookups: 0 = timed */
+static const char *cpg_sizes, *cpg_order_list;   /* --n, --orders: NULL = all */
 static const scene_loc L0 = { 0, 0 };
 
 static uint64_t rng = 0x243F6A8885A308D3ull;
@@ -73,6 +78,20 @@ static void run(const char *kind, const char *size, const pds_def *def)
             fprintf(stderr, "pds_bench: %s %s: %s\n", kind, size, buf);
             exit(1);
         }
+        if (fixed_lookups) {
+            size_t left = (size_t)fixed_lookups;
+            t0 = now();
+            for (; left >= NPTS; left -= NPTS)
+                m->locate_many(p, uv, NPTS, 1, out);
+            if (left)
+                m->locate_many(p, uv, left, 1, out);
+            t = now() - t0;
+            printf("%-10s %-16s %-4s %12lu %8.1f %8s %10zu\n", kind, size, m->mode, fixed_lookups,
+                   t * 1e9 / (double)fixed_lookups, "-", m->bytes(p));
+            fflush(stdout);
+            m->free(p);
+            continue;
+        }
         for (;;) {
             t0 = now();
             m->locate_many(p, uv, NPTS, reps, out);
@@ -102,6 +121,33 @@ static void run(const char *kind, const char *size, const pds_def *def)
  * n-ary union, listed in spatial (row by row), reverse or shuffled order:
  * the order decides priority, and must not change the cost. */
 static const char *const cpg_orders[3] = { "spatial", "reverse", "shuffled" };
+
+/* Whether n is in the comma-separated list (NULL: every n). */
+static int listed(const char *list, long n)
+{
+    char *end;
+    if (!list)
+        return 1;
+    while (list && *list) {
+        if (strtol(list, &end, 10) == n && (*end == ',' || !*end))
+            return 1;
+        list = strchr(list, ',');
+        list = list ? list + 1 : NULL;
+    }
+    return 0;
+}
+
+static int listed_name(const char *list, const char *name)
+{
+    size_t k = strlen(name);
+    const char *s;
+    if (!list)
+        return 1;
+    for (s = strstr(list, name); s; s = strstr(s + 1, name))
+        if ((s == list || s[-1] == ',') && (s[k] == ',' || !s[k]))
+            return 1;
+    return 0;
+}
 static void bench_cpg(int nx, int ny, int order)
 {
     pds_def d;
@@ -109,6 +155,10 @@ static void bench_cpg(int nx, int ny, int order)
     double cw = 1.0 / nx, ch = 1.0 / ny;
     int i, j, k;
     char size[32];
+    if (!listed(cpg_sizes, nx * ny) || !listed_name(cpg_order_list, cpg_orders[order])) {
+        mem_free(kids);
+        return;
+    }
     pds_def_init(&d, PDS_CPG, L0);
     for (j = 0; j < ny; j++)
         for (i = 0; i < nx; i++) {
@@ -249,6 +299,8 @@ static void bench_curve(int n, int bspline, int strips)
 
 int main(int argc, char **argv)
 {
+    static const char usage[] = "pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves]\n"
+                                "       [--n LIST] [--orders LIST] [--lookups K]";
     int i, quick = 0, only = 0;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--modes") && i + 1 < argc) {
@@ -264,22 +316,32 @@ int main(int argc, char **argv)
             scan_order = 1;
         else if (!strcmp(argv[i], "--cpg"))
             only = 1;
+        else if (!strcmp(argv[i], "--n") && i + 1 < argc)
+            cpg_sizes = argv[++i];
+        else if (!strcmp(argv[i], "--orders") && i + 1 < argc)
+            cpg_order_list = argv[++i];
+        else if (!strcmp(argv[i], "--lookups") && i + 1 < argc)
+            fixed_lookups = strtoul(argv[++i], NULL, 10);
         else if (!strcmp(argv[i], "--curves"))
             only = 2;
         else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves]\n"
+            printf("usage: %s\n"
                    "Lookup rates of every PDS kind on one core.\n"
                    "  --modes LIST  numeric modes to measure (default q16,f64)\n"
                    "  --seconds S   minimum timed run per case and round (default 0.3)\n"
                    "  --quick       skip the largest size of each kind\n"
                    "  --cpg         CPG only (N = 10..100,000 in three operand orders)\n"
                    "  --curves      curves only (box hierarchy and strip trees)\n"
+                   "  --n LIST      CPG sizes to run, e.g. 10,10000 (default all)\n"
+                   "  --orders LIST CPG operand orders: spatial,reverse,shuffled (default all)\n"
+                   "  --lookups K   exactly K lookups per case, once, instead of the timed\n"
+                   "                rounds (deterministic counts under cachegrind)\n"
                    "  --scan        points in raster order (256 x 256 pixel centres, row by\n"
                    "                row, as a renderer asks) instead of 65536 random points\n"
-                   "Each case runs three rounds and reports the fastest.\n");
+                   "Each case runs three rounds and reports the fastest.\n", usage);
             return 0;
         } else {
-            fprintf(stderr, "usage: pds_bench [--modes q16,q32,f32,f64] [--seconds S] [--quick] [--scan] [--cpg|--curves]\n");
+            fprintf(stderr, "usage: %s\n", usage);
             return 2;
         }
     }

@@ -3,56 +3,57 @@
  * root (u,v) coordinates -> locate.
  *
  * Compilation bakes every placement into the leaves: an axis-aligned
- * rectangle becomes its box, any other rectangle or polygon a pds_ring, an
- * ellipse the affine map that takes it to the unit disk, a nested PDS its
- * own compiled structure and the map into its unit square. Each node keeps its
+ * rectangle becomes its box, a polygon of up to 8 edges (or another
+ * rectangle) its vertex list, a larger one a pds_ring, an ellipse the affine
+ * map that takes it to the unit disk, a nested PDS its own compiled
+ * structure and the map into its unit square. Vertex lists and ellipse maps
+ * are stored in the node array right after their node. Each node keeps its
  * bounding box; a point outside a node's box is outside the whole subtree.
  *
  * Cost does not depend on the operand order. Chains of one operator are
  * flattened first (UNION(a, UNION(b, c)) is UNION(a, b, c) when the inner
  * node inherits ids; a difference's subtrahends form one union whatever
- * their ids). A union of PDS_CPG_ACCEL_MIN or more operands then gets
- *   - a bounding hierarchy over its operands, built in space (Morton order
- *     of the box centres), each node keeping the lowest operand position
- *     (prio) below it: a lookup keeps the best (lowest) position found so far and
- *     skips every subtree that cannot beat it, so the first operand in the
- *     list that contains the point wins exactly as in a linear scan;
- *   - a cell index over the union's box (clipped to the unit square): per
- *     cell, the operands whose boxes meet it, in operand order. The cell of
- *     a coordinate is a monotone function of it, so a box and every point in
- *     it agree on the cells; the first listed operand containing the point
- *     wins. Cells with long lists use the hierarchy instead (it is built
- *     only when some cell needs it).
- * The operands of such a union are laid out in memory in the Morton order
- * of their positions, each keeping its operand position (prio) for the
- * priority rule, so that nearby lookups touch nearby memory whatever the
- * operand order. Priority rules are in docs/pds.md. */
+ * their ids). A union of PDS_CPG_ACCEL_MIN or more operands then gets an
+ * index (pds_cpg_index.h: a cell grid listing candidate operands in operand
+ * order, and a priority hierarchy where cells overflow), so the first
+ * operand in the list that contains the point wins exactly as in a linear
+ * scan. The operands of such a union are laid out in memory in the Morton order
+ * of their positions (the builder keeps each one's operand position, prio,
+ * for the priority rule), so that nearby lookups touch nearby memory
+ * whatever the operand order. Priority rules are in docs/pds.md. */
 #include "pds/pds_kind.h"
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include "pds/pds.h"
+#include "pds/pds_cpg_index.h"
 #include "pds/pds_num.h"
 #include "pds/pds_ring.h"
 #include "util/mem.h"
 
-enum { K_BOX, K_ELLIPSE, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
+enum { K_BOX, K_ELLIPSE, K_POLY, K_RING, K_NESTED, K_UNION, K_INTER, K_DIFF };
 
 #define PDS_CPG_ACCEL_MIN 8      /* operands from which a union is indexed */
-#define PDS_CPG_CELL_SCAN 24     /* longer cell lists use the hierarchy */
-#define PDS_CPG_GRID_MAX 512     /* cells a side */
 #define PDS_CPG_NO_ACCEL UINT32_MAX
-#define PDS_CPG_BVH_LEAF UINT32_MAX
+#define PDS_CPG_LINE 64          /* cache line bytes the node array is aligned to */
 
+/* A node. An ellipse's map and a small polygon's vertices follow their node
+ * in the node array itself (the slots up to `end`), so that the test of a
+ * candidate reads adjacent memory, in the same spatial order as the nodes;
+ * only the rare large polygons and nested PDSs live in side arrays. */
 typedef struct cnode {
     num box[4];          /* closed bounding box; box[0] > box[2] when empty */
     int32_t attr;        /* leaf id, or operator override / PDS_INHERIT */
-    uint32_t end;        /* one past the last node of this subtree */
-    uint32_t shape;      /* ellipses, rings, nest index; union: accel or NO_ACCEL */
-    uint32_t prio;       /* operand position in an indexed union (its memory
-                            order is spatial, see pds_cpg_emit_union) */
+    uint32_t end;        /* one past the last slot of this subtree (at most
+                            4 PDS_MAX_NODES slots: a node and 3 of shape data) */
+    uint32_t shape;      /* K_POLY: vertex count; rings, nest index; union:
+                            accel or NO_ACCEL */
     uint8_t kind;
 } cnode;
+
+/* K_POLY: polygons of at most PDS_RING_LEAF edges, whose strip tree would
+ * be a single node with the leaf's box: their n vertices alone (the first
+ * not repeated: pds_ring_edges_open). */
+#define PDS_CPG_POLY_MAX PDS_RING_LEAF
 
 typedef struct ellipse {
     num m[4];            /* disk_from_root linear part (row-major) */
@@ -66,30 +67,13 @@ typedef struct nested {
     NS(pds) *pds;
 } nested;
 
-/* Hierarchy node: box of the operands below, the lowest of their operand
- * positions (prio), children a, b, or a == PDS_CPG_BVH_LEAF and b the
- * operand's node index. */
-typedef struct bvh {
-    num box[4];
-    uint32_t minp, a, b;
-} bvh;
-
-typedef struct accel {
-    bvh *h;              /* 2 n - 1 nodes, root first */
-    size_t nh;
-    uint32_t *start;     /* gn * gn + 1 offsets into ops; NULL: no cell index */
-    uint32_t *ops;       /* operand node indices per cell, in operand order */
-    size_t nops;
-    double g0[2], gs[2]; /* cell of x = floor((x - g0) * gs), clamped */
-    long gn;
-} accel;
-
 typedef struct cpg {
     cnode *nodes; size_t nnodes, cap;
-    ellipse *ell; size_t nell, cap_ell;
+    void *block;         /* the compiled node array's allocation (nodes sits
+                            in it at a cache-line boundary); NULL while building */
     NS(pds_ring) *rings; size_t nrings, cap_rings;
     nested *nest; size_t nnest, cap_nest;
-    accel *acc; size_t nacc, cap_acc;
+    NS(pds_cpg_index) *acc; size_t nacc, cap_acc;
 } cpg;
 
 /* Operand lists of definition nodes, collected while flattening. */
@@ -102,6 +86,9 @@ typedef struct builder {
     const pds_def *def;
     double (*m)[6];      /* root_from_node placements */
     cpg *c;
+    uint32_t *prio;      /* by node: operand position in an indexed union
+                            (whose memory order is spatial) */
+    size_t cap_prio;
 } builder;
 
 static void pds_cpg_release(void *impl)
@@ -116,14 +103,10 @@ static void pds_cpg_release(void *impl)
     for (i = 0; i < c->nnest; i++)
         NS(pds_free)(c->nest[i].pds);
     mem_free(c->nest);
-    for (i = 0; i < c->nacc; i++) {
-        mem_free(c->acc[i].h);
-        mem_free(c->acc[i].start);
-        mem_free(c->acc[i].ops);
-    }
+    for (i = 0; i < c->nacc; i++)
+        NS(pds_cpg_index_free)(&c->acc[i]);
     mem_free(c->acc);
-    mem_free(c->ell);
-    mem_free(c->nodes);
+    mem_free(c->block ? c->block : c->nodes);
     mem_free(c);
 }
 
@@ -140,6 +123,21 @@ static long pds_cpg_push(cpg *c, uint8_t kind, int32_t attr)
     return (long)c->nnodes++;
 }
 
+/* Appends the shape data of the leaf just pushed, as whole slots after it. */
+static int pds_cpg_payload(cpg *c, const void *data, size_t bytes)
+{
+    size_t slots = (bytes + sizeof *c->nodes - 1) / sizeof *c->nodes;
+    if (mem_grow((void **)&c->nodes, &c->cap, c->nnodes + slots, sizeof *c->nodes))
+        return -1;
+    memset(&c->nodes[c->nnodes], 0, slots * sizeof *c->nodes);
+    memcpy(&c->nodes[c->nnodes], data, bytes);
+    c->nnodes += slots;
+    return 0;
+}
+
+/* The shape data of leaf n (pds_cpg_payload). */
+static const void *pds_cpg_data(const cnode *n) { return n + 1; }
+
 static void pds_cpg_box_set(num box[4], double u0, double v0, double u1, double v1)
 {
     box[0] = num_from_d(u0); box[1] = num_from_d(v0);
@@ -147,14 +145,6 @@ static void pds_cpg_box_set(num box[4], double u0, double v0, double u1, double 
 }
 
 static int pds_cpg_box_empty(const num box[4]) { return box[0] > box[2] || box[1] > box[3]; }
-
-static void pds_cpg_box_grow(num box[4], const num k[4])
-{
-    box[0] = num_min(box[0], k[0]);
-    box[1] = num_min(box[1], k[1]);
-    box[2] = num_max(box[2], k[2]);
-    box[3] = num_max(box[3], k[3]);
-}
 
 static void pds_cpg_box_clear(num box[4])
 {
@@ -196,6 +186,33 @@ static int pds_cpg_flatten(const pds_cpg *d, size_t di, pds_cpg_op op, int ids, 
 static int pds_cpg_emit(builder *b, size_t di);
 static int pds_cpg_leaf(builder *b, size_t di);
 static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t attr);
+
+/* A K_POLY leaf over the closed polyline pts[2 n] (freed here). */
+static int pds_cpg_poly(cpg *c, double *pts, size_t n, int32_t attr)
+{
+    num *uv = NS(pds_ring_vertices)(pts, n);
+    long me = uv ? pds_cpg_push(c, K_POLY, attr) : -1;
+    size_t i;
+    int rc = -1;
+    mem_free(pts);
+    if (me >= 0) {
+        cnode *nd = &c->nodes[me];
+        nd->shape = (uint32_t)n;
+        nd->box[0] = nd->box[2] = uv[0];
+        nd->box[1] = nd->box[3] = uv[1];
+        for (i = 1; i < n; i++) {
+            nd->box[0] = num_min(nd->box[0], uv[2 * i]);
+            nd->box[2] = num_max(nd->box[2], uv[2 * i]);
+            nd->box[1] = num_min(nd->box[1], uv[2 * i + 1]);
+            nd->box[3] = num_max(nd->box[3], uv[2 * i + 1]);
+        }
+        rc = pds_cpg_payload(c, uv, n * 2 * sizeof *uv);
+        if (rc == 0)
+            c->nodes[me].end = (uint32_t)c->nnodes;
+    }
+    mem_free(uv);
+    return rc;
+}
 
 static int pds_cpg_leaf(builder *b, size_t di)
 {
@@ -243,21 +260,19 @@ static int pds_cpg_leaf(builder *b, size_t di)
         double cu = m[0] * dn->p[0] + m[1] * dn->p[1] + m[2], cv = m[3] * dn->p[0] + m[4] * dn->p[1] + m[5];
         double det = a * d - bb * cc, eu = hypot(a, bb), ev = hypot(cc, d);
         double pad = 1.0 / 16384;   /* the exact test follows; keep the box conservative */
-        ellipse *e;
-        if (mem_grow((void **)&c->ell, &c->cap_ell, c->nell + 1, sizeof *c->ell))
-            return -1;
+        ellipse e;
+        e.m[0] = num_from_d(d / det);
+        e.m[1] = num_from_d(-bb / det);
+        e.m[2] = num_from_d(-cc / det);
+        e.m[3] = num_from_d(a / det);
+        e.c[0] = num_from_d(cu);
+        e.c[1] = num_from_d(cv);
         me = pds_cpg_push(c, K_ELLIPSE, dn->attr);
         if (me < 0)
             return -1;
-        c->nodes[me].shape = (uint32_t)c->nell;
-        e = &c->ell[c->nell++];
-        e->m[0] = num_from_d(d / det);
-        e->m[1] = num_from_d(-bb / det);
-        e->m[2] = num_from_d(-cc / det);
-        e->m[3] = num_from_d(a / det);
-        e->c[0] = num_from_d(cu);
-        e->c[1] = num_from_d(cv);
         pds_cpg_box_set(c->nodes[me].box, cu - eu - pad, cv - ev - pad, cu + eu + pad, cv + ev + pad);
+        if (pds_cpg_payload(c, &e, sizeof e))
+            return -1;
     } else {
         double corners[8], *pts;
         const double *src;
@@ -278,6 +293,8 @@ static int pds_cpg_leaf(builder *b, size_t di)
             pts[2 * i] = m[0] * src[2 * i] + m[1] * src[2 * i + 1] + m[2];
             pts[2 * i + 1] = m[3] * src[2 * i] + m[4] * src[2 * i + 1] + m[5];
         }
+        if (n <= PDS_CPG_POLY_MAX)
+            return pds_cpg_poly(c, pts, n, dn->attr);
         if (mem_grow((void **)&c->rings, &c->cap_rings, c->nrings + 1, sizeof *c->rings)) {
             mem_free(pts);
             return -1;
@@ -300,200 +317,39 @@ static int pds_cpg_leaf(builder *b, size_t di)
 
 /* ---- the union index --------------------------------------------------- */
 
-/* Spreads the low 16 bits of x to the even bits (Morton interleave). */
-static uint32_t pds_cpg_spread(uint32_t x)
-{
-    x &= 0xffff;
-    x = (x | (x << 8)) & 0x00ff00ffu;
-    x = (x | (x << 4)) & 0x0f0f0f0fu;
-    x = (x | (x << 2)) & 0x33333333u;
-    x = (x | (x << 1)) & 0x55555555u;
-    return x;
-}
-
-typedef struct keyed { uint32_t key, node; } keyed;
-
-static int pds_cpg_keyed_cmp(const void *pa, const void *pb)
-{
-    const keyed *a = pa, *b = pb;
-    if (a->key != b->key)
-        return a->key < b->key ? -1 : 1;
-    return a->node < b->node ? -1 : a->node > b->node;
-}
-
-/* Builds the hierarchy over ks[0..n) (Morton order) at acc->h[acc->nh]. */
-static uint32_t pds_cpg_bvh_build(accel *acc, const cpg *c, const keyed *ks, size_t n)
-{
-    uint32_t me = (uint32_t)acc->nh++;
-    bvh *h = &acc->h[me];
-    if (n == 1) {
-        memcpy(h->box, c->nodes[ks[0].node].box, sizeof h->box);
-        h->minp = c->nodes[ks[0].node].prio;
-        h->a = PDS_CPG_BVH_LEAF;
-        h->b = ks[0].node;
-    } else {
-        uint32_t l = pds_cpg_bvh_build(acc, c, ks, n / 2);
-        uint32_t r = pds_cpg_bvh_build(acc, c, ks + n / 2, n - n / 2);
-        h = &acc->h[me];
-        memcpy(h->box, acc->h[l].box, sizeof h->box);
-        pds_cpg_box_grow(h->box, acc->h[r].box);
-        h->minp = acc->h[l].minp < acc->h[r].minp ? acc->h[l].minp : acc->h[r].minp;
-        h->a = l;
-        h->b = r;
-    }
-    return me;
-}
-
-/* Cell of coordinate x on one axis: a monotone function of x. */
-static long pds_cpg_cell(const accel *acc, int axis, num x)
-{
-    double t = (num_to_d(x) - acc->g0[axis]) * acc->gs[axis];
-    if (!(t > 0))
-        return 0;
-    return t >= (double)acc->gn ? acc->gn - 1 : (long)t;
-}
-
-/* Cell index with gn cells a side; 1 when the entries would exceed the
- * budget (the caller tries a coarser grid), -1 out of memory. */
-static int pds_cpg_grid(accel *acc, const cpg *c, const uint32_t *ops, size_t n, const num box[4], long gn)
-{
-    size_t total = 0, i, budget = 8 * n + (size_t)(gn * gn);
-    long cx, cy, x0, x1, y0, y1, a;
-    uint32_t *fill;
-    for (a = 0; a < 2; a++) {
-        double lo = fmax(0, num_to_d(box[a])), hi = fmin(1, num_to_d(box[a + 2]));
-        acc->g0[a] = lo;
-        acc->gs[a] = hi > lo ? (double)gn / (hi - lo) : 0;
-    }
-    acc->gn = gn;
-    for (i = 0; i < n; i++) {
-        const num *b = c->nodes[ops[i]].box;
-        total += (size_t)(pds_cpg_cell(acc, 0, b[2]) - pds_cpg_cell(acc, 0, b[0]) + 1) *
-                 (size_t)(pds_cpg_cell(acc, 1, b[3]) - pds_cpg_cell(acc, 1, b[1]) + 1);
-        if (total > budget)
-            return 1;
-    }
-    acc->start = mem_calloc((size_t)(gn * gn + 1), sizeof *acc->start);
-    acc->ops = mem_calloc(total ? total : 1, sizeof *acc->ops);
-    fill = mem_calloc((size_t)(gn * gn), sizeof *fill);
-    if (!acc->start || !acc->ops || !fill) {
-        mem_free(fill);
-        return -1;
-    }
-    for (i = 0; i < n; i++) {
-        const num *b = c->nodes[ops[i]].box;
-        x0 = pds_cpg_cell(acc, 0, b[0]); x1 = pds_cpg_cell(acc, 0, b[2]);
-        y0 = pds_cpg_cell(acc, 1, b[1]); y1 = pds_cpg_cell(acc, 1, b[3]);
-        for (cy = y0; cy <= y1; cy++)
-            for (cx = x0; cx <= x1; cx++)
-                acc->start[cy * gn + cx + 1]++;
-    }
-    for (i = 0; i < (size_t)(gn * gn); i++)
-        acc->start[i + 1] += acc->start[i];
-    for (i = 0; i < n; i++) {       /* in operand order: lists come out ascending */
-        const num *b = c->nodes[ops[i]].box;
-        x0 = pds_cpg_cell(acc, 0, b[0]); x1 = pds_cpg_cell(acc, 0, b[2]);
-        y0 = pds_cpg_cell(acc, 1, b[1]); y1 = pds_cpg_cell(acc, 1, b[3]);
-        for (cy = y0; cy <= y1; cy++)
-            for (cx = x0; cx <= x1; cx++) {
-                long cell = cy * gn + cx;
-                acc->ops[acc->start[cell] + fill[cell]++] = ops[i];
-            }
-    }
-    acc->nops = total;
-    mem_free(fill);
-    return 0;
-}
-
 /* Indexes the operands of union node me (already emitted). */
-static int pds_cpg_index(cpg *c, uint32_t me)
+static int pds_cpg_accelerate(const builder *b, uint32_t me)
 {
+    cpg *c = b->c;
     const cnode *u = &c->nodes[me];
-    uint32_t *ops = NULL, j;
-    keyed *ks = NULL;
-    accel *acc;
-    size_t n = 0, i;
-    long gn;
+    uint32_t *node = NULL, *pos = NULL, j;
+    num (*box)[4] = NULL;
+    size_t n = 0, npos = 0;
     int rc = -1;
-    double su, sv;
-    for (j = me + 1; j < u->end; j = c->nodes[j].end)
+    for (j = me + 1; j < u->end; j = c->nodes[j].end, npos++)
         n += !pds_cpg_box_empty(c->nodes[j].box);
     if (n == 0)
         return 0;      /* no operand can hold a point: the plain loop is exact */
     if (mem_grow((void **)&c->acc, &c->cap_acc, c->nacc + 1, sizeof *c->acc))
         return -1;
-    acc = &c->acc[c->nacc];
-    memset(acc, 0, sizeof *acc);
-    ops = mem_calloc(n, sizeof *ops);
-    ks = mem_calloc(n, sizeof *ks);
-    if (!ops || !ks)
-        goto done;
-    su = num_to_d(u->box[2]) - num_to_d(u->box[0]);
-    sv = num_to_d(u->box[3]) - num_to_d(u->box[1]);
-    su = su > 0 ? 65535 / su : 0;
-    sv = sv > 0 ? 65535 / sv : 0;
-    for (i = 0, j = me + 1; j < u->end; j = c->nodes[j].end) {
-        const num *b = c->nodes[j].box;
-        double mu, mv;
-        if (pds_cpg_box_empty(b))
-            continue;
-        mu = (0.5 * (num_to_d(b[0]) + num_to_d(b[2])) - num_to_d(u->box[0])) * su;
-        mv = (0.5 * (num_to_d(b[1]) + num_to_d(b[3])) - num_to_d(u->box[1])) * sv;
-        ks[i].key = pds_cpg_spread((uint32_t)fmin(fmax(mu, 0), 65535)) |
-                    pds_cpg_spread((uint32_t)fmin(fmax(mv, 0), 65535)) << 1;
-        ks[i].node = j;
-        ops[i++] = j;
-    }
-    /* the cell lists are filled in operand order: sort ops by prio (the
-     * positions are distinct and below the operand count) */
-    {
-        size_t total = 0, w = 0;
-        uint32_t *by = NULL;
+    node = mem_calloc(n, sizeof *node);
+    pos = mem_calloc(n, sizeof *pos);
+    box = mem_calloc(n, sizeof *box);
+    if (node && pos && box) {
+        size_t i = 0;
         for (j = me + 1; j < u->end; j = c->nodes[j].end)
-            total++;
-        by = mem_calloc(total, sizeof *by);
-        if (!by)
-            goto done;
-        for (i = 0; i < total; i++)
-            by[i] = UINT32_MAX;
-        for (i = 0; i < n; i++)
-            by[c->nodes[ops[i]].prio] = ops[i];
-        for (i = 0; i < total; i++)
-            if (by[i] != UINT32_MAX)
-                ops[w++] = by[i];
-        mem_free(by);
+            if (!pds_cpg_box_empty(c->nodes[j].box)) {
+                node[i] = j;
+                pos[i] = b->prio[j];
+                memcpy(box[i++], c->nodes[j].box, sizeof *box);
+            }
+        rc = NS(pds_cpg_index_build)(&c->acc[c->nacc], n, node, (const num (*)[4])box, pos, npos, u->box);
     }
-    for (gn = (long)ceil(sqrt((double)n)); gn > PDS_CPG_GRID_MAX; gn /= 2)
-        ;
-    for (; gn >= 2; gn /= 2) {
-        int g = pds_cpg_grid(acc, c, ops, n, u->box, gn);
-        if (g < 0)
-            goto done;
-        if (g == 0)
-            break;
-    }
-    if (gn < 2)
-        acc->gn = 0;
-    /* The hierarchy, unless every cell is short enough to scan (it would
-     * never be read, and a lookup touches less memory without it). */
-    for (i = 0, j = 0; acc->gn && i < (size_t)(acc->gn * acc->gn); i++)
-        j = acc->start[i + 1] - acc->start[i] > j ? acc->start[i + 1] - acc->start[i] : j;
-    if (!acc->gn || j > PDS_CPG_CELL_SCAN) {
-        if (!(acc->h = mem_calloc(2 * n - 1, sizeof *acc->h)))
-            goto done;
-        qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
-        pds_cpg_bvh_build(acc, c, ks, n);
-    }
-    c->nodes[me].shape = (uint32_t)c->nacc++;
-    rc = 0;
-done:
-    if (rc) {
-        mem_free(acc->h);
-        mem_free(acc->start);
-        mem_free(acc->ops);
-    }
-    mem_free(ops);
-    mem_free(ks);
+    if (rc == 0)
+        c->nodes[me].shape = (uint32_t)c->nacc++;
+    mem_free(node);
+    mem_free(pos);
+    mem_free(box);
     return rc;
 }
 
@@ -532,11 +388,11 @@ static void pds_cpg_anchor(const builder *b, size_t di, double *x, double *y)
  * position in prio, which alone decides priority. */
 static int pds_cpg_emit_spatial(builder *b, const size_t *kids, size_t n)
 {
-    keyed *ks = mem_calloc(n, sizeof *ks);
+    uint32_t *order = mem_calloc(n, sizeof *order);
     double (*xy)[2] = mem_calloc(n, sizeof *xy), lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
     size_t k;
     int rc = -1, a;
-    if (!ks || !xy)
+    if (!order || !xy)
         goto done;
     for (k = 0; k < n; k++) {
         pds_cpg_anchor(b, kids[k], &xy[k][0], &xy[k][1]);
@@ -545,23 +401,18 @@ static int pds_cpg_emit_spatial(builder *b, const size_t *kids, size_t n)
             hi[a] = fmax(hi[a], xy[k][a]);
         }
     }
+    if (NS(pds_cpg_index_morton)((const double (*)[2])xy, n, lo, hi, order))
+        goto done;
     for (k = 0; k < n; k++) {
-        uint32_t q[2];
-        for (a = 0; a < 2; a++)
-            q[a] = hi[a] > lo[a] ? (uint32_t)fmin(65535, (xy[k][a] - lo[a]) / (hi[a] - lo[a]) * 65535) : 0;
-        ks[k].key = pds_cpg_spread(q[0]) | pds_cpg_spread(q[1]) << 1;
-        ks[k].node = (uint32_t)k;
-    }
-    qsort(ks, n, sizeof *ks, pds_cpg_keyed_cmp);
-    for (k = 0; k < n; k++) {
-        uint32_t at = (uint32_t)b->c->nnodes;
-        if (pds_cpg_emit(b, kids[ks[k].node]))
+        size_t at = b->c->nnodes;
+        if (pds_cpg_emit(b, kids[order[k]]) ||
+            mem_grow((void **)&b->prio, &b->cap_prio, at + 1, sizeof *b->prio))
             goto done;
-        b->c->nodes[at].prio = ks[k].node;
+        b->prio[at] = order[k];
     }
     rc = 0;
 done:
-    mem_free(ks);
+    mem_free(order);
     mem_free(xy);
     return rc;
 }
@@ -589,8 +440,8 @@ static int pds_cpg_emit_union(builder *b, const size_t *kids, size_t n, int32_t 
     pds_cpg_box_clear(c->nodes[me].box);
     for (j = (uint32_t)me + 1; j < c->nnodes; j = c->nodes[j].end)
         if (!pds_cpg_box_empty(c->nodes[j].box))
-            pds_cpg_box_grow(c->nodes[me].box, c->nodes[j].box);
-    return n < PDS_CPG_ACCEL_MIN ? 0 : pds_cpg_index(c, (uint32_t)me);
+            pds_num_box_grow(c->nodes[me].box, c->nodes[j].box);
+    return n < PDS_CPG_ACCEL_MIN ? 0 : pds_cpg_accelerate(b, (uint32_t)me);
 }
 
 static int pds_cpg_emit(builder *b, size_t di)
@@ -660,6 +511,34 @@ done:
     return rc;
 }
 
+/* Moves the node array to a block of exactly its size, starting at a
+ * cache-line boundary: a node (32 bytes in q16) then never straddles two
+ * lines. Keeps the growing array if memory runs out. */
+static void pds_cpg_settle(cpg *c)
+{
+    size_t bytes = c->nnodes * sizeof *c->nodes;
+    unsigned char *blk = mem_alloc(bytes + PDS_CPG_LINE - 1), *at;
+    if (!blk)
+        return;
+    at = blk + (PDS_CPG_LINE - (uintptr_t)blk % PDS_CPG_LINE) % PDS_CPG_LINE;
+    memcpy(at, c->nodes, bytes);
+    mem_free(c->nodes);
+    c->nodes = (cnode *)(void *)at;
+    c->cap = c->nnodes;
+    c->block = blk;
+}
+
+/* Gives back what mem_grow's doubling left unused: lookups never read it,
+ * but it is memory the structure holds. Keeps the block if realloc fails. */
+static void pds_cpg_trim(void **p, size_t *cap, size_t n, size_t elem)
+{
+    void *q;
+    if (n == 0 || n >= *cap || !(q = mem_realloc(*p, n * elem)))
+        return;
+    *p = q;
+    *cap = n;
+}
+
 static int pds_cpg_compile(const pds_def *def, const char *file, void **out, diag *err)
 {
     builder b;
@@ -668,6 +547,8 @@ static int pds_cpg_compile(const pds_def *def, const char *file, void **out, dia
     size_t nn = def->cpg.nnodes;
     b.def = def;
     b.c = c;
+    b.prio = NULL;
+    b.cap_prio = 0;
     b.m = mem_calloc(nn, sizeof *b.m);
     depth = mem_calloc(nn, sizeof *depth);
     if (!c || !b.m || !depth)
@@ -675,12 +556,18 @@ static int pds_cpg_compile(const pds_def *def, const char *file, void **out, dia
     pds_cpg_placements(def, b.m, depth);
     if (pds_cpg_emit(&b, def->cpg.root))
         goto oom;
+    pds_cpg_settle(c);
+    pds_cpg_trim((void **)&c->rings, &c->cap_rings, c->nrings, sizeof *c->rings);
+    pds_cpg_trim((void **)&c->nest, &c->cap_nest, c->nnest, sizeof *c->nest);
+    pds_cpg_trim((void **)&c->acc, &c->cap_acc, c->nacc, sizeof *c->acc);
     mem_free(b.m);
+    mem_free(b.prio);
     mem_free(depth);
     *out = c;
     return 0;
 oom:
     mem_free(b.m);
+    mem_free(b.prio);
     mem_free(depth);
     pds_cpg_release(c);
     return NS(pds_oom)(def, file, err);
@@ -731,7 +618,12 @@ static inline int pds_cpg_visit(const cpg *c, uint32_t k, num u, num v, int32_t 
     case K_BOX:
         break;
     case K_ELLIPSE:
-        if (!pds_cpg_ellipse_in(&c->ell[n->shape], u, v))
+        if (!pds_cpg_ellipse_in(pds_cpg_data(n), u, v))
+            return 0;
+        break;
+    case K_POLY:
+        ++*steps;   /* as the ring's single strip node would count */
+        if (!NS(pds_ring_edges_open)(pds_cpg_data(n), n->shape, u, v))
             return 0;
         break;
     case K_RING:
@@ -749,16 +641,22 @@ static inline int pds_cpg_visit(const cpg *c, uint32_t k, num u, num v, int32_t 
 
 /* The first operand (in operand order) of an indexed union that contains
  * (u,v): the cell's list, or the hierarchy with priority pruning. */
-static int pds_cpg_indexed(const cpg *c, const accel *acc, num u, num v, int32_t *attr, unsigned long *steps)
+static int pds_cpg_indexed(const cpg *c, const NS(pds_cpg_index) *acc, num u, num v, int32_t *attr,
+                           unsigned long *steps)
 {
     uint32_t stack[64], best = UINT32_MAX;
     int top = 0;
     if (acc->gn) {
-        long cell = pds_cpg_cell(acc, 1, v) * acc->gn + pds_cpg_cell(acc, 0, u);
-        uint32_t s = acc->start[cell], e = acc->start[cell + 1];
+        long cell = pds_cpg_index_cell(acc, 1, v) * acc->gn + pds_cpg_index_cell(acc, 0, u);
+        const NS(pds_cpg_cell) *ce = &acc->cells[cell];
+        uint32_t s = ce[0].start, e = ce[1].start;
         ++*steps;
-        if (e - s <= PDS_CPG_CELL_SCAN) {
-            for (; s < e; s++)
+        if (e - s <= PDS_CPG_INDEX_SCAN) {
+            if (s == e)
+                return 0;
+            if (pds_cpg_visit(c, ce->first, u, v, attr, steps))
+                return 1;
+            for (s++; s < e; s++)
                 if (pds_cpg_visit(c, acc->ops[s], u, v, attr, steps))
                     return 1;
             return 0;
@@ -766,10 +664,10 @@ static int pds_cpg_indexed(const cpg *c, const accel *acc, num u, num v, int32_t
     }
     stack[top++] = 0;
     while (top > 0) {
-        const bvh *h = &acc->h[stack[--top]];
+        const NS(pds_cpg_bvh) *h = &acc->h[stack[--top]];
         if (h->minp >= best)
             continue;
-        if (h->a == PDS_CPG_BVH_LEAF) {
+        if (h->a == PDS_CPG_INDEX_LEAF) {
             int32_t a;
             if (pds_cpg_visit(c, h->b, u, v, &a, steps)) {
                 best = h->minp;
@@ -830,7 +728,7 @@ static int32_t pds_cpg_locate(const void *impl, num u, num v, unsigned long *ste
 static size_t pds_cpg_bytes(const void *impl)
 {
     const cpg *c = impl;
-    size_t s = sizeof *c + c->cap * sizeof *c->nodes + c->cap_ell * sizeof *c->ell + c->cap_rings * sizeof *c->rings, i;
+    size_t s = sizeof *c + c->cap * sizeof *c->nodes + (c->block ? PDS_CPG_LINE - 1 : 0) + c->cap_rings * sizeof *c->rings, i;
     for (i = 0; i < c->nrings; i++)
         s += (c->rings[i].n + 1) * 2 * sizeof(num) +
              c->rings[i].nnodes * sizeof *c->rings[i].nodes;
@@ -839,8 +737,7 @@ static size_t pds_cpg_bytes(const void *impl)
         s += NS(pds_bytes)(c->nest[i].pds);
     s += c->cap_acc * sizeof *c->acc;
     for (i = 0; i < c->nacc; i++)
-        s += c->acc[i].nh * sizeof *c->acc[i].h +
-             (c->acc[i].gn ? (size_t)(c->acc[i].gn * c->acc[i].gn + 1) * sizeof(uint32_t) + c->acc[i].nops * sizeof(uint32_t) : 0);
+        s += NS(pds_cpg_index_bytes)(&c->acc[i]);
     return s;
 }
 

@@ -155,6 +155,15 @@ static inline int pds_num_in_box(const num *box, num u, num v)
     return u >= box[0] && u <= box[2] && v >= box[1] && v <= box[3];
 }
 
+/* Grows box to cover box k. */
+static inline void pds_num_box_grow(num *box, const num *k)
+{
+    box[0] = num_min(box[0], k[0]);
+    box[1] = num_min(box[1], k[1]);
+    box[2] = num_max(box[2], k[2]);
+    box[3] = num_max(box[3], k[3]);
+}
+
 /* Edge a->b against the point p: 2 if p lies on the closed edge; 1 if the
  * half-line from p towards +u crosses the edge (an endpoint counts as above
  * the line when its v > p's v, so a vertex on the line is counted once);

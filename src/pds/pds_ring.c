@@ -141,3 +141,12 @@ int NS(pds_ring_edges)(const num *uv, uint32_t i0, uint32_t i1, num u, num v)
     }
     return c;
 }
+
+int NS(pds_ring_edges_open)(const num *uv, uint32_t n, num u, num v)
+{
+    int c = NS(pds_ring_edges)(uv, 0, n - 1, u, v), e;
+    if (c == 2)
+        return 2;
+    e = pds_num_edge(uv[2 * n - 2], uv[2 * n - 1], uv[0], uv[1], u, v);
+    return e == 2 ? 2 : c ^ e;
+}

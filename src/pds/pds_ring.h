@@ -47,8 +47,12 @@ int NS(pds_ring_inside)(const NS(pds_ring) *r, num u, num v, unsigned long *step
  *   pds_ring_split     Ballard's split of the chain i0..i1: the vertex
  *                      farthest from its chord, within the middle half
  *   pds_ring_edges     crossing parity of edges i0..i1 at (u,v): 0 or 1,
- *                      2 when the point lies on one */
+ *                      2 when the point lies on one
+ *   pds_ring_edges_open  the same over all n edges of a polygon stored as
+ *                      its n vertices, the first not repeated last (small
+ *                      polygons kept inline by the CPG: one vertex less) */
 num *NS(pds_ring_vertices)(const double *pts, size_t n);
 uint32_t NS(pds_ring_split)(const num *uv, uint32_t i0, uint32_t i1);
 int NS(pds_ring_edges)(const num *uv, uint32_t i0, uint32_t i1, num u, num v);
+int NS(pds_ring_edges_open)(const num *uv, uint32_t n, num u, num v);
 #endif
