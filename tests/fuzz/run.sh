@@ -2,7 +2,8 @@
 # usage: run.sh SECONDS [keep]
 # Builds the library with clang and libFuzzer instrumentation (plus ASan/UBSan),
 # links each tests/fuzz/fuzz_*.c against it (FUZZ_TARGETS="fuzz_a fuzz_b"
-# picks some) and runs each for SECONDS seconds on its seeds
+# picks some) and runs each for SECONDS seconds (or FUZZ_RUNS executions,
+# whichever comes first) on its seeds
 # (tests/fuzz/seeds/NAME) and its kept corpus (tests/fuzz/corpus/NAME).
 #  - without "keep" (CI's smoke run): new inputs go to build-fuzz/corpus-NAME;
 #  - with "keep" (make fuzz): new inputs join the kept corpus, which is then
@@ -34,7 +35,7 @@ for f in tests/fuzz/fuzz_*.c; do
   mkdir -p "$kept"
   if [ -n "$keep" ]; then new=$kept; else new=$top/$out/corpus-$name; mkdir -p "$new"; fi
   bin=$top/$out/$name   # absolute: libFuzzer re-runs itself for -merge
-  if $bin -max_total_time="$secs" $opts "$new" $( [ "$new" = "$kept" ] || echo "$kept" ) $seeds \
+  if $bin -max_total_time="$secs" ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} $opts "$new" $( [ "$new" = "$kept" ] || echo "$kept" ) $seeds \
        > $out/$name.log 2>&1; then
     echo "fuzz $name: $(grep -o 'Done [0-9]* runs in [0-9]* second' $out/$name.log | tail -1)"
   else
