@@ -9,7 +9,10 @@
 
 /* ---- build ----------------------------------------------------------- */
 
-typedef struct csg_bound { double c[3], r, lo[3], hi[3]; int bounded; size_t nspans, peak; } csg_bound;
+/* A node's bounds in double while building; nspans and peak bound the
+ * span storage its classification needs, groups the object groups on its
+ * deepest path (the traversal's pending entries). */
+typedef struct csg_bound { double c[3], r, lo[3], hi[3]; int bounded; size_t nspans, peak, groups; } csg_bound;
 
 typedef struct csg_ctx {
     const scene *sc;
@@ -35,22 +38,14 @@ static int csg_err(csg_ctx *x, int status, const char *what)
     return diag_at(x->err, status, x->sc->source ? x->sc->source : "", 0, 0, "%s", what);
 }
 
-/* Rounds the node's box outwards by 2^-10 (relative to the normalised
- * scene of width 32, far above any rounding of the tests), and uses it only
- * when its volume is under half the sphere's: elsewhere the sphere alone is
- * cheaper. */
+/* The node's binary64 box: its bound's box padded outwards by CSG_BOX_PAD. */
 static void csg_set_box(csg_node *nd, const csg_bound *b)
 {
-    double lo[3], hi[3], vbox = 1, pad = 1.0 / 1024;
     int i;
     for (i = 0; i < 3; i++) {
-        lo[i] = b->lo[i] - pad;
-        hi[i] = b->hi[i] + pad;
-        vbox *= hi[i] - lo[i];
+        nd->lo[i] = b->lo[i] - CSG_BOX_PAD;
+        nd->hi[i] = b->hi[i] + CSG_BOX_PAD;
     }
-    nd->lo = vec3_from_d(lo);
-    nd->hi = vec3_from_d(hi);
-    nd->use_box = vbox < 0.5 * dmath_sphere_volume(b->r);
 }
 
 /* Appends a compiled node; its bound follows from the children. Returns the
@@ -85,18 +80,21 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         size_t a = bl->peak, c = bl->nspans + br->peak, e = 2 * (bl->nspans + br->nspans);
         b->nspans = bl->nspans + br->nspans;
         b->peak = a > c ? (a > e ? a : e) : (c > e ? c : e);
+        b->groups = (op == CSG_GROUP) + (bl->groups > br->groups ? bl->groups : br->groups);
         if (op == CSG_DIFF) {
-            size_t ns = b->nspans, pk = b->peak;
+            size_t ns = b->nspans, pk = b->peak, gr = b->groups;
             *b = *bl;
             b->nspans = ns;
             b->peak = pk;
+            b->groups = gr;
         } else if (op == CSG_INTER) {
             const csg_bound *s = !bl->bounded ? br : !br->bounded ? bl : bl->r <= br->r ? bl : br;
-            size_t ns = b->nspans, pk = b->peak;
+            size_t ns = b->nspans, pk = b->peak, gr = b->groups;
             int i;
             *b = *s;
             b->nspans = ns;
             b->peak = pk;
+            b->groups = gr;
             if (bl->bounded && br->bounded)         /* the boxes intersect */
                 for (i = 0; i < 3; i++) {
                     b->lo[i] = bl->lo[i] > br->lo[i] ? bl->lo[i] : br->lo[i];
@@ -125,10 +123,6 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
                     b->c[i] = bl->c[i] + (R - bl->r) / dist * d[i];
                 b->r = R * (1 + 1e-9);
             }
-        }
-        if (b->bounded) {
-            nd->bc = vec3_from_d(b->c);
-            nd->br = num_from_d(b->r * (1 + 1e-6) + 1.0 / 16384);
         }
     }
     nd->bounded = b->bounded;
@@ -339,6 +333,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     out->nnodes = x.n;
     out->root = root;
     out->peak_spans = root >= 0 ? x.bd[root].peak : 0;
+    out->groups = root >= 0 ? x.bd[root].groups : 0;
     mem_free(x.bd);
     mem_free(roots);
     return 0;
@@ -359,8 +354,9 @@ void NS(csg_free)(csg *c)
 
 size_t NS(csg_arena_bytes)(const csg *c)
 {
-    /* each live list may waste up to ARENA_ALIGN bytes of padding */
-    return c->peak_spans * (sizeof(span) + ARENA_ALIGN) + 4 * ARENA_ALIGN;
+    /* each live list may waste up to ARENA_ALIGN bytes of padding; the
+     * traversal's pending objects come first */
+    return c->peak_spans * (sizeof(span) + ARENA_ALIGN) + c->groups * sizeof(csg_todo) + 5 * ARENA_ALIGN;
 }
 
 /* ---- classification ------------------------------------------------ */
@@ -370,31 +366,32 @@ typedef struct csg_query {
     const prim *prims;
     const prim_ray *r;
     num tmax;
+    double tmax_d;           /* tmax in binary64, for the culling tests */
     int any;                 /* any hit will do (an occlusion test) */
     arena *ar;
     geom_stats *st;
 } csg_query;
 
 /* The bounds test of node nd for parameters in [lo, hi]: 1 when the ray
- * misses them. Else 0, *tc the parameter closest to the bounding sphere's
- * centre (what a leaf's primitive test continues from) and *tin a lower
- * bound of the parameter where the ray enters the bounds (lo for an
- * unbounded node): the key of nearest-first traversal. */
-VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, num *tc, num *tin)
+ * misses them. Else 0, *tc the parameter closest to a leaf's bounding
+ * sphere centre (what its primitive test continues from; 0 for other
+ * nodes) and *tin a lower bound of the parameter where the ray enters the
+ * bounds (lo for an unbounded node): the key of nearest-first traversal.
+ * The box is tested first, in binary64 (culling only); a leaf's sphere
+ * then in the mode's arithmetic, for tc. */
+VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, num *tc, double *tin)
 {
     *tc = NUM_ZERO;
-    *tin = lo;
-    if (!nd->bounded)
+    if (!nd->bounded) {
+        *tin = num_to_d(lo);
         return 0;
+    }
     q->st->bound_tests++;
-    if (vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, tc)
-        || (nd->use_box && vec3_box_enter(nd->lo, nd->hi, q->r->o, q->r->d, &q->r->rcp, *tc,
-                                          lo, hi, tin))) {
+    if (bbox_miss(nd->lo, nd->hi, &q->r->b, num_to_d(lo), num_to_d(hi), tin)
+        || (nd->op == CSG_LEAF && vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, tc))) {
         q->st->pruned++;
         return 1;
     }
-    if (!nd->use_box)
-        *tin = num_max(lo, num_sub(*tc, nd->br));
     return 0;
 }
 
@@ -466,7 +463,8 @@ static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, span **out)
 /* csg_eval_in after node ni's own bounds test. */
 static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
 {
-    num tc, tin;
+    num tc;
+    double tin;
     if (csg_bounds_miss(q, &q->c->nodes[ni], lo, hi, &tc, &tin))
         return 0;
     return csg_eval_in(q, ni, lo, hi, tc, out);
@@ -496,72 +494,110 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
     return 0;
 }
 
-/* Nearest hit below q->tmax in the objects under node ni, whose bounds
- * test passed with closest parameter tc; a hit found replaces *best (see
- * csg_intersect for ties) and becomes the far end. Returns 1 to stop (an
- * occlusion test found a hit). The two children of a group are tested
- * first and visited nearest first, so the nearer one's hit can skip the
- * farther one without another test. */
-static int csg_nearest(csg_query *q, int ni, num tc, csg_hit *best, int *found)
+/* The nearest hit below q->tmax of object ni (a CSG subtree under the
+ * groups), whose bounds test passed with closest parameter tc: a hit found
+ * replaces *best (see csg_intersect for ties) and becomes the far end. */
+static void csg_object(csg_query *q, int ni, num tc, csg_hit *best, int *found)
 {
     const csg_node *nd = &q->c->nodes[ni];
-    if (nd->op == CSG_GROUP) {
-        num tc2[2], tin[2];
-        int kid[2], miss[2], first;
-        kid[0] = nd->left;
-        kid[1] = nd->right;
-        miss[0] = csg_bounds_miss(q, &q->c->nodes[kid[0]], NUM_ZERO, q->tmax, &tc2[0], &tin[0]);
-        miss[1] = csg_bounds_miss(q, &q->c->nodes[kid[1]], NUM_ZERO, q->tmax, &tc2[1], &tin[1]);
-        first = !miss[1] && (miss[0] || tin[1] < tin[0]);
-        if (!miss[first] && csg_nearest(q, kid[first], tc2[first], best, found))
-            return 1;
-        first = !first;
-        return !miss[first] && tin[first] <= q->tmax
-               && csg_nearest(q, kid[first], tc2[first], best, found);
+    csg_hit h;
+    int hit;
+    if (nd->op == CSG_LEAF) {     /* an object of one primitive: one span, no arena */
+        span s;
+        q->st->prim_tests++;
+        hit = NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
+              && csg_first(&s, 1, q->tmax, &h);
+    } else {
+        size_t mark = arena_mark(q->ar);
+        span *s = NULL;
+        int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, &s);
+        hit = n > 0 && csg_first(s, n, q->tmax, &h);
+        arena_release(q->ar, mark);
     }
-    {
-        csg_hit h;
-        int hit;
-        if (nd->op == CSG_LEAF) {     /* an object of one primitive: one span, no arena */
-            span s;
-            q->st->prim_tests++;
-            hit = NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
-                  && csg_first(&s, 1, q->tmax, &h);
+    if (hit && (!*found || h.t < best->t
+                || (h.t == best->t && (h.entering > best->entering
+                                       || (h.entering == best->entering && h.prim < best->prim))))) {
+        *best = h;
+        *found = 1;
+        q->tmax = h.t;
+        q->tmax_d = num_to_d(h.t);
+    }
+}
+
+/* Nearest hit below q->tmax in the objects under node ni, whose bounds
+ * test passed with closest parameter tc. Both children of a group are
+ * tested, the nearer one (by the entry parameter of its bounds) is visited
+ * at once and the other kept in todo[] (q->c->groups entries at most: one
+ * per group on the path), to be skipped without another test when a hit
+ * nearer than its entry has been found by then. Returns 1 to stop (an
+ * occlusion test found a hit). */
+static int csg_nearest(csg_query *q, int ni, num tc, csg_todo *todo, csg_hit *best, int *found)
+{
+    const csg_node *nodes = q->c->nodes;
+    size_t n = 0;
+    for (;;) {
+        const csg_node *nd = &nodes[ni];
+        if (nd->op == CSG_GROUP) {
+            num tc2[2];
+            double tin[2];
+            int miss0 = csg_bounds_miss(q, &nodes[nd->left], NUM_ZERO, q->tmax, &tc2[0], &tin[0]);
+            int miss1 = csg_bounds_miss(q, &nodes[nd->right], NUM_ZERO, q->tmax, &tc2[1], &tin[1]);
+            if (!miss0 && !miss1) {
+                int first = tin[1] < tin[0];
+                todo[n].node = first ? nd->left : nd->right;
+                todo[n].tc = tc2[!first];
+                todo[n++].tin = tin[!first];
+                ni = first ? nd->right : nd->left;
+                tc = tc2[first];
+                continue;
+            }
+            if (!miss0 || !miss1) {
+                ni = miss0 ? nd->right : nd->left;
+                tc = tc2[miss0];
+                continue;
+            }
         } else {
-            size_t mark = arena_mark(q->ar);
-            span *s = NULL;
-            int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, &s);
-            hit = n > 0 && csg_first(s, n, q->tmax, &h);
-            arena_release(q->ar, mark);
+            csg_object(q, ni, tc, best, found);
+            if (q->any && *found)
+                return 1;
         }
-        if (hit && (!*found || h.t < best->t
-                    || (h.t == best->t && (h.entering > best->entering
-                                           || (h.entering == best->entering && h.prim < best->prim))))) {
-            *best = h;
-            *found = 1;
-            q->tmax = h.t;
-        }
+        do {
+            if (n == 0)
+                return 0;
+            n--;
+        } while (todo[n].tin > q->tmax_d);
+        ni = todo[n].node;
+        tc = todo[n].tc;
     }
-    return q->any && *found;
 }
 
 static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num tmax, int any,
                          arena *ar, geom_stats *st, csg_hit *hit)
 {
     csg_query q;
-    num tc, tin;
+    num tc;
+    double tin;
     int found = 0;
+    size_t mark;
+    csg_todo *todo;
     if (c->root < 0)
         return 0;
     q.c = c;
     q.prims = prims;
     q.r = r;
     q.tmax = tmax;
+    q.tmax_d = num_to_d(tmax);
     q.any = any;
     q.ar = ar;
     q.st = st;
+    mark = arena_mark(ar);
+    if (!(todo = arena_alloc(ar, c->groups * sizeof *todo + 1))) {
+        st->arena_full++;
+        return 0;
+    }
     if (!csg_bounds_miss(&q, &c->nodes[c->root], NUM_ZERO, tmax, &tc, &tin))
-        csg_nearest(&q, c->root, tc, hit, &found);
+        csg_nearest(&q, c->root, tc, todo, hit, &found);
+    arena_release(ar, mark);
     return found;
 }
 

@@ -4,10 +4,11 @@
  * At compile time chains of the same operator are flattened and rebuilt as
  * balanced trees over their operands, ordered by position (a bounding-volume
  * hierarchy), and a difference chain a - b - c - ... becomes a - (b u c u ...).
- * Every bounded node carries a bounding sphere (a division-free test) and,
- * where it is much tighter, a bounding box; a ray that misses them skips the
- * whole subtree, so a slab minus N cylinders costs O(log N) per ray, not
- * O(N). Each rendered object (scene root) is a solid of its own: the
+ * Every bounded node carries a bounding box, tested in binary64 (bbox.h:
+ * culling only), and a leaf also its primitive's bounding sphere, tested in
+ * the mode's arithmetic because its closest parameter is where the
+ * primitive's solver starts; a ray that misses them skips the whole
+ * subtree, so a slab minus N cylinders costs O(log N) per ray, not O(N). Each rendered object (scene root) is a solid of its own: the
  * objects form a tree of CSG_GROUP nodes, bounded like unions, where the
  * nearest surface of any object wins instead of a span merge.
  * Modal: compiled per numeric mode. */
@@ -18,16 +19,27 @@
 
 #define CSG_MAX_NEST 256     /* operator alternations allowed along a path */
 #define CSG_GROUP (CSG_DIFF + 1)   /* compiled only: a set of separate objects */
+/* Bounding boxes are padded outwards by this much (normalised units): far
+ * above the rounding of the binary64 box test and of the mode's surface
+ * points, whose coordinates stay below 2^14 (docs/numerics.md, "Culling in
+ * binary64"): 2^-10, 64 units in q16's last place, or in a floating mode
+ * 64 units in the last place of 2^14 where that is more (f32 2^-3, hfp32
+ * 1). */
+#if NUM_IS_FIXED
+#define CSG_BOX_PAD (1.0 / 1024)
+#else
+#define CSG_BOX_PAD_ULPS (64 * 16384 * num_to_d(NUM_ULP))
+#define CSG_BOX_PAD (CSG_BOX_PAD_ULPS > 1.0 / 1024 ? CSG_BOX_PAD_ULPS : 1.0 / 1024)
+#endif
 
 typedef struct csg_node {
     int op;                  /* CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF, CSG_GROUP */
     int left, right;         /* operator operands (compiled node indices) */
     int prim;                /* leaf: primitive index */
     int bounded;
-    vec3 bc;                 /* bounding sphere (world) */
+    double lo[3], hi[3];     /* bounding box (world), padded by CSG_BOX_PAD */
+    vec3 bc;                 /* leaf: the primitive's bounding sphere (world) */
     num br;
-    int use_box;             /* the box is much tighter than the sphere */
-    vec3 lo, hi;             /* bounding box (world), inside the sphere */
 } csg_node;
 
 typedef struct csg {
@@ -35,7 +47,12 @@ typedef struct csg {
     int nnodes;
     int root;                /* -1: nothing to render */
     size_t peak_spans;       /* span storage one query needs at most */
+    size_t groups;           /* CSG_GROUP nodes on the deepest path */
 } csg;
+
+/* A subtree the traversal will visit if the far end still allows: its
+ * node, its leaf's closest parameter and its bounds' entry parameter. */
+typedef struct csg_todo { int node; num tc; double tin; } csg_todo;
 
 /* The nearest surface crossing along a ray. */
 typedef struct csg_hit {

@@ -15,6 +15,7 @@
 #include "geom/geom.h"
 #include "geom/span.h"
 #include "geom/vec.h"
+#include "geom/bbox.h"
 
 /* A ray in the normalised world. d is a unit vector. A ray spawned from a
  * surface names the primitive it left (excl_prim, -1 for none) and whether it
@@ -22,17 +23,20 @@
  * origin is then never reported again (no epsilon offsets). */
 typedef struct ray {
     vec3 o, d;
-    vec3_rcp rcp;      /* reciprocals of d's components (prim_ray_set) */
+    bbox_ray b;        /* o and d in binary64 for the culling tests (prim_ray_set) */
     int excl_prim;
     int excl_enter;
 } prim_ray;
 
-/* Sets every field of r, the direction's reciprocals included. */
+/* Sets every field of r, the culling tests' binary64 copy included. */
 static inline void prim_ray_set(prim_ray *r, vec3 o, vec3 d, int excl_prim, int excl_enter)
 {
+    double od[3], dd[3];
     r->o = o;
     r->d = d;
-    vec3_rcp_init(d, &r->rcp);
+    vec3_to_d(o, od);
+    vec3_to_d(d, dd);
+    bbox_ray_init(&r->b, od, dd);
     r->excl_prim = excl_prim;
     r->excl_enter = excl_enter;
 }

@@ -1,8 +1,8 @@
 /* vec — 3-vectors and 3x3 matrices of `num` for the modal geometry code.
  * Small transparent value types; every operation goes through num_* so the
  * fixed-point modes saturate and count overflows instead of wrapping
- * (except q16's bounds tests, whose exact 64-bit intermediates cannot
- * overflow: see vec3_sphere_miss).
+ * (except q16's bounding-sphere test, whose exact 64-bit intermediates
+ * cannot overflow: see vec3_sphere_miss).
  * Included only by files compiled per numeric mode. */
 #ifndef GEOM_VEC_H
 #define GEOM_VEC_H
@@ -164,144 +164,6 @@ VEC_HOT num num_div_clamp(num a, num b, num lim)
         return q;
     }
 }
-
-/* Per-ray reciprocals of the direction components, so slab tests multiply
- * instead of divide. q16: 1/d_i in Q32.32 (int64_t), used where |d_i| >=
- * 2^-8, so that a product with a box offset (below 2^6, the sphere
- * diameter) stays below 2^62 and the quotient below 2^14 < GEOM_TBIG;
- * f32/f64: 1/d_i for d_i != 0; a zero entry means "divide" (q32 always
- * divides: its 128-bit quotient is one instruction pair). */
-typedef struct vec3_rcp {
-#if defined(NUM_MODE_q16)
-    int64_t q[3];
-#else
-    num q[3];
-#endif
-} vec3_rcp;
-
-static inline void vec3_rcp_init(vec3 d, vec3_rcp *r)
-{
-    num c[3];
-    int i;
-    c[0] = d.x; c[1] = d.y; c[2] = d.z;
-    for (i = 0; i < 3; i++) {
-#if defined(NUM_MODE_q16)
-        int64_t a = c[i] < 0 ? -(int64_t)c[i] : c[i], q;
-        q = a >= 256 ? (((int64_t)1 << 48) + a / 2) / a : 0;
-        r->q[i] = c[i] < 0 ? -q : q;
-#elif NUM_IS_FIXED
-        r->q[i] = c[i] - c[i];          /* q32 divides */
-#else
-        r->q[i] = c[i] != NUM_ZERO ? num_div(NUM_ONE, c[i]) : NUM_ZERO;
-#endif
-    }
-}
-
-/* (x / d) clamped to +-GEOM_TBIG as num_div_clamp does, by the reciprocal
- * rq of d where there is one. */
-#if defined(NUM_MODE_q16)
-typedef int64_t vec3_rcp_t;
-#else
-typedef num vec3_rcp_t;
-#endif
-VEC_HOT num vec3_slab_t(num x, num d, vec3_rcp_t rq, num big)
-{
-#if defined(NUM_MODE_q16)
-    if (rq != 0 && x < ((num)1 << 22) && x > -((num)1 << 22))
-        return (num)fx_shr_round((int64_t)x * rq, 32);
-#elif !NUM_IS_FIXED
-    if (rq != NUM_ZERO) {
-        num t = num_mul(x, rq);
-        return t > big ? big : t < num_neg(big) ? num_neg(big) : t;
-    }
-#else
-    (void)rq;
-#endif
-    return num_div_clamp(x, d, big);
-}
-
-/* Clips the relative ray interval [*a, *b] (parameters measured from o) to
- * the slab lo <= o + t d <= hi of one axis (rq: the reciprocal of d). 1 when
- * the interval becomes empty. */
-VEC_HOT int vec3_slab_miss(num lo, num hi, num o, num d, vec3_rcp_t rq, num *a, num *b)
-{
-    num t0, t1, big = num_from_i(GEOM_TBIG);
-    if (d == NUM_ZERO)
-        return o < lo || o > hi;
-    /* the entry plane is chosen by d's sign before dividing: the same for
-     * every node a ray meets, so the branch predicts where a swap of the
-     * two quotients after them would not */
-    if (d > NUM_ZERO) {
-        t0 = vec3_slab_t(num_sub(lo, o), d, rq, big);
-        t1 = vec3_slab_t(num_sub(hi, o), d, rq, big);
-    } else {
-        t0 = vec3_slab_t(num_sub(hi, o), d, rq, big);
-        t1 = vec3_slab_t(num_sub(lo, o), d, rq, big);
-    }
-    if (t0 > *a) *a = t0;
-    if (t1 < *b) *b = t1;
-    return *a > *b;
-}
-
-/* Bounding-box rejection, after a bounding-sphere test passed with closest
- * parameter tc: 1 when the ray misses the box [lo, hi] for every t in
- * [tmin, tmax]; else 0 and *tin = the first parameter in [tmin, tmax] inside
- * the box. The origin is first moved to o + tc d, inside the sphere
- * that contains the box, so every difference is at most the sphere's
- * diameter. rc holds the reciprocals of d's components. */
-#if defined(NUM_MODE_q16)
-/* q16: vec3_slab_miss on exact 64-bit intermediates (see vec3_sphere_miss
- * for why nothing can overflow). */
-VEC_HOT int64_t vec3_slab_t64(int64_t x, num d, int64_t rq)
-{
-    return rq != 0 && x < ((int64_t)1 << 22) && x > -((int64_t)1 << 22)
-           ? fx_shr_round(x * rq, 32)
-           : num_div_clamp(fx16_sat(x), d, num_from_i(GEOM_TBIG));
-}
-
-VEC_HOT int vec3_slab_miss64(num lo, num hi, int64_t o, num d, int64_t rq, int64_t *a, int64_t *b)
-{
-    int64_t t0, t1;
-    if (d == NUM_ZERO)
-        return o < lo || o > hi;
-    if (d > NUM_ZERO) {
-        t0 = vec3_slab_t64(lo - o, d, rq);
-        t1 = vec3_slab_t64(hi - o, d, rq);
-    } else {
-        t0 = vec3_slab_t64(hi - o, d, rq);
-        t1 = vec3_slab_t64(lo - o, d, rq);
-    }
-    if (t0 > *a) *a = t0;
-    if (t1 < *b) *b = t1;
-    return *a > *b;
-}
-
-VEC_HOT int vec3_box_enter(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc, num tc,
-                           num tmin, num tmax, num *tin)
-{
-    int64_t a = (int64_t)tmin - tc, b = (int64_t)tmax - tc;
-    if (vec3_slab_miss64(lo.x, hi.x, o.x + fx_shr_round((int64_t)d.x * tc, 16), d.x, rc->q[0], &a, &b)
-        || vec3_slab_miss64(lo.y, hi.y, o.y + fx_shr_round((int64_t)d.y * tc, 16), d.y, rc->q[1], &a, &b)
-        || vec3_slab_miss64(lo.z, hi.z, o.z + fx_shr_round((int64_t)d.z * tc, 16), d.z, rc->q[2], &a, &b))
-        return 1;
-    *tin = fx16_sat(a + tc);
-    return 0;
-}
-#else
-VEC_HOT int vec3_box_enter(vec3 lo, vec3 hi, vec3 o, vec3 d, const vec3_rcp *rc, num tc,
-                           num tmin, num tmax, num *tin)
-{
-    vec3 o1 = vec3_madd(o, tc, d);
-    num a = num_sub(tmin, tc), b = num_sub(tmax, tc);
-    if (vec3_slab_miss(lo.x, hi.x, o1.x, d.x, rc->q[0], &a, &b)
-        || vec3_slab_miss(lo.y, hi.y, o1.y, d.y, rc->q[1], &a, &b)
-        || vec3_slab_miss(lo.z, hi.z, o1.z, d.z, rc->q[2], &a, &b))
-        return 1;
-    *tin = num_add(a, tc);
-    return 0;
-}
-#endif
-
 
 /* a*b clamped to [-lim, lim] (lim > 0) without saturating: a product
  * beyond lim gives +-lim and counts no overflow. */

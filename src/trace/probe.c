@@ -138,6 +138,17 @@ static int probe_refract(const double *d, const double *n, double eta, double *t
     return r;
 }
 
+static void probe_unbox(void *v)
+{
+    probe_cs *p = v;
+    int i, k;
+    for (i = 0; i < p->cs->tree.nnodes; i++)
+        for (k = 0; k < 3; k++) {
+            p->cs->tree.nodes[i].lo[k] = -HUGE_VAL;
+            p->cs->tree.nodes[i].hi[k] = HUGE_VAL;
+        }
+}
+
 const probe_ops NS(probe_ops) = {
     .name = NUM_NAME,
     .compile = probe_compile,
@@ -146,4 +157,5 @@ const probe_ops NS(probe_ops) = {
     .hit = probe_hit_fn,
     .respawn = probe_respawn,
     .refract = probe_refract,
+    .unbox = probe_unbox,
 };

@@ -33,6 +33,10 @@ typedef struct probe_ops {
     /* The mode's refraction (optics.h) of unit d at unit normal n for index
      * ratio eta: 0 and t, 1 for total internal reflection, -1 degenerate. */
     int (*refract)(const double *d, const double *n, double eta, double *t);
+    /* Makes every bounding box of the compiled scene infinite, so that only
+     * the bounding spheres and the primitives decide what a ray meets: for
+     * tests that the boxes (binary64 culling) never change a hit. */
+    void (*unbox)(void *cs);
 } probe_ops;
 
 extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops,

@@ -3,7 +3,8 @@
  * block-minus-cylinder case pixel-exact in q16 and f64 (head-on render and
  * oblique rays), normals flipped where a difference exposes the subtracted
  * solid, random trees against a brute-force point classification,
- * sublinear cost for a slab minus N cylinders, malformed trees. */
+ * sublinear cost for a slab minus N cylinders, malformed trees, and
+ * bounding boxes that never change a hit. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -445,6 +446,90 @@ static void test_csg_rejects_malformed_tree(void **state)
     scene_free(sc);
 }
 
+/* Random objects (one solid, or two combined by a random operator, each
+ * placed by a random rotation, non-uniform scale and translation, half the
+ * scenes on a floor) and random rays, a quarter of them from 400 units
+ * away, in every mode: the nearest hit, and
+ * the nearest hit of a ray spawned from it in a random direction, are bit
+ * for bit those found with every bounding box made infinite. The boxes
+ * are tested in binary64 whatever the mode (geom/bbox.h): this is the
+ * claim that they only cull. */
+static void test_csg_boxes_never_change_a_hit(void **state)
+{
+    static const char *const opname[3] = {"UNION", "INTER", "DIFF"};
+    uint64_t s = test_seed("test_csg_boxes_never_change_a_hit");
+    long rays = 0, hits = 0, respawned = 0, bad = 0;
+    int m, n, i, k;
+    (void)state;
+    for (n = 0; n < 8; n++) {
+        char deck[8192], *p = deck;
+        scene *sc;
+        p += sprintf(p, VIEW);
+        for (i = 0; i < 6; i++) {
+            int two = test_rand(&s) % 3 != 0;
+            for (k = 0; k <= two; k++) {
+                char nm[16], solid[64];
+                snprintf(nm, sizeof nm, "P%d%c", i, 'A' + k);
+                snprintf(solid, sizeof solid, csg_solids[test_rand(&s) % 4], nm);
+                p += sprintf(p, "%s -\n  ROTATE AXIS %.6f %.6f %.6f %.4f -\n"
+                             "  SCALE %.5f %.5f %.5f TRANSLATE %.5f %.5f %.5f\n", solid,
+                             test_uniform(&s, -1, 1), test_uniform(&s, -1, 1), test_uniform(&s, 0.1, 1),
+                             test_uniform(&s, 0, 360), test_uniform(&s, 0.2, 2.5), test_uniform(&s, 0.2, 2.5),
+                             test_uniform(&s, 0.2, 2.5), test_uniform(&s, -4, 4), test_uniform(&s, -4, 4),
+                             test_uniform(&s, -4, 4));
+            }
+            if (two)
+                p += sprintf(p, "%s O%d P%dA P%dB\nOBJECT O%d\n", opname[test_rand(&s) % 3], i, i, i, i);
+            else
+                p += sprintf(p, "OBJECT P%dA\n", i);
+        }
+        if (n % 2)
+            p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -3\nOBJECT FLOOR\n");
+        sc = tt_parse(deck);
+        assert_non_null(sc);
+        for (m = 0; m < TT_MODES; m++) {
+            const probe_ops *ops = tt_mode(m);
+            void *boxed, *unboxed;
+            diag err;
+            diag_init(&err);
+            assert_int_equal(ops->compile(sc, &boxed, &err), 0);
+            assert_int_equal(ops->compile(sc, &unboxed, &err), 0);
+            ops->unbox(unboxed);
+            for (k = 0; k < 250; k++) {
+                double o[3], d[3], d2[3];
+                probe_hit a, b, a2, b2;
+                int ha, hb;
+                csg_random_ray(&s, o, d);
+                if (k % 4 == 0)                /* a far origin: coarse float points */
+                    for (i = 0; i < 3; i++)
+                        o[i] -= 400 * d[i];
+                tt_random_dir(&s, d2);
+                ha = ops->hit(boxed, o, d, &a);
+                hb = ops->hit(unboxed, o, d, &b);
+                rays++;
+                hits += hb;
+                if (ha != hb || (ha && (a.t != b.t || a.prim != b.prim || a.face != b.face
+                                        || a.entering != b.entering))) {
+                    bad++;
+                    continue;
+                }
+                ha = ops->respawn(boxed, o, d, d2, &a, &a2);
+                hb = ops->respawn(unboxed, o, d, d2, &b, &b2);
+                respawned += hb > 0;
+                if (ha != hb || (ha > 0 && (a2.t != b2.t || a2.prim != b2.prim || a2.face != b2.face
+                                            || a2.entering != b2.entering)))
+                    bad++;
+            }
+            ops->free(boxed);
+            ops->free(unboxed);
+        }
+        scene_free(sc);
+    }
+    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", rays, hits, respawned, bad);
+    assert_true(hits > rays / 4 && respawned > rays / 10);
+    assert_int_equal(bad, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -454,6 +539,7 @@ int main(void)
         cmocka_unit_test(test_csg_coincident_oblique_rays),
         cmocka_unit_test(test_csg_slab_cost_sublinear),
         cmocka_unit_test(test_csg_rejects_malformed_tree),
+        cmocka_unit_test(test_csg_boxes_never_change_a_hit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
