@@ -3,6 +3,7 @@
 #include "geom/csg.h"
 #include "util/dmath.h"
 #include "util/mem.h"
+#include "util/bvh.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,9 +11,8 @@
 /* ---- build ----------------------------------------------------------- */
 
 /* A node's bounds in double while building; nspans and peak bound the
- * span storage its classification needs, groups the object groups on its
- * deepest path (the traversal's pending entries). */
-typedef struct csg_bound { double c[3], r, lo[3], hi[3]; int bounded; size_t nspans, peak, groups; } csg_bound;
+ * span storage its classification needs. */
+typedef struct csg_bound { double c[3], r, lo[3], hi[3]; int bounded; size_t nspans, peak; } csg_bound;
 
 typedef struct csg_ctx {
     const scene *sc;
@@ -80,21 +80,18 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         size_t a = bl->peak, c = bl->nspans + br->peak, e = 2 * (bl->nspans + br->nspans);
         b->nspans = bl->nspans + br->nspans;
         b->peak = a > c ? (a > e ? a : e) : (c > e ? c : e);
-        b->groups = (op == CSG_GROUP) + (bl->groups > br->groups ? bl->groups : br->groups);
         if (op == CSG_DIFF) {
-            size_t ns = b->nspans, pk = b->peak, gr = b->groups;
+            size_t ns = b->nspans, pk = b->peak;
             *b = *bl;
             b->nspans = ns;
             b->peak = pk;
-            b->groups = gr;
         } else if (op == CSG_INTER) {
             const csg_bound *s = !bl->bounded ? br : !br->bounded ? bl : bl->r <= br->r ? bl : br;
-            size_t ns = b->nspans, pk = b->peak, gr = b->groups;
+            size_t ns = b->nspans, pk = b->peak;
             int i;
             *b = *s;
             b->nspans = ns;
             b->peak = pk;
-            b->groups = gr;
             if (bl->bounded && br->bounded)         /* the boxes intersect */
                 for (i = 0; i < 3; i++) {
                     b->lo[i] = bl->lo[i] > br->lo[i] ? bl->lo[i] : br->lo[i];
@@ -302,9 +299,11 @@ static int csg_compile_node(csg_ctx *x, int sn, int depth)
 int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
 {
     csg_ctx x;
-    int *roots = NULL, i, root = -1;
-    size_t cap;
+    int *obj = NULL, nb = 0, nu = 0;
+    double (*lo)[3] = NULL, (*hi)[3] = NULL;
+    size_t cap, i, peak = 0;
     memset(&x, 0, sizeof x);
+    memset(out, 0, sizeof *out);
     x.sc = sc;
     x.prims = prims;
     x.err = err;
@@ -317,46 +316,67 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     x.cap = (int)cap;
     x.nodes = mem_calloc(cap, sizeof *x.nodes);
     x.bd = mem_calloc(cap, sizeof *x.bd);
-    if (sc->nroots)
-        roots = mem_calloc(sc->nroots, sizeof *roots);
-    if (!x.nodes || !x.bd || (sc->nroots && !roots)) {
+    obj = mem_calloc(sc->nroots + 1, sizeof *obj);
+    lo = mem_calloc(sc->nroots + 1, sizeof *lo);
+    hi = mem_calloc(sc->nroots + 1, sizeof *hi);
+    if (!x.nodes || !x.bd || !obj || !lo || !hi) {
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
     }
-    for (i = 0; (size_t)i < sc->nroots; i++)
-        roots[i] = sc->roots[i];
-    if (sc->nroots)
-        root = csg_compile_list(&x, roots, (int)sc->nroots, CSG_GROUP, 0);
-    if (sc->nroots && root < 0)
+    /* each object compiled on its own; the bounded ones first (the
+     * hierarchy's items), the unbounded ones after them */
+    for (i = 0; i < sc->nroots; i++) {
+        int r = csg_compile_node(&x, sc->roots[i], 1);
+        if (r < 0)
+            goto fail;
+        if (x.bd[r].peak > peak)
+            peak = x.bd[r].peak;
+        if (x.nodes[r].bounded) {
+            memmove(obj + nb + 1, obj + nb, (size_t)nu * sizeof *obj);
+            memcpy(lo[nb], x.nodes[r].lo, sizeof lo[nb]);
+            memcpy(hi[nb], x.nodes[r].hi, sizeof hi[nb]);
+            obj[nb++] = r;
+        } else {
+            obj[nb + nu++] = r;
+        }
+    }
+    if (bvh_build((const double (*)[3])lo, (const double (*)[3])hi, (size_t)nb, &out->objtree)) {
+        csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
+    }
     out->nodes = x.nodes;
     out->nnodes = x.n;
-    out->root = root;
-    out->peak_spans = root >= 0 ? x.bd[root].peak : 0;
-    out->groups = root >= 0 ? x.bd[root].groups : 0;
+    out->objects = obj;
+    out->nobjects = nb + nu;
+    out->nbounded = nb;
+    out->peak_spans = peak;
     mem_free(x.bd);
-    mem_free(roots);
+    mem_free(lo);
+    mem_free(hi);
     return 0;
 fail:
     mem_free(x.nodes);
     mem_free(x.bd);
-    mem_free(roots);
+    mem_free(obj);
+    mem_free(lo);
+    mem_free(hi);
     return err->status ? err->status : DIAG_IO;
 }
 
 void NS(csg_free)(csg *c)
 {
     mem_free(c->nodes);
-    c->nodes = NULL;
-    c->nnodes = 0;
-    c->root = -1;
+    mem_free(c->objects);
+    bvh_free(&c->objtree);
+    memset(c, 0, sizeof *c);
 }
 
 size_t NS(csg_arena_bytes)(const csg *c)
 {
     /* each live list may waste up to ARENA_ALIGN bytes of padding; the
-     * traversal's pending objects come first */
-    return c->peak_spans * (sizeof(span) + ARENA_ALIGN) + c->groups * sizeof(csg_todo) + 5 * ARENA_ALIGN;
+     * traversal's pending subtrees come first */
+    return c->peak_spans * (sizeof(span) + ARENA_ALIGN) + (size_t)(c->objtree.depth + 1) * sizeof(csg_todo)
+           + 5 * ARENA_ALIGN;
 }
 
 /* ---- classification ------------------------------------------------ */
@@ -494,16 +514,23 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
     return 0;
 }
 
-/* The nearest hit below q->tmax of object ni (a CSG subtree under the
- * groups), whose bounds test passed with closest parameter tc: a hit found
- * replaces *best (see csg_intersect for ties) and becomes the far end. */
-static void csg_object(csg_query *q, int ni, num tc, csg_hit *best, int *found)
+/* The nearest hit below q->tmax of object k (objects[k], a CSG subtree),
+ * whose box the ray meets: a hit found replaces *best (see csg_intersect
+ * for ties) and becomes the far end. An object of one primitive first
+ * tests its bounding sphere, which gives the primitive test its start. */
+static void csg_object(csg_query *q, int k, csg_hit *best, int *found)
 {
+    int ni = q->c->objects[k];
     const csg_node *nd = &q->c->nodes[ni];
+    num tc = NUM_ZERO;
     csg_hit h;
     int hit;
-    if (nd->op == CSG_LEAF) {     /* an object of one primitive: one span, no arena */
+    if (nd->op == CSG_LEAF) {     /* one primitive: one span, no arena */
         span s;
+        if (nd->bounded && vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)) {
+            q->st->pruned++;
+            return;
+        }
         q->st->prim_tests++;
         hit = NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
               && csg_first(&s, 1, q->tmax, &h);
@@ -524,40 +551,55 @@ static void csg_object(csg_query *q, int ni, num tc, csg_hit *best, int *found)
     }
 }
 
-/* Nearest hit below q->tmax in the objects under node ni, whose bounds
- * test passed with closest parameter tc. Both children of a group are
- * tested, the nearer one (by the entry parameter of its bounds) is visited
- * at once and the other kept in todo[] (q->c->groups entries at most: one
- * per group on the path), to be skipped without another test when a hit
- * nearer than its entry has been found by then. Returns 1 to stop (an
- * occlusion test found a hit). */
-static int csg_nearest(csg_query *q, int ni, num tc, csg_todo *todo, csg_hit *best, int *found)
+/* The nearest hit below q->tmax among the objects (see csg_intersect).
+ * The unbounded ones (a floor) are tried first: their hits only shrink the
+ * far end. Then the hierarchy: at each node both children's boxes are
+ * tested, the nearer child (by its box's entry parameter) is visited at
+ * once and the other kept in todo[] (objtree.depth entries at most), to
+ * be skipped without another test when a hit nearer than its entry has
+ * been found by then. Returns 1 to stop (an occlusion test found a hit). */
+static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
 {
-    const csg_node *nodes = q->c->nodes;
+    const csg *c = q->c;
+    const bvh_node *nodes = c->objtree.nodes;
     size_t n = 0;
+    double tin[2];
+    int k = c->objtree.root;
+    for (k = c->nbounded; k < c->nobjects; k++) {
+        csg_object(q, k, best, found);
+        if (q->any && *found)
+            return 1;
+    }
+    if (c->nbounded == 0)
+        return 0;
+    k = c->objtree.root;
+    if (k < 0) {                  /* one bounded object: its own box */
+        const csg_node *nd = &c->nodes[c->objects[~k]];
+        q->st->bound_tests++;
+        if (bbox_miss(nd->lo, nd->hi, &q->r->b, 0, q->tmax_d, &tin[0])) {
+            q->st->pruned++;
+            return 0;
+        }
+    }
     for (;;) {
-        const csg_node *nd = &nodes[ni];
-        if (nd->op == CSG_GROUP) {
-            num tc2[2];
-            double tin[2];
-            int miss0 = csg_bounds_miss(q, &nodes[nd->left], NUM_ZERO, q->tmax, &tc2[0], &tin[0]);
-            int miss1 = csg_bounds_miss(q, &nodes[nd->right], NUM_ZERO, q->tmax, &tc2[1], &tin[1]);
-            if (!miss0 && !miss1) {
+        if (k >= 0) {
+            const bvh_node *nd = &nodes[k];
+            int miss = bbox_miss2(nd->lo, nd->hi, &q->r->b, q->tmax_d, tin);
+            q->st->bound_tests += 2;
+            if (!miss) {
                 int first = tin[1] < tin[0];
-                todo[n].node = first ? nd->left : nd->right;
-                todo[n].tc = tc2[!first];
+                todo[n].kid = nd->kid[!first];
                 todo[n++].tin = tin[!first];
-                ni = first ? nd->right : nd->left;
-                tc = tc2[first];
+                k = nd->kid[first];
                 continue;
             }
-            if (!miss0 || !miss1) {
-                ni = miss0 ? nd->right : nd->left;
-                tc = tc2[miss0];
+            q->st->pruned += 1 + (miss == 3);
+            if (miss != 3) {
+                k = nd->kid[miss == 1];
                 continue;
             }
         } else {
-            csg_object(q, ni, tc, best, found);
+            csg_object(q, ~k, best, found);
             if (q->any && *found)
                 return 1;
         }
@@ -566,8 +608,7 @@ static int csg_nearest(csg_query *q, int ni, num tc, csg_todo *todo, csg_hit *be
                 return 0;
             n--;
         } while (todo[n].tin > q->tmax_d);
-        ni = todo[n].node;
-        tc = todo[n].tc;
+        k = todo[n].kid;
     }
 }
 
@@ -575,12 +616,10 @@ static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num
                          arena *ar, geom_stats *st, csg_hit *hit)
 {
     csg_query q;
-    num tc;
-    double tin;
     int found = 0;
     size_t mark;
     csg_todo *todo;
-    if (c->root < 0)
+    if (c->nobjects == 0)
         return 0;
     q.c = c;
     q.prims = prims;
@@ -591,12 +630,11 @@ static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num
     q.ar = ar;
     q.st = st;
     mark = arena_mark(ar);
-    if (!(todo = arena_alloc(ar, c->groups * sizeof *todo + 1))) {
+    if (!(todo = arena_alloc(ar, (size_t)(c->objtree.depth + 1) * sizeof *todo))) {
         st->arena_full++;
         return 0;
     }
-    if (!csg_bounds_miss(&q, &c->nodes[c->root], NUM_ZERO, tmax, &tc, &tin))
-        csg_nearest(&q, c->root, tc, todo, hit, &found);
+    csg_nearest(&q, todo, hit, &found);
     arena_release(ar, mark);
     return found;
 }

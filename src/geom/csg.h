@@ -8,17 +8,19 @@
  * culling only), and a leaf also its primitive's bounding sphere, tested in
  * the mode's arithmetic because its closest parameter is where the
  * primitive's solver starts; a ray that misses them skips the whole
- * subtree, so a slab minus N cylinders costs O(log N) per ray, not O(N). Each rendered object (scene root) is a solid of its own: the
- * objects form a tree of CSG_GROUP nodes, bounded like unions, where the
- * nearest surface of any object wins instead of a span merge.
+ * subtree, so a slab minus N cylinders costs O(log N) per ray, not O(N).
+ * Each rendered object (scene root) is a solid of its own: the bounded
+ * ones are the items of a hierarchy of boxes (util/bvh.h) walked nearest
+ * first, and the nearest surface of any object wins instead of a span
+ * merge.
  * Modal: compiled per numeric mode. */
 #ifndef GEOM_CSG_H
 #define GEOM_CSG_H
 #include "geom/prim.h"
 #include "util/arena.h"
+#include "util/bvh.h"
 
 #define CSG_MAX_NEST 256     /* operator alternations allowed along a path */
-#define CSG_GROUP (CSG_DIFF + 1)   /* compiled only: a set of separate objects */
 /* Bounding boxes are padded outwards by this much (normalised units): far
  * above the rounding of the binary64 box test and of the mode's surface
  * points, whose coordinates stay below 2^14 (docs/numerics.md, "Culling in
@@ -33,7 +35,7 @@
 #endif
 
 typedef struct csg_node {
-    int op;                  /* CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF, CSG_GROUP */
+    int op;                  /* CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF */
     int left, right;         /* operator operands (compiled node indices) */
     int prim;                /* leaf: primitive index */
     int bounded;
@@ -45,14 +47,16 @@ typedef struct csg_node {
 typedef struct csg {
     csg_node *nodes;
     int nnodes;
-    int root;                /* -1: nothing to render */
+    int *objects;            /* each object's compiled root: the bounded ones
+                                (the hierarchy's items) first */
+    int nobjects, nbounded;
+    bvh objtree;             /* over objects[0 .. nbounded - 1] */
     size_t peak_spans;       /* span storage one query needs at most */
-    size_t groups;           /* CSG_GROUP nodes on the deepest path */
 } csg;
 
-/* A subtree the traversal will visit if the far end still allows: its
- * node, its leaf's closest parameter and its bounds' entry parameter. */
-typedef struct csg_todo { int node; num tc; double tin; } csg_todo;
+/* A child of the object hierarchy (bvh.h) that the traversal will visit
+ * if the far end still allows, and where the ray enters its box. */
+typedef struct csg_todo { int kid; double tin; } csg_todo;
 
 /* The nearest surface crossing along a ray. */
 typedef struct csg_hit {

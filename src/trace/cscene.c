@@ -245,7 +245,6 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     if (!cs)
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
     cs->sc = sc;
-    cs->tree.root = -1;
     if ((status = cscene_normalise(sc, &cs->nm, err)) != 0)
         goto fail;
     status = DIAG_INPUT;

@@ -140,13 +140,19 @@ static int probe_refract(const double *d, const double *n, double eta, double *t
 
 static void probe_unbox(void *v)
 {
-    probe_cs *p = v;
-    int i, k;
-    for (i = 0; i < p->cs->tree.nnodes; i++)
+    csg *t = &((probe_cs *)v)->cs->tree;
+    int i, k, j;
+    for (i = 0; i < t->nnodes; i++)
         for (k = 0; k < 3; k++) {
-            p->cs->tree.nodes[i].lo[k] = -HUGE_VAL;
-            p->cs->tree.nodes[i].hi[k] = HUGE_VAL;
+            t->nodes[i].lo[k] = -HUGE_VAL;
+            t->nodes[i].hi[k] = HUGE_VAL;
         }
+    for (i = 0; i < t->objtree.nnodes; i++)
+        for (k = 0; k < 3; k++)
+            for (j = 0; j < 2; j++) {
+                t->objtree.nodes[i].lo[k][j] = -HUGE_VAL;
+                t->objtree.nodes[i].hi[k][j] = HUGE_VAL;
+            }
 }
 
 const probe_ops NS(probe_ops) = {

@@ -1,4 +1,5 @@
-/* test_util — the allocation hook and first-error diagnostics (src/util). */
+/* test_util — the allocation hook, first-error diagnostics and the box
+ * hierarchy builder (src/util). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -6,6 +7,7 @@
 #include "support.h"
 #include "util/diag.h"
 #include "util/mem.h"
+#include "util/bvh.h"
 #include <string.h>
 
 /* Zero-byte requests return distinct valid pointers; NULL means failure. */
@@ -65,12 +67,93 @@ static void test_util_diag_first_error_and_forms(void **state)
     assert_string_equal(buf, "f: error: gone");
 }
 
+/* Checks the subtree at child index k: every item under it is within the
+ * box the parent holds for it, each item is seen once; returns the depth
+ * in nodes. */
+static int util_bvh_walk(const bvh *b, int k, const double *plo, const double *phi,
+                         double (*lo)[3], double (*hi)[3], int *seen, long *bad)
+{
+    int j, a, d[2];
+    if (k < 0) {
+        seen[~k]++;
+        for (a = 0; a < 3; a++)
+            if (lo[~k][a] < plo[a] || hi[~k][a] > phi[a])
+                (*bad)++;
+        return 0;
+    }
+    for (j = 0; j < 2; j++) {
+        double clo[3], chi[3];
+        for (a = 0; a < 3; a++) {
+            clo[a] = b->nodes[k].lo[a][j];
+            chi[a] = b->nodes[k].hi[a][j];
+            if (clo[a] < plo[a] || chi[a] > phi[a])
+                (*bad)++;
+        }
+        d[j] = util_bvh_walk(b, b->nodes[k].kid[j], clo, chi, lo, hi, seen, bad);
+    }
+    return 1 + (d[0] > d[1] ? d[0] : d[1]);
+}
+
+/* Random boxes, a grid, coincident centres and one item: every item once,
+ * each within its parent's box for it, n - 1 nodes, the recorded depth
+ * true and below BVH_SAH_DEPTH + log2(n) + 1; a failed allocation leaves
+ * nothing built. */
+static void test_util_bvh_covers_every_item_once(void **state)
+{
+    enum { N = 3000 };
+    static double lo[N][3], hi[N][3];
+    static int seen[N];
+    const double inf[3] = {-1e308, -1e308, -1e308}, sup[3] = {1e308, 1e308, 1e308};
+    uint64_t s = test_seed("test_util_bvh_covers_every_item_once");
+    size_t sizes[] = {1, 2, 3, 17, N}, c;
+    int shape, i, a;
+    (void)state;
+    for (shape = 0; shape < 3; shape++)
+        for (c = 0; c < sizeof sizes / sizeof sizes[0]; c++) {
+            size_t n = sizes[c];
+            bvh b;
+            long bad = 0;
+            int depth, log2n = 0;
+            for (i = 0; i < (int)n; i++)
+                for (a = 0; a < 3; a++) {
+                    double x = shape == 0 ? test_uniform(&s, -100, 100)
+                             : shape == 1 ? (a == 0 ? i % 55 : a == 1 ? i / 55 : 0) * 3.0 : 7;
+                    double w = shape == 0 ? test_uniform(&s, 0, 5) : 1;
+                    lo[i][a] = x - w;
+                    hi[i][a] = x + w;
+                }
+            assert_int_equal(bvh_build((const double (*)[3])lo, (const double (*)[3])hi, n, &b), 0);
+            assert_int_equal(b.nnodes, (int)n - 1);
+            memset(seen, 0, sizeof seen);
+            depth = util_bvh_walk(&b, b.root, inf, sup, lo, hi, seen, &bad);
+            assert_int_equal(bad, 0);
+            for (i = 0; i < (int)n; i++)
+                assert_int_equal(seen[i], 1);
+            assert_int_equal(depth, b.depth);
+            while (((size_t)1 << log2n) < n)
+                log2n++;
+            assert_true(b.depth <= BVH_SAH_DEPTH + log2n + 1);
+            if (shape == 1 && n == N)      /* a grid: about balanced */
+                assert_true(b.depth <= 2 * log2n);
+            bvh_free(&b);
+        }
+    for (i = 0; i < 3; i++) {
+        bvh b;
+        memset(&b, 0, sizeof b);
+        mem_fail_after(i);
+        assert_int_equal(bvh_build((const double (*)[3])lo, (const double (*)[3])hi, 50, &b), -1);
+        mem_fail_after(-1);
+        assert_null(b.nodes);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_util_mem_zero_bytes),
         cmocka_unit_test(test_util_mem_fail_and_overflow),
         cmocka_unit_test(test_util_diag_first_error_and_forms),
+        cmocka_unit_test(test_util_bvh_covers_every_item_once),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
