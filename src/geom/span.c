@@ -18,10 +18,10 @@
 #define SPAN_E1 (1.0 / 1099511627776.0)
 #endif
 
-static num span_eps(num t) { return num_add(SPAN_E0, num_mul(num_abs(t), SPAN_E1)); }
+static inline num span_eps(num t) { return num_add(SPAN_E0, num_mul(num_abs(t), SPAN_E1)); }
 
 /* Result membership for the operator given operand memberships. */
-static int span_op(int op, int ina, int inb)
+static inline int span_op(int op, int ina, int inb)
 {
     switch (op) {
     case CSG_UNION: return ina || inb;
@@ -31,7 +31,7 @@ static int span_op(int op, int ina, int inb)
 }
 
 /* Parameter of the next boundary of list l at cursor i with state in. */
-static num span_next_t(const span *l, int i, int in)
+static inline num span_next_t(const span *l, int i, int in)
 {
     return in ? l[i].b.t : l[i].a.t;
 }
@@ -39,7 +39,7 @@ static num span_next_t(const span *l, int i, int in)
 /* Consumes every boundary of list l at parameters up to lim, updating the
  * cursor and state; returns the last consumed end (NULL if none). A span of
  * l shorter than the window is entered and left in one step: it vanishes. */
-static const span_end *span_take(const span *l, int n, int *i, int *in, num lim)
+static inline const span_end *span_take(const span *l, int n, int *i, int *in, num lim)
 {
     const span_end *e = NULL;
     while (*i < n && span_next_t(l, *i, *in) <= lim) {
