@@ -42,13 +42,29 @@ static void prim_box(prim *p, int kind)
     }
 }
 
+/* 1 when plane i of p has exactly the negated normal of plane i - 1 (the
+ * opposite faces of a block, a cylinder's or cone's two caps). */
+static int prim_plane_flip(const prim *p, int i)
+{
+    const vec3 *a, *b;
+    if (i == 0)
+        return 0;
+    a = &p->pl[i].n;
+    b = &p->pl[i - 1].n;
+    return a->x == num_neg(b->x) && a->y == num_neg(b->y) && a->z == num_neg(b->z);
+}
+
 /* Rounds plane i of p from its double form to num and records the face's
- * double normal for shading. */
+ * double normal for shading; then marks the planes whose normal is exactly
+ * the negation of the previous one's (prim_clip_planes). */
 static void prim_round_plane(prim *p, int i)
 {
+    int k;
     p->pl[i].n = vec3_from_d(p->pl_d[i]);
     p->pl[i].d = num_from_d(p->pl_d[i][3]);
     memcpy(p->pn_d[p->pl[i].face], p->pl_d[i], 3 * sizeof(double));
+    for (k = i; k <= i + 1 && k < p->nplanes; k++)
+        p->flips = (p->flips & ~(1u << k)) | (unsigned)prim_plane_flip(p, k) << k;
 }
 
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
@@ -397,16 +413,30 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
 /* Intersects the span s with the half-spaces of p's planes. 0 if empty.
  * The entry and exit candidates are kept as fractions (positive
  * denominators) and compared by cross products, so only the two winners
- * are divided; an entry at or beyond the exit ends the test early. */
+ * are divided; an entry at or beyond the exit ends the test early. A plane
+ * whose normal is the previous one's negated (p->flips) takes that plane's two
+ * dot products negated: every mode rounds symmetrically, so they are the
+ * values its own dot products give (up to the sign of a zero, which no
+ * step below can see: zeros compare equal and a zero numerator divides to
+ * NUM_ZERO; and in q16 up to saturation, which n.o cannot reach, |o| <
+ * 16,100 in docs/numerics.md). */
 static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
 {
     const num big = num_from_i(GEOM_TBIG);
-    num an = NUM_ZERO, ad = NUM_ZERO, bn = NUM_ZERO, bd = NUM_ZERO, t;
+    num an = NUM_ZERO, ad = NUM_ZERO, bn = NUM_ZERO, bd = NUM_ZERO, dn = NUM_ZERO, on = NUM_ZERO, t;
     int af = PRIM_FACE_NONE, bf = PRIM_FACE_NONE, k;
     for (k = 0; k < p->nplanes; k++) {
         const prim_plane *pl = &p->pl[k];
-        num den = vec3_dot(pl->n, r->d);
-        num nm = num_sub(pl->d, vec3_dot(pl->n, r->o));
+        num den, nm;
+        if (p->flips >> k & 1) {
+            dn = num_neg(dn);
+            on = num_neg(on);
+        } else {
+            dn = vec3_dot(pl->n, r->d);
+            on = vec3_dot(pl->n, r->o);
+        }
+        den = dn;
+        nm = num_sub(pl->d, on);
         if (den == NUM_ZERO) {
             if (nm < NUM_ZERO)
                 return 0;
