@@ -151,6 +151,9 @@ static inline void vec3_to_d(vec3 v, double *d) { d[0] = num_to_d(v.x); d[1] = n
  * yields +-lim with the quotient's sign; 0/0 is 0. lim must be >= 1. */
 VEC_HOT num num_div_clamp(num a, num b, num lim)
 {
+#if defined(NUM_MODE_q16)
+    return fx16_div_clamp(a, b, lim);
+#else
     num aa = num_abs(a), ab = num_abs(b);
     int neg = (a < NUM_ZERO) != (b < NUM_ZERO);
     if (aa == NUM_ZERO)
@@ -163,6 +166,7 @@ VEC_HOT num num_div_clamp(num a, num b, num lim)
         if (q < num_neg(lim)) return num_neg(lim);
         return q;
     }
+#endif
 }
 
 /* Per-ray reciprocals of the direction components, so slab tests multiply

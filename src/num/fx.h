@@ -151,6 +151,28 @@ static inline int64_t fx_shr_round(int64_t v, int k)
     return v >= 0 ? (v + h) >> k : -((-v + h) >> k);
 }
 
+/* a/b rounded to nearest (ties away from zero) and clamped to [-lim, lim],
+ * for FX16_ONE <= lim: num_div_clamp of Q16.16 (geom/vec.h), worked on
+ * 64-bit magnitudes, so the rounding, the sign and the clamp need one
+ * division and no saturation. The values are those of the saturating form
+ * (|a| >= |b| lim when |b| < 1, else the quotient, clamped), and so are the
+ * overflow counts for lim <= 2^30, except that a or b = FX16_MIN (itself a
+ * saturated value) no longer counts a second overflow. */
+static inline fx16 fx16_div_clamp(fx16 a, fx16 b, fx16 lim)
+{
+    int64_t ua = a < 0 ? -(int64_t)a : a, ub = b < 0 ? -(int64_t)b : b, q;
+    if (ua == 0)
+        return 0;
+    if (ub == 0 || (ub < FX16_ONE && ua >= fx_shr_round(ub * lim, 16))) {
+        q = lim;
+    } else {
+        q = ((ua << 17) + ub) / (2 * ub);            /* round(|a| 2^16 / |b|) */
+        if (q > lim)
+            q = lim;
+    }
+    return (fx16)((a < 0) != (b < 0) ? -q : q);
+}
+
 static inline fx32 fx32_add(fx32 a, fx32 b)
 {
     if ((b > 0 && a > FX32_MAX - b) || (b < 0 && a < FX32_MIN - b)) {
