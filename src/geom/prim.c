@@ -475,7 +475,7 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     prim_piece pc[2];
     int npc = 1, k, side = p->kind == PRIM_SPHERE ? PRIM_FACE_SPHERE_SURFACE : PRIM_FACE_CYL_SIDE;
 
-    if (vec3_unit(mat3_mul(&p->minv_s, r->d), &du, &L, &rL))
+    if (vec3_unit(mat3_mul(&p->minv_s, r->d), &du, p->kind == PRIM_SPHERE ? NULL : &L, &rL))
         return 0;
     ratio = num_mul(p->smin, rL);      /* world parameter per local one */
     cl = vec3_make(NUM_ZERO, NUM_ZERO, p->kind == PRIM_SPHERE ? NUM_ZERO : NUM_HALF);
@@ -483,10 +483,14 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     rel = vec3_sub(vec3_madd(ol, sh, du), cl);
     if (vec3_maxabs(rel) > two)
         return 0;
-    /* br / ratio = br |minv_s d| / smin */
-    lim = num_add(num_mul_clamp(num_mul(p->br, L), p->inv_smin, num_from_i(GEOM_TBIG)), num_abs(sh));
-    if (lim < one)
-        lim = one;
+    /* the bound of the roots, br / ratio = br |minv_s d| / smin (a sphere's
+     * roots are within 1 and need none) */
+    lim = one;
+    if (p->kind != PRIM_SPHERE) {
+        lim = num_add(num_mul_clamp(num_mul(p->br, L), p->inv_smin, num_from_i(GEOM_TBIG)), num_abs(sh));
+        if (lim < one)
+            lim = one;
+    }
     pc[0].f0 = pc[0].f1 = 1;
 
     if (p->kind == PRIM_SPHERE) {
