@@ -132,11 +132,23 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
 
 static inline int vec3_normalize(vec3 v, vec3 *unit, num *len) { return vec3_unit(v, unit, len, NULL); }
 
+/* q16: each row's three rounded products summed in 64 bits and saturated
+ * once: the chained saturating form's value unless one of its partial sums
+ * leaves the range while the row does not. With rows of norm at most 1
+ * (minv_s, the only matrix multiplied) every partial sum is at most |v| by
+ * Cauchy-Schwarz, so that needs |v| >= 32768, beyond every vector prim_side
+ * maps (docs/numerics.md). */
 VEC_HOT vec3 mat3_mul(const mat3 *a, vec3 v)
 {
+#if defined(NUM_MODE_q16)
+    return vec3_make(fx16_sat(fx16_mul_wide(a->m[0], v.x) + fx16_mul_wide(a->m[1], v.y) + fx16_mul_wide(a->m[2], v.z)),
+                     fx16_sat(fx16_mul_wide(a->m[3], v.x) + fx16_mul_wide(a->m[4], v.y) + fx16_mul_wide(a->m[5], v.z)),
+                     fx16_sat(fx16_mul_wide(a->m[6], v.x) + fx16_mul_wide(a->m[7], v.y) + fx16_mul_wide(a->m[8], v.z)));
+#else
     return vec3_make(num_add(num_add(num_mul(a->m[0], v.x), num_mul(a->m[1], v.y)), num_mul(a->m[2], v.z)),
                      num_add(num_add(num_mul(a->m[3], v.x), num_mul(a->m[4], v.y)), num_mul(a->m[5], v.z)),
                      num_add(num_add(num_mul(a->m[6], v.x), num_mul(a->m[7], v.y)), num_mul(a->m[8], v.z)));
+#endif
 }
 /* transpose(a) * v */
 static inline vec3 mat3_tmul(const mat3 *a, vec3 v)

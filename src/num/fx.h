@@ -78,14 +78,18 @@ static inline fx16 fx16_sub(fx16 a, fx16 b) { return fx16_sat((int64_t)a - b); }
 static inline fx16 fx16_neg(fx16 a) { return fx16_sat(-(int64_t)a); }
 static inline fx16 fx16_abs(fx16 a) { return a < 0 ? fx16_neg(a) : a; }
 
-/* Q16.16 product, rounded to nearest (ties away from zero). |a*b| < 2^62, so
- * the int64_t product and the rounding add cannot overflow. */
-static inline fx16 fx16_mul(fx16 a, fx16 b)
+/* v / 2^k rounded to nearest, ties away from zero (k >= 1). */
+static inline int64_t fx_shr_round(int64_t v, int k)
 {
-    int64_t p = (int64_t)a * b;
-    int64_t q = p >= 0 ? (p + 32768) / 65536 : -((-p + 32768) / 65536);
-    return fx16_sat(q);
+    int64_t h = (int64_t)1 << (k - 1);
+    return v >= 0 ? (v + h) >> k : -((-v + h) >> k);
 }
+
+/* Q16.16 product, rounded to nearest (ties away from zero), not saturated:
+ * |a*b| < 2^62, so the int64_t product and the rounding add cannot
+ * overflow. Sums of these are exact (prim.c, mat3_mul). */
+static inline int64_t fx16_mul_wide(fx16 a, fx16 b) { return fx_shr_round((int64_t)a * b, 16); }
+static inline fx16 fx16_mul(fx16 a, fx16 b) { return fx16_sat(fx16_mul_wide(a, b)); }
 
 /* Quotient a/b in Q16.16: the dividend a*2^16 fits int64_t exactly. */
 static inline fx16 fx16_div(fx16 a, fx16 b)
@@ -144,12 +148,6 @@ static inline uint64_t fx_rsqrt_q30(uint64_t xs)
     return y;
 }
 
-/* v / 2^k rounded to nearest, ties away from zero (k >= 1). */
-static inline int64_t fx_shr_round(int64_t v, int k)
-{
-    int64_t h = (int64_t)1 << (k - 1);
-    return v >= 0 ? (v + h) >> k : -((-v + h) >> k);
-}
 
 /* a/b rounded to nearest (ties away from zero) and clamped to [-lim, lim],
  * for FX16_ONE <= lim: num_div_clamp of Q16.16 (geom/vec.h), worked on

@@ -19,6 +19,7 @@ static void test_fx_mul_matches_long_double(void **state)
         long double r = ref_round((long double)a * b / 65536.0L);
         unsigned long before = fx_overflows;
         fx16 got = fx16_mul(a, b);
+        assert_true((long double)fx16_mul_wide(a, b) == r);
         if (r > 2147483647.0L || r < -2147483648.0L) {
             assert_int_equal(got, r > 0 ? FX16_MAX : FX16_MIN);
             assert_true(fx_overflows == before + 1);

@@ -1,0 +1,79 @@
+/* test_vec — the Q16.16 forms of the geom/vec.h helpers that sum in 64
+ * bits and saturate once, against the step-by-step saturating forms they
+ * replace (one num_* operation at a time): the same values over random
+ * inputs within the ranges of docs/numerics.md. Checked in the q16 build. */
+#define NUM_MODE q16
+#define NUM_MODE_q16
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include "geom/vec.h"
+#include "support.h"
+
+/* Uniform in [-m, m]. */
+static double vt_uniform(uint64_t *s, double m)
+{
+    return m * (2.0 * (double)(test_rand(s) >> 11) / 9007199254740992.0 - 1.0);
+}
+
+/* A random matrix scaled to Frobenius norm 1, as prim_compile stores
+ * minv_s, with entries of random magnitude (thin and flat primitives). */
+static mat3 vt_minv(uint64_t *s)
+{
+    double m[9], f = 0;
+    mat3 a;
+    int i;
+    for (i = 0; i < 9; i++) {
+        m[i] = vt_uniform(s, 1) * pow(2.0, -(double)(test_rand(s) % 20));
+        f += m[i] * m[i];
+    }
+    for (i = 0; i < 9; i++)
+        a.m[i] = num_from_d(m[i] / sqrt(f));
+    return a;
+}
+
+/* A random vector of norm below lim, its size spread over many octaves. */
+static vec3 vt_vec(uint64_t *s, double lim)
+{
+    double m = lim / sqrt(3.0) * pow(2.0, -(double)(test_rand(s) % 24));
+    return vec3_make(num_from_d(vt_uniform(s, m)), num_from_d(vt_uniform(s, m)), num_from_d(vt_uniform(s, m)));
+}
+
+static vec3 ref_mat3_mul(const mat3 *a, vec3 v)
+{
+    return vec3_make(fx16_add(fx16_add(fx16_mul(a->m[0], v.x), fx16_mul(a->m[1], v.y)), fx16_mul(a->m[2], v.z)),
+                     fx16_add(fx16_add(fx16_mul(a->m[3], v.x), fx16_mul(a->m[4], v.y)), fx16_mul(a->m[5], v.z)),
+                     fx16_add(fx16_add(fx16_mul(a->m[6], v.x), fx16_mul(a->m[7], v.y)), fx16_mul(a->m[8], v.z)));
+}
+
+static void vt_assert_vec_equal(vec3 a, vec3 b)
+{
+    assert_int_equal(a.x, b.x);
+    assert_int_equal(a.y, b.y);
+    assert_int_equal(a.z, b.z);
+}
+
+/* mat3_mul with rows of norm at most 1 and |v| < 32768. */
+static void test_vec_mat3_mul_matches_chained(void **state)
+{
+    uint64_t s = test_seed("test_vec_mat3_mul_matches_chained");
+    unsigned long before = fx_overflows;
+    int i;
+    (void)state;
+    for (i = 0; i < 1000000; i++) {
+        mat3 a = vt_minv(&s);
+        vec3 v = vt_vec(&s, 32767);
+        vt_assert_vec_equal(mat3_mul(&a, v), ref_mat3_mul(&a, v));
+    }
+    assert_true(fx_overflows == before);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_vec_mat3_mul_matches_chained),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
