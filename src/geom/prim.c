@@ -468,8 +468,7 @@ typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
  * canonical centre, so every squared quantity is O(1) (docs/numerics.md). */
 static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
 {
-    vec3 o1 = vec3_madd(r->o, tc, r->d);
-    vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->inv_smin);
+    vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_madd_sub(r->o, tc, r->d, p->org)), p->inv_smin);
     vec3 du, cl, rel;
     num L, rL, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];
@@ -480,7 +479,7 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     ratio = num_mul(p->smin, rL);      /* world parameter per local one */
     cl = vec3_make(NUM_ZERO, NUM_ZERO, p->kind == PRIM_SPHERE ? NUM_ZERO : NUM_HALF);
     sh = vec3_dot(vec3_sub(cl, ol), du);
-    rel = vec3_sub(vec3_madd(ol, sh, du), cl);
+    rel = vec3_madd_sub(ol, sh, du, cl);
     if (vec3_maxabs(rel) > two)
         return 0;
     /* the bound of the roots, br / ratio = br |minv_s d| / smin (a sphere's
@@ -511,7 +510,7 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
             pc[0].f0 = pc[0].f1 = 0;
         } else {
             b2 = vec3_dot(r2, e);
-            perp = vec3_madd(r2, num_neg(b2), e);
+            perp = vec3_madd_sub(r2, num_neg(b2), e, vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
             if (vec3_maxabs(perp) > one)
                 return 0;
             disc = num_sub(one, vec3_dot(perp, perp));

@@ -132,6 +132,21 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
 
 static inline int vec3_normalize(vec3 v, vec3 *unit, num *len) { return vec3_unit(v, unit, len, NULL); }
 
+/* a + t*d - c: a point along a ray, measured from c. q16: each component
+ * summed in 64 bits from the rounded product and saturated once, the value
+ * of vec3_sub(vec3_madd(a, t, d), c) unless a + t*d leaves the range
+ * (prim_side's uses: docs/numerics.md). */
+VEC_HOT vec3 vec3_madd_sub(vec3 a, num t, vec3 d, vec3 c)
+{
+#if defined(NUM_MODE_q16)
+    return vec3_make(fx16_sat((int64_t)a.x + fx16_mul_wide(d.x, t) - c.x),
+                     fx16_sat((int64_t)a.y + fx16_mul_wide(d.y, t) - c.y),
+                     fx16_sat((int64_t)a.z + fx16_mul_wide(d.z, t) - c.z));
+#else
+    return vec3_sub(vec3_madd(a, t, d), c);
+#endif
+}
+
 /* q16: each row's three rounded products summed in 64 bits and saturated
  * once: the chained saturating form's value unless one of its partial sums
  * leaves the range while the row does not. With rows of norm at most 1

@@ -70,10 +70,27 @@ static void test_vec_mat3_mul_matches_chained(void **state)
     assert_true(fx_overflows == before);
 }
 
+/* vec3_madd_sub with a + t*d within range, d a unit vector, any c. */
+static void test_vec_madd_sub_matches_chained(void **state)
+{
+    uint64_t s = test_seed("test_vec_madd_sub_matches_chained");
+    int i;
+    (void)state;
+    for (i = 0; i < 1000000; i++) {
+        vec3 a = vt_vec(&s, 16000), c = vt_vec(&s, 56000), d, want;
+        num t = num_from_d(vt_uniform(&s, 16000 * pow(2.0, -(double)(test_rand(&s) % 24))));
+        while (vec3_unit(vt_vec(&s, 2), &d, NULL, NULL))
+            ;
+        want = vec3_sub(vec3_add(a, vec3_make(fx16_mul(d.x, t), fx16_mul(d.y, t), fx16_mul(d.z, t))), c);
+        vt_assert_vec_equal(vec3_madd_sub(a, t, d, c), want);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_vec_mat3_mul_matches_chained),
+        cmocka_unit_test(test_vec_madd_sub_matches_chained),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
