@@ -71,11 +71,9 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
         return -1;
 #if defined(NUM_MODE_q16)
     {
-        int64_t w[3], ss = 0;
+        int64_t w[3], ss;
         uint64_t xs, y;
-        int e = 0, k = 1, i;
-        num raw[3];
-        raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
+        int e = 0, k;
 #if defined(__GNUC__)
         e = __builtin_clz((unsigned)m) - 15;         /* top bit of m to bit 16 */
 #else
@@ -84,12 +82,18 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
         while ((m >> -e) >= 2 * FX16_ONE)            /* m < 2^31, so e >= -15 */
             e--;
 #endif
-        for (i = 0; i < 3; i++) {
-            w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
-            ss += w[i] * w[i];                          /* exact: < 13 * 2^32 */
+        if (e >= 0) {
+            w[0] = (int64_t)v.x * ((int64_t)1 << e);
+            w[1] = (int64_t)v.y * ((int64_t)1 << e);
+            w[2] = (int64_t)v.z * ((int64_t)1 << e);
+        } else {
+            w[0] = fx_shr_round(v.x, -e);
+            w[1] = fx_shr_round(v.y, -e);
+            w[2] = fx_shr_round(v.z, -e);
         }
-        while ((ss >> (2 * k)) >= ((int64_t)1 << 32))   /* ss/4^k in [2^30, 2^32) */
-            k++;
+        /* exact: the largest |w_i| is in [2^16, 2^17], so ss in [2^32, 3 2^34] */
+        ss = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+        k = ss < ((int64_t)1 << 34) ? 1 : 2;            /* ss/4^k in [2^30, 2^32) */
         xs = (uint64_t)ss >> (2 * k);
         y = fx_rsqrt_q30(xs);                           /* 2^k / sqrt(S), Q.30 */
         if (unit)

@@ -86,11 +86,88 @@ static void test_vec_madd_sub_matches_chained(void **state)
     }
 }
 
+/* vec3_unit's Q16.16 form before its scaling was unrolled and its k found
+ * from the size of the sum (the loops below). */
+static int ref_unit(vec3 v, vec3 *unit, num *len, num *rlen)
+{
+    num m = vec3_maxabs(v), raw[3];
+    int64_t w[3], ss = 0;
+    uint64_t xs, y;
+    int e = 0, k = 1, i, sh;
+    if (m == 0)
+        return -1;
+    raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
+    while (((int64_t)m << e) < FX16_ONE)
+        e++;
+    while ((m >> -e) >= 2 * FX16_ONE)
+        e--;
+    for (i = 0; i < 3; i++) {
+        w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
+        ss += w[i] * w[i];
+    }
+    while ((ss >> (2 * k)) >= ((int64_t)1 << 32))
+        k++;
+    xs = (uint64_t)ss >> (2 * k);
+    y = fx_rsqrt_q30(xs);
+    *unit = vec3_make((num)fx_shr_round(w[0] * (int64_t)y, 30 + k), (num)fx_shr_round(w[1] * (int64_t)y, 30 + k),
+                      (num)fx_shr_round(w[2] * (int64_t)y, 30 + k));
+    *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - k + e));
+    sh = 14 + k - e;
+    *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
+    return 0;
+}
+
+/* A component of random size: any bit length, sign, sometimes 0 or an end
+ * of the range. */
+static num vt_any(uint64_t *s)
+{
+    uint64_t r = test_rand(s);
+    switch (r % 16) {
+    case 0: return 0;
+    case 1: return FX16_MAX;
+    case 2: return FX16_MIN;
+    case 3: return (num)(r >> 60) - 8;
+    default: return (num)((int32_t)(r >> 32) >> (r >> 8) % 32);
+    }
+}
+
+/* vec3_unit: unit vector, length and reciprocal against the loop form, for
+ * vectors of every size (powers of two and equal components included). */
+static void test_vec_unit_matches_loops(void **state)
+{
+    uint64_t s = test_seed("test_vec_unit_matches_loops");
+    int i;
+    (void)state;
+    for (i = 0; i < 2000000; i++) {
+        vec3 v = vec3_make(vt_any(&s), vt_any(&s), vt_any(&s)), u1, u2;
+        num l1 = 0, l2 = 0, r1 = 0, r2 = 0;
+        unsigned long before, count;
+        int k1, k2;
+        if (i % 8 == 0)
+            v.y = v.z = v.x;
+        else if (i % 8 == 1)
+            v = vec3_make((num)1 << (i / 8 % 31), 0, -((num)1 << (i / 16 % 31)));
+        before = fx_overflows;
+        k1 = ref_unit(v, &u1, &l1, &r1);
+        count = fx_overflows - before;
+        before = fx_overflows;
+        k2 = vec3_unit(v, &u2, &l2, &r2);
+        assert_int_equal(k1, k2);
+        assert_true(fx_overflows - before == count);
+        if (k1 == 0) {
+            vt_assert_vec_equal(u1, u2);
+            assert_int_equal(l1, l2);
+            assert_int_equal(r1, r2);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_vec_mat3_mul_matches_chained),
         cmocka_unit_test(test_vec_madd_sub_matches_chained),
+        cmocka_unit_test(test_vec_unit_matches_loops),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
