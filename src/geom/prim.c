@@ -42,21 +42,36 @@ static void prim_box(prim *p, int kind)
     }
 }
 
-/* 1 when plane i of p has exactly the negated normal of plane i - 1 (the
- * opposite faces of a block, a cylinder's or cone's two caps). */
-static int prim_plane_flip(const prim *p, int i)
+/* How prim_clip_planes forms a plane's n.d and n.o (prim->dots, 4 bits a
+ * plane): two dot products; the previous plane's, negated, when n is
+ * exactly its normal negated (the opposite faces of a block, a cylinder's
+ * or cone's two caps); or the ray's own component when n is exactly a
+ * coordinate axis: every mode forms 1 * c + 0 * c' + 0 * c'' exactly (up
+ * to the sign of a zero). */
+enum { PRIM_DOT_FULL, PRIM_DOT_FLIP, PRIM_DOT_X, PRIM_DOT_Y, PRIM_DOT_Z,
+       PRIM_DOT_NX, PRIM_DOT_NY, PRIM_DOT_NZ };
+
+static int prim_dot_code(const prim *p, int i)
 {
-    const vec3 *a, *b;
-    if (i == 0)
-        return 0;
-    a = &p->pl[i].n;
-    b = &p->pl[i - 1].n;
-    return a->x == num_neg(b->x) && a->y == num_neg(b->y) && a->z == num_neg(b->z);
+    const vec3 *a = &p->pl[i].n, *b;
+    num z = NUM_ZERO, one = NUM_ONE, mone = num_neg(NUM_ONE);
+    if (i > 0) {
+        b = &p->pl[i - 1].n;
+        if (a->x == num_neg(b->x) && a->y == num_neg(b->y) && a->z == num_neg(b->z))
+            return PRIM_DOT_FLIP;
+    }
+    if (a->y == z && a->z == z && (a->x == one || a->x == mone))
+        return a->x == one ? PRIM_DOT_X : PRIM_DOT_NX;
+    if (a->x == z && a->z == z && (a->y == one || a->y == mone))
+        return a->y == one ? PRIM_DOT_Y : PRIM_DOT_NY;
+    if (a->x == z && a->y == z && (a->z == one || a->z == mone))
+        return a->z == one ? PRIM_DOT_Z : PRIM_DOT_NZ;
+    return PRIM_DOT_FULL;
 }
 
 /* Rounds plane i of p from its double form to num and records the face's
- * double normal for shading; then marks the planes whose normal is exactly
- * the negation of the previous one's (prim_clip_planes). */
+ * double normal for shading; then sets how the clip forms its dot products
+ * and the next plane's, which may refer to it. */
 static void prim_round_plane(prim *p, int i)
 {
     int k;
@@ -64,7 +79,7 @@ static void prim_round_plane(prim *p, int i)
     p->pl[i].d = num_from_d(p->pl_d[i][3]);
     memcpy(p->pn_d[p->pl[i].face], p->pl_d[i], 3 * sizeof(double));
     for (k = i; k <= i + 1 && k < p->nplanes; k++)
-        p->flips = (p->flips & ~(1u << k)) | (unsigned)prim_plane_flip(p, k) << k;
+        p->dots = (p->dots & ~(15u << 4 * k)) | (unsigned)prim_dot_code(p, k) << 4 * k;
 }
 
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
@@ -413,13 +428,12 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
 /* Intersects the span s with the half-spaces of p's planes. 0 if empty.
  * The entry and exit candidates are kept as fractions (positive
  * denominators) and compared by cross products, so only the two winners
- * are divided; an entry at or beyond the exit ends the test early. A plane
- * whose normal is the previous one's negated (p->flips) takes that plane's two
- * dot products negated: every mode rounds symmetrically, so they are the
- * values its own dot products give (up to the sign of a zero, which no
- * step below can see: zeros compare equal and a zero numerator divides to
- * NUM_ZERO; and in q16 up to saturation, which n.o cannot reach, |o| <
- * 16,100 in docs/numerics.md). */
+ * are divided; an entry at or beyond the exit ends the test early. The dot
+ * products n.d and n.o are formed as p->dots says: the shortcuts give the
+ * values of the dot products themselves (every mode rounds symmetrically)
+ * up to the sign of a zero, which no step below can see (zeros compare
+ * equal and a zero numerator divides to NUM_ZERO), and in q16 up to
+ * saturation, which n.o cannot reach (|o| < 16,100, docs/numerics.md). */
 static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
 {
     const num big = num_from_i(GEOM_TBIG);
@@ -428,12 +442,15 @@ static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
     for (k = 0; k < p->nplanes; k++) {
         const prim_plane *pl = &p->pl[k];
         num den, nm;
-        if (p->flips >> k & 1) {
-            dn = num_neg(dn);
-            on = num_neg(on);
-        } else {
-            dn = vec3_dot(pl->n, r->d);
-            on = vec3_dot(pl->n, r->o);
+        switch (p->dots >> 4 * k & 15) {
+        case PRIM_DOT_FLIP: dn = num_neg(dn); on = num_neg(on); break;
+        case PRIM_DOT_X: dn = r->d.x; on = r->o.x; break;
+        case PRIM_DOT_Y: dn = r->d.y; on = r->o.y; break;
+        case PRIM_DOT_Z: dn = r->d.z; on = r->o.z; break;
+        case PRIM_DOT_NX: dn = num_neg(r->d.x); on = num_neg(r->o.x); break;
+        case PRIM_DOT_NY: dn = num_neg(r->d.y); on = num_neg(r->o.y); break;
+        case PRIM_DOT_NZ: dn = num_neg(r->d.z); on = num_neg(r->o.z); break;
+        default: dn = vec3_dot(pl->n, r->d); on = vec3_dot(pl->n, r->o); break;
         }
         den = dn;
         nm = num_sub(pl->d, on);

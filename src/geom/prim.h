@@ -56,7 +56,7 @@ typedef struct prim {
     num smin;          /* 1 / frobenius norm of canonical_from_world */
     num inv_smin;      /* its reciprocal (the frobenius norm) */
     num cone_a, cone_k;/* cone radius at canonical z: a + k z */
-    unsigned flips;    /* bit k: pl[k].n is exactly pl[k - 1].n negated */
+    unsigned dots;     /* bits 4k..4k+3: how pl[k]'s dot products are formed */
     /* double copies for surface evaluation */
     double a_d[9], ainv_d[9], org_d[3], pn_d[6][3];
     double pl_d[6][4]; /* planes in double (n, d), in pl's order */
