@@ -42,7 +42,7 @@ static void prim_box(prim *p, int kind)
     }
 }
 
-/* How prim_clip_planes forms a plane's n.d and n.o (prim->dots, 4 bits a
+/* How prim_clip_planes forms a plane's n.d and n.o (prim->fast, 4 bits a
  * plane): two dot products; the previous plane's, negated, when n is
  * exactly its normal negated (the opposite faces of a block, a cylinder's
  * or cone's two caps); or the ray's own component when n is exactly a
@@ -79,7 +79,28 @@ static void prim_round_plane(prim *p, int i)
     p->pl[i].d = num_from_d(p->pl_d[i][3]);
     memcpy(p->pn_d[p->pl[i].face], p->pl_d[i], 3 * sizeof(double));
     for (k = i; k <= i + 1 && k < p->nplanes; k++)
-        p->dots = (p->dots & ~(15u << 4 * k)) | (unsigned)prim_dot_code(p, k) << 4 * k;
+        p->fast = (p->fast & ~(15u << 4 * k)) | (unsigned)prim_dot_code(p, k) << 4 * k;
+}
+
+/* For prim->fast's top byte: PRIM_COLS | row i's column in bits 2i, 2i + 1
+ * when each row of m has a single nonzero entry (a primitive placed without
+ * rotation, or turned by right angles: the rounded cosines of 90 degrees
+ * are zeros), else 0. */
+#define PRIM_COLS 64u
+static unsigned prim_cols(const mat3 *m)
+{
+    unsigned cols = PRIM_COLS;
+    int i, j, nz;
+    for (i = 0; i < 3; i++) {
+        for (nz = 0, j = 0; j < 3; j++)
+            if (m->m[3 * i + j] != NUM_ZERO) {
+                nz++;
+                cols |= (unsigned)j << 2 * i;
+            }
+        if (nz != 1)
+            return 0;
+    }
+    return cols;
 }
 
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
@@ -184,6 +205,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
     frob = sqrt(frob);
     for (i = 0; i < 9; i++)
         p.minv_s.m[i] = num_from_d(p.ainv_d[i] / frob);
+    p.fast = prim_cols(&p.minv_s) << 24;
     p.smin = num_from_d(1.0 / frob);
     p.inv_smin = num_from_d(frob);
     p.org = vec3_from_d(p.org_d);
@@ -376,6 +398,7 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
             b->br = a->br;
             b->org = a->org;
             b->minv_s = a->minv_s;
+            b->fast = (b->fast & 0xffffffu) | (a->fast & ~0xffffffu);
             b->smin = a->smin;
             b->inv_smin = a->inv_smin;
         }
@@ -429,7 +452,7 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
  * The entry and exit candidates are kept as fractions (positive
  * denominators) and compared by cross products, so only the two winners
  * are divided; an entry at or beyond the exit ends the test early. The dot
- * products n.d and n.o are formed as p->dots says: the shortcuts give the
+ * products n.d and n.o are formed as p->fast says: the shortcuts give the
  * values of the dot products themselves (every mode rounds symmetrically)
  * up to the sign of a zero, which no step below can see (zeros compare
  * equal and a zero numerator divides to NUM_ZERO), and in q16 up to
@@ -442,7 +465,7 @@ static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
     for (k = 0; k < p->nplanes; k++) {
         const prim_plane *pl = &p->pl[k];
         num den, nm;
-        switch (p->dots >> 4 * k & 15) {
+        switch (p->fast >> 4 * k & 15) {
         case PRIM_DOT_FLIP: dn = num_neg(dn); on = num_neg(on); break;
         case PRIM_DOT_X: dn = r->d.x; on = r->o.x; break;
         case PRIM_DOT_Y: dn = r->d.y; on = r->o.y; break;
@@ -474,6 +497,24 @@ static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
     return s->a.t < s->b.t;
 }
 
+/* minv_s v. q16: where each row of minv_s has a single nonzero entry
+ * (prim_cols), that entry's rounded product alone: mat3_mul's sum of it and
+ * two zero products, without them. */
+VEC_HOT vec3 prim_map(const prim *p, vec3 v)
+{
+#if defined(NUM_MODE_q16)
+    unsigned cols = p->fast >> 24;
+    if (cols) {
+        const num *m = p->minv_s.m;
+        unsigned c0 = cols & 3, c1 = cols >> 2 & 3, c2 = cols >> 4 & 3;
+        num c[3];
+        c[0] = v.x; c[1] = v.y; c[2] = v.z;
+        return vec3_make(num_mul(m[c0], c[c0]), num_mul(m[3 + c1], c[c1]), num_mul(m[6 + c2], c[c2]));
+    }
+#endif
+    return mat3_mul(&p->minv_s, v);
+}
+
 /* Local interval [s0,s1] of the curved face, with flags saying whether each
  * end is a real surface point (1) or the clamp (0). Up to two pieces. */
 typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
@@ -485,13 +526,13 @@ typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
  * canonical centre, so every squared quantity is O(1) (docs/numerics.md). */
 static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
 {
-    vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_madd_sub(r->o, tc, r->d, p->org)), p->inv_smin);
+    vec3 ol = vec3_scale(prim_map(p, vec3_madd_sub(r->o, tc, r->d, p->org)), p->inv_smin);
     vec3 du, cl, rel;
     num L, rL, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];
     int npc = 1, k, side = p->kind == PRIM_SPHERE ? PRIM_FACE_SPHERE_SURFACE : PRIM_FACE_CYL_SIDE;
 
-    if (vec3_unit(mat3_mul(&p->minv_s, r->d), &du, p->kind == PRIM_SPHERE ? NULL : &L, &rL))
+    if (vec3_unit(prim_map(p, r->d), &du, p->kind == PRIM_SPHERE ? NULL : &L, &rL))
         return 0;
     ratio = num_mul(p->smin, rL);      /* world parameter per local one */
     cl = vec3_make(NUM_ZERO, NUM_ZERO, p->kind == PRIM_SPHERE ? NUM_ZERO : NUM_HALF);

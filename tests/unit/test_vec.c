@@ -48,6 +48,8 @@ static vec3 ref_mat3_mul(const mat3 *a, vec3 v)
                      fx16_add(fx16_add(fx16_mul(a->m[6], v.x), fx16_mul(a->m[7], v.y)), fx16_mul(a->m[8], v.z)));
 }
 
+static num vt_any(uint64_t *s);
+
 static void vt_assert_vec_equal(vec3 a, vec3 b)
 {
     assert_int_equal(a.x, b.x);
@@ -68,6 +70,29 @@ static void test_vec_mat3_mul_matches_chained(void **state)
         vt_assert_vec_equal(mat3_mul(&a, v), ref_mat3_mul(&a, v));
     }
     assert_true(fx_overflows == before);
+}
+
+/* mat3_mul of a matrix with one nonzero entry a row is that entry's product
+ * (prim_map's shortcut), over the whole range of v. */
+static void test_vec_mat3_mul_single_entries(void **state)
+{
+    uint64_t s = test_seed("test_vec_mat3_mul_single_entries");
+    int i, r;
+    (void)state;
+    for (i = 0; i < 1000000; i++) {
+        mat3 a = vt_minv(&s);
+        vec3 v = vec3_make(vt_any(&s), vt_any(&s), vt_any(&s)), want;
+        num c[3], w[3];
+        int col[3];
+        c[0] = v.x; c[1] = v.y; c[2] = v.z;
+        for (r = 0; r < 3; r++) {
+            col[r] = (int)(test_rand(&s) % 3);
+            a.m[3 * r + (col[r] + 1) % 3] = a.m[3 * r + (col[r] + 2) % 3] = 0;
+            w[r] = fx16_mul(a.m[3 * r + col[r]], c[col[r]]);
+        }
+        want = vec3_make(w[0], w[1], w[2]);
+        vt_assert_vec_equal(mat3_mul(&a, v), want);
+    }
 }
 
 /* vec3_madd_sub with a + t*d within range, d a unit vector, any c. */
@@ -166,6 +191,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_vec_mat3_mul_matches_chained),
+        cmocka_unit_test(test_vec_mat3_mul_single_entries),
         cmocka_unit_test(test_vec_madd_sub_matches_chained),
         cmocka_unit_test(test_vec_unit_matches_loops),
     };
