@@ -42,13 +42,65 @@ static void prim_box(prim *p, int kind)
     }
 }
 
+/* How prim_clip_planes forms a plane's n.d and n.o (prim->fast, 4 bits a
+ * plane): two dot products; the previous plane's, negated, when n is
+ * exactly its normal negated (the opposite faces of a block, a cylinder's
+ * or cone's two caps); or the ray's own component when n is exactly a
+ * coordinate axis: every mode forms 1 * c + 0 * c' + 0 * c'' exactly (up
+ * to the sign of a zero). */
+enum { PRIM_DOT_FULL, PRIM_DOT_FLIP, PRIM_DOT_X, PRIM_DOT_Y, PRIM_DOT_Z,
+       PRIM_DOT_NX, PRIM_DOT_NY, PRIM_DOT_NZ };
+
+static int prim_dot_code(const prim *p, int i)
+{
+    const vec3 *a = &p->pl[i].n, *b;
+    num z = NUM_ZERO, one = NUM_ONE, mone = num_neg(NUM_ONE);
+    if (i > 0) {
+        b = &p->pl[i - 1].n;
+        if (a->x == num_neg(b->x) && a->y == num_neg(b->y) && a->z == num_neg(b->z))
+            return PRIM_DOT_FLIP;
+    }
+    if (a->y == z && a->z == z && (a->x == one || a->x == mone))
+        return a->x == one ? PRIM_DOT_X : PRIM_DOT_NX;
+    if (a->x == z && a->z == z && (a->y == one || a->y == mone))
+        return a->y == one ? PRIM_DOT_Y : PRIM_DOT_NY;
+    if (a->x == z && a->y == z && (a->z == one || a->z == mone))
+        return a->z == one ? PRIM_DOT_Z : PRIM_DOT_NZ;
+    return PRIM_DOT_FULL;
+}
+
 /* Rounds plane i of p from its double form to num and records the face's
- * double normal for shading. */
+ * double normal for shading; then sets how the clip forms its dot products
+ * and the next plane's, which may refer to it. */
 static void prim_round_plane(prim *p, int i)
 {
+    int k;
     p->pl[i].n = vec3_from_d(p->pl_d[i]);
     p->pl[i].d = num_from_d(p->pl_d[i][3]);
     memcpy(p->pn_d[p->pl[i].face], p->pl_d[i], 3 * sizeof(double));
+    for (k = i; k <= i + 1 && k < p->nplanes; k++)
+        p->fast = (p->fast & ~(15u << 4 * k)) | (unsigned)prim_dot_code(p, k) << 4 * k;
+}
+
+/* For prim->fast's top byte: PRIM_COLS | row i's column in bits 2i, 2i + 1
+ * when each row of m has a single nonzero entry (a primitive placed without
+ * rotation, or turned by right angles: the rounded cosines of 90 degrees
+ * are zeros), else 0. */
+#define PRIM_COLS 64u
+static unsigned prim_cols(const mat3 *m)
+{
+    unsigned cols = PRIM_COLS;
+    int i, j, nz;
+    for (i = 0; i < 3; i++) {
+        for (nz = 0, j = 0; j < 3; j++)
+            if (m->m[3 * i + j] != NUM_ZERO) {
+                nz++;
+                cols |= (unsigned)j << 2 * i;
+            }
+        if (nz != 1)
+            return 0;
+    }
+    return cols;
 }
 
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
@@ -153,6 +205,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
     frob = sqrt(frob);
     for (i = 0; i < 9; i++)
         p.minv_s.m[i] = num_from_d(p.ainv_d[i] / frob);
+    p.fast = prim_cols(&p.minv_s) << 24;
     p.smin = num_from_d(1.0 / frob);
     p.inv_smin = num_from_d(frob);
     p.org = vec3_from_d(p.org_d);
@@ -345,6 +398,7 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
             b->br = a->br;
             b->org = a->org;
             b->minv_s = a->minv_s;
+            b->fast = (b->fast & 0xffffffu) | (a->fast & ~0xffffffu);
             b->smin = a->smin;
             b->inv_smin = a->inv_smin;
         }
@@ -397,16 +451,32 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
 /* Intersects the span s with the half-spaces of p's planes. 0 if empty.
  * The entry and exit candidates are kept as fractions (positive
  * denominators) and compared by cross products, so only the two winners
- * are divided; an entry at or beyond the exit ends the test early. */
+ * are divided; an entry at or beyond the exit ends the test early. The dot
+ * products n.d and n.o are formed as p->fast says: the shortcuts give the
+ * values of the dot products themselves (every mode rounds symmetrically)
+ * up to the sign of a zero, which no step below can see (zeros compare
+ * equal and a zero numerator divides to NUM_ZERO), and in q16 up to
+ * saturation, which n.o cannot reach (|o| < 16,100, docs/numerics.md). */
 static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
 {
     const num big = num_from_i(GEOM_TBIG);
-    num an = NUM_ZERO, ad = NUM_ZERO, bn = NUM_ZERO, bd = NUM_ZERO, t;
+    num an = NUM_ZERO, ad = NUM_ZERO, bn = NUM_ZERO, bd = NUM_ZERO, dn = NUM_ZERO, on = NUM_ZERO, t;
     int af = PRIM_FACE_NONE, bf = PRIM_FACE_NONE, k;
     for (k = 0; k < p->nplanes; k++) {
         const prim_plane *pl = &p->pl[k];
-        num den = vec3_dot(pl->n, r->d);
-        num nm = num_sub(pl->d, vec3_dot(pl->n, r->o));
+        num den, nm;
+        switch (p->fast >> 4 * k & 15) {
+        case PRIM_DOT_FLIP: dn = num_neg(dn); on = num_neg(on); break;
+        case PRIM_DOT_X: dn = r->d.x; on = r->o.x; break;
+        case PRIM_DOT_Y: dn = r->d.y; on = r->o.y; break;
+        case PRIM_DOT_Z: dn = r->d.z; on = r->o.z; break;
+        case PRIM_DOT_NX: dn = num_neg(r->d.x); on = num_neg(r->o.x); break;
+        case PRIM_DOT_NY: dn = num_neg(r->d.y); on = num_neg(r->o.y); break;
+        case PRIM_DOT_NZ: dn = num_neg(r->d.z); on = num_neg(r->o.z); break;
+        default: dn = vec3_dot(pl->n, r->d); on = vec3_dot(pl->n, r->o); break;
+        }
+        den = dn;
+        nm = num_sub(pl->d, on);
         if (den == NUM_ZERO) {
             if (nm < NUM_ZERO)
                 return 0;
@@ -427,6 +497,24 @@ static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
     return s->a.t < s->b.t;
 }
 
+/* minv_s v. q16: where each row of minv_s has a single nonzero entry
+ * (prim_cols), that entry's rounded product alone: mat3_mul's sum of it and
+ * two zero products, without them. */
+VEC_HOT vec3 prim_map(const prim *p, vec3 v)
+{
+#if defined(NUM_MODE_q16)
+    unsigned cols = p->fast >> 24;
+    if (cols) {
+        const num *m = p->minv_s.m;
+        unsigned c0 = cols & 3, c1 = cols >> 2 & 3, c2 = cols >> 4 & 3;
+        num c[3];
+        c[0] = v.x; c[1] = v.y; c[2] = v.z;
+        return vec3_make(num_mul(m[c0], c[c0]), num_mul(m[3 + c1], c[c1]), num_mul(m[6 + c2], c[c2]));
+    }
+#endif
+    return mat3_mul(&p->minv_s, v);
+}
+
 /* Local interval [s0,s1] of the curved face, with flags saying whether each
  * end is a real surface point (1) or the clamp (0). Up to two pieces. */
 typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
@@ -438,25 +526,28 @@ typedef struct prim_piece { num s0, s1; int f0, f1; } prim_piece;
  * canonical centre, so every squared quantity is O(1) (docs/numerics.md). */
 static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
 {
-    vec3 o1 = vec3_madd(r->o, tc, r->d);
-    vec3 ol = vec3_scale(mat3_mul(&p->minv_s, vec3_sub(o1, p->org)), p->inv_smin);
+    vec3 ol = vec3_scale(prim_map(p, vec3_madd_sub(r->o, tc, r->d, p->org)), p->inv_smin);
     vec3 du, cl, rel;
     num L, rL, ratio, sh, lim, two = num_from_i(2), one = NUM_ONE;
     prim_piece pc[2];
     int npc = 1, k, side = p->kind == PRIM_SPHERE ? PRIM_FACE_SPHERE_SURFACE : PRIM_FACE_CYL_SIDE;
 
-    if (vec3_unit(mat3_mul(&p->minv_s, r->d), &du, &L, &rL))
+    if (vec3_unit(prim_map(p, r->d), &du, p->kind == PRIM_SPHERE ? NULL : &L, &rL))
         return 0;
     ratio = num_mul(p->smin, rL);      /* world parameter per local one */
     cl = vec3_make(NUM_ZERO, NUM_ZERO, p->kind == PRIM_SPHERE ? NUM_ZERO : NUM_HALF);
     sh = vec3_dot(vec3_sub(cl, ol), du);
-    rel = vec3_sub(vec3_madd(ol, sh, du), cl);
+    rel = vec3_madd_sub(ol, sh, du, cl);
     if (vec3_maxabs(rel) > two)
         return 0;
-    /* br / ratio = br |minv_s d| / smin */
-    lim = num_add(num_mul_clamp(num_mul(p->br, L), p->inv_smin, num_from_i(GEOM_TBIG)), num_abs(sh));
-    if (lim < one)
-        lim = one;
+    /* the bound of the roots, br / ratio = br |minv_s d| / smin (a sphere's
+     * roots are within 1 and need none) */
+    lim = one;
+    if (p->kind != PRIM_SPHERE) {
+        lim = num_add(num_mul_clamp(num_mul(p->br, L), p->inv_smin, num_from_i(GEOM_TBIG)), num_abs(sh));
+        if (lim < one)
+            lim = one;
+    }
     pc[0].f0 = pc[0].f1 = 1;
 
     if (p->kind == PRIM_SPHERE) {
@@ -477,7 +568,7 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
             pc[0].f0 = pc[0].f1 = 0;
         } else {
             b2 = vec3_dot(r2, e);
-            perp = vec3_madd(r2, num_neg(b2), e);
+            perp = vec3_madd_sub(r2, num_neg(b2), e, vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
             if (vec3_maxabs(perp) > one)
                 return 0;
             disc = num_sub(one, vec3_dot(perp, perp));

@@ -71,11 +71,9 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
         return -1;
 #if defined(NUM_MODE_q16)
     {
-        int64_t w[3], ss = 0;
+        int64_t w[3], ss;
         uint64_t xs, y;
-        int e = 0, k = 1, i;
-        num raw[3];
-        raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
+        int e = 0, k;
 #if defined(__GNUC__)
         e = __builtin_clz((unsigned)m) - 15;         /* top bit of m to bit 16 */
 #else
@@ -84,12 +82,18 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
         while ((m >> -e) >= 2 * FX16_ONE)            /* m < 2^31, so e >= -15 */
             e--;
 #endif
-        for (i = 0; i < 3; i++) {
-            w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
-            ss += w[i] * w[i];                          /* exact: < 13 * 2^32 */
+        if (e >= 0) {
+            w[0] = (int64_t)v.x * ((int64_t)1 << e);
+            w[1] = (int64_t)v.y * ((int64_t)1 << e);
+            w[2] = (int64_t)v.z * ((int64_t)1 << e);
+        } else {
+            w[0] = fx_shr_round(v.x, -e);
+            w[1] = fx_shr_round(v.y, -e);
+            w[2] = fx_shr_round(v.z, -e);
         }
-        while ((ss >> (2 * k)) >= ((int64_t)1 << 32))   /* ss/4^k in [2^30, 2^32) */
-            k++;
+        /* exact: the largest |w_i| is in [2^16, 2^17], so ss in [2^32, 3 2^34] */
+        ss = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+        k = ss < ((int64_t)1 << 34) ? 1 : 2;            /* ss/4^k in [2^30, 2^32) */
         xs = (uint64_t)ss >> (2 * k);
         y = fx_rsqrt_q30(xs);                           /* 2^k / sqrt(S), Q.30 */
         if (unit)
@@ -132,11 +136,38 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
 
 static inline int vec3_normalize(vec3 v, vec3 *unit, num *len) { return vec3_unit(v, unit, len, NULL); }
 
+/* a + t*d - c: a point along a ray, measured from c. q16: each component
+ * summed in 64 bits from the rounded product and saturated once, the value
+ * of vec3_sub(vec3_madd(a, t, d), c) unless a + t*d leaves the range
+ * (prim_side's uses: docs/numerics.md). */
+VEC_HOT vec3 vec3_madd_sub(vec3 a, num t, vec3 d, vec3 c)
+{
+#if defined(NUM_MODE_q16)
+    return vec3_make(fx16_sat((int64_t)a.x + fx16_mul_wide(d.x, t) - c.x),
+                     fx16_sat((int64_t)a.y + fx16_mul_wide(d.y, t) - c.y),
+                     fx16_sat((int64_t)a.z + fx16_mul_wide(d.z, t) - c.z));
+#else
+    return vec3_sub(vec3_madd(a, t, d), c);
+#endif
+}
+
+/* q16: each row's three rounded products summed in 64 bits and saturated
+ * once: the chained saturating form's value unless one of its partial sums
+ * leaves the range while the row does not. With rows of norm at most 1
+ * (minv_s, the only matrix multiplied) every partial sum is at most |v| by
+ * Cauchy-Schwarz, so that needs |v| >= 32768, beyond every vector prim_side
+ * maps (docs/numerics.md). */
 VEC_HOT vec3 mat3_mul(const mat3 *a, vec3 v)
 {
+#if defined(NUM_MODE_q16)
+    return vec3_make(fx16_sat(fx16_mul_wide(a->m[0], v.x) + fx16_mul_wide(a->m[1], v.y) + fx16_mul_wide(a->m[2], v.z)),
+                     fx16_sat(fx16_mul_wide(a->m[3], v.x) + fx16_mul_wide(a->m[4], v.y) + fx16_mul_wide(a->m[5], v.z)),
+                     fx16_sat(fx16_mul_wide(a->m[6], v.x) + fx16_mul_wide(a->m[7], v.y) + fx16_mul_wide(a->m[8], v.z)));
+#else
     return vec3_make(num_add(num_add(num_mul(a->m[0], v.x), num_mul(a->m[1], v.y)), num_mul(a->m[2], v.z)),
                      num_add(num_add(num_mul(a->m[3], v.x), num_mul(a->m[4], v.y)), num_mul(a->m[5], v.z)),
                      num_add(num_add(num_mul(a->m[6], v.x), num_mul(a->m[7], v.y)), num_mul(a->m[8], v.z)));
+#endif
 }
 /* transpose(a) * v */
 static inline vec3 mat3_tmul(const mat3 *a, vec3 v)
@@ -151,6 +182,9 @@ static inline void vec3_to_d(vec3 v, double *d) { d[0] = num_to_d(v.x); d[1] = n
  * yields +-lim with the quotient's sign; 0/0 is 0. lim must be >= 1. */
 VEC_HOT num num_div_clamp(num a, num b, num lim)
 {
+#if defined(NUM_MODE_q16)
+    return fx16_div_clamp(a, b, lim);
+#else
     num aa = num_abs(a), ab = num_abs(b);
     int neg = (a < NUM_ZERO) != (b < NUM_ZERO);
     if (aa == NUM_ZERO)
@@ -163,6 +197,7 @@ VEC_HOT num num_div_clamp(num a, num b, num lim)
         if (q < num_neg(lim)) return num_neg(lim);
         return q;
     }
+#endif
 }
 
 /* a*b clamped to [-lim, lim] (lim > 0) without saturating: a product

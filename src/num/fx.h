@@ -78,14 +78,18 @@ static inline fx16 fx16_sub(fx16 a, fx16 b) { return fx16_sat((int64_t)a - b); }
 static inline fx16 fx16_neg(fx16 a) { return fx16_sat(-(int64_t)a); }
 static inline fx16 fx16_abs(fx16 a) { return a < 0 ? fx16_neg(a) : a; }
 
-/* Q16.16 product, rounded to nearest (ties away from zero). |a*b| < 2^62, so
- * the int64_t product and the rounding add cannot overflow. */
-static inline fx16 fx16_mul(fx16 a, fx16 b)
+/* v / 2^k rounded to nearest, ties away from zero (k >= 1). */
+static inline int64_t fx_shr_round(int64_t v, int k)
 {
-    int64_t p = (int64_t)a * b;
-    int64_t q = p >= 0 ? (p + 32768) / 65536 : -((-p + 32768) / 65536);
-    return fx16_sat(q);
+    int64_t h = (int64_t)1 << (k - 1);
+    return v >= 0 ? (v + h) >> k : -((-v + h) >> k);
 }
+
+/* Q16.16 product, rounded to nearest (ties away from zero), not saturated:
+ * |a*b| < 2^62, so the int64_t product and the rounding add cannot
+ * overflow. Sums of these are exact (prim.c, mat3_mul). */
+static inline int64_t fx16_mul_wide(fx16 a, fx16 b) { return fx_shr_round((int64_t)a * b, 16); }
+static inline fx16 fx16_mul(fx16 a, fx16 b) { return fx16_sat(fx16_mul_wide(a, b)); }
 
 /* Quotient a/b in Q16.16: the dividend a*2^16 fits int64_t exactly. */
 static inline fx16 fx16_div(fx16 a, fx16 b)
@@ -144,11 +148,27 @@ static inline uint64_t fx_rsqrt_q30(uint64_t xs)
     return y;
 }
 
-/* v / 2^k rounded to nearest, ties away from zero (k >= 1). */
-static inline int64_t fx_shr_round(int64_t v, int k)
+
+/* a/b rounded to nearest (ties away from zero) and clamped to [-lim, lim],
+ * for FX16_ONE <= lim: num_div_clamp of Q16.16 (geom/vec.h), worked on
+ * 64-bit magnitudes, so the rounding, the sign and the clamp need one
+ * division and no saturation. The values are those of the saturating form
+ * (|a| >= |b| lim when |b| < 1, else the quotient, clamped), and so are the
+ * overflow counts for lim <= 2^30, except that a or b = FX16_MIN (itself a
+ * saturated value) no longer counts a second overflow. */
+static inline fx16 fx16_div_clamp(fx16 a, fx16 b, fx16 lim)
 {
-    int64_t h = (int64_t)1 << (k - 1);
-    return v >= 0 ? (v + h) >> k : -((-v + h) >> k);
+    int64_t ua = a < 0 ? -(int64_t)a : a, ub = b < 0 ? -(int64_t)b : b, q;
+    if (ua == 0)
+        return 0;
+    if (ub == 0 || (ub < FX16_ONE && ua >= fx_shr_round(ub * lim, 16))) {
+        q = lim;
+    } else {
+        q = ((ua << 17) + ub) / (2 * ub);            /* round(|a| 2^16 / |b|) */
+        if (q > lim)
+            q = lim;
+    }
+    return (fx16)((a < 0) != (b < 0) ? -q : q);
 }
 
 static inline fx32 fx32_add(fx32 a, fx32 b)

@@ -19,6 +19,7 @@ static void test_fx_mul_matches_long_double(void **state)
         long double r = ref_round((long double)a * b / 65536.0L);
         unsigned long before = fx_overflows;
         fx16 got = fx16_mul(a, b);
+        assert_true((long double)fx16_mul_wide(a, b) == r);
         if (r > 2147483647.0L || r < -2147483648.0L) {
             assert_int_equal(got, r > 0 ? FX16_MAX : FX16_MIN);
             assert_true(fx_overflows == before + 1);
@@ -211,6 +212,63 @@ static void test_fx16_rsqrt_rounds_to_nearest(void **state)
     assert_true(fx_overflows == before + 1);
 }
 
+/* num_div_clamp's saturating form in Q16.16, the reference for
+ * fx16_div_clamp. */
+static fx16 ref_div_clamp(fx16 a, fx16 b, fx16 lim)
+{
+    fx16 aa = fx16_abs(a), ab = fx16_abs(b), q;
+    int neg = (a < 0) != (b < 0);
+    if (aa == 0)
+        return 0;
+    if (ab == 0 || (ab < FX16_ONE && aa >= fx16_mul(ab, lim)))
+        return neg ? fx16_neg(lim) : lim;
+    q = fx16_div(a, b);
+    return q > lim ? lim : q < fx16_neg(lim) ? fx16_neg(lim) : q;
+}
+
+/* fx16_div_clamp gives the saturating form's value for every input, and
+ * its overflow count unless an operand is FX16_MIN or lim exceeds 2^30:
+ * random operands of every magnitude, their neighbours at the clamp and at
+ * rounding ties, and the edges. */
+static void test_fx16_div_clamp_matches_saturating_form(void **state)
+{
+    static const fx16 edge[] = {0, 1, -1, 2, 32767, 32768, -32768, 65535, 65536, -65536, 65537,
+                                 FX16_MAX, FX16_MIN, FX16_MIN + 1, 1 << 30, -(1 << 30)};
+    uint64_t s = test_seed("test_fx16_div_clamp_matches_saturating_form");
+    int i, j, k;
+    (void)state;
+    for (i = 0; i < 2000000; i++) {
+        fx16 a = (fx16)((int32_t)test_rand(&s) >> (test_rand(&s) % 32));
+        fx16 b = (fx16)((int32_t)test_rand(&s) >> (test_rand(&s) % 32));
+        fx16 lim = (fx16)(FX16_ONE + (int32_t)(test_rand(&s) >> 34) % (FX16_MAX - FX16_ONE));
+        unsigned long before, ref_count;
+        fx16 want, got;
+        switch (i % 4) {
+        case 0: lim = (fx16)16384 * FX16_ONE; break;          /* GEOM_TBIG */
+        case 1: a = (fx16)(((int64_t)b * (lim >> 16)) + (int32_t)(test_rand(&s) % 5) - 2); break;
+        case 2:                  /* a 2^16 / b = q + 1/2 exactly: b a multiple of 2^17 */
+            b = (fx16)(((int32_t)(test_rand(&s) % 16383) - 8191) * 131072);
+            a = (fx16)((2 * (int32_t)(test_rand(&s) % 2001) - 2000 + 1) * (b / 131072));
+            break;
+        default: break;
+        }
+        before = fx_overflows;
+        want = ref_div_clamp(a, b, lim);
+        ref_count = fx_overflows - before;
+        before = fx_overflows;
+        got = fx16_div_clamp(a, b, lim);
+        assert_int_equal(got, want);
+        if (a != FX16_MIN && b != FX16_MIN && lim <= (1 << 30))
+            assert_true(fx_overflows - before == ref_count);
+    }
+    for (i = 0; i < (int)(sizeof edge / sizeof edge[0]); i++)
+        for (j = 0; j < (int)(sizeof edge / sizeof edge[0]); j++)
+            for (k = 0; k < (int)(sizeof edge / sizeof edge[0]); k++)
+                if (edge[k] >= FX16_ONE)
+                    assert_int_equal(fx16_div_clamp(edge[i], edge[j], edge[k]),
+                                     ref_div_clamp(edge[i], edge[j], edge[k]));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -222,6 +280,7 @@ int main(void)
         cmocka_unit_test(test_fx32_div_sqrt_full_range),
         cmocka_unit_test(test_fx32_native_matches_portable),
         cmocka_unit_test(test_fx16_rsqrt_rounds_to_nearest),
+        cmocka_unit_test(test_fx16_div_clamp_matches_saturating_form),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

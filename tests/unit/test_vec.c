@@ -1,0 +1,199 @@
+/* test_vec — the Q16.16 forms of the geom/vec.h helpers that sum in 64
+ * bits and saturate once, against the step-by-step saturating forms they
+ * replace (one num_* operation at a time): the same values over random
+ * inputs within the ranges of docs/numerics.md. Checked in the q16 build. */
+#define NUM_MODE q16
+#define NUM_MODE_q16
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include "geom/vec.h"
+#include "support.h"
+
+/* Uniform in [-m, m]. */
+static double vt_uniform(uint64_t *s, double m)
+{
+    return m * (2.0 * (double)(test_rand(s) >> 11) / 9007199254740992.0 - 1.0);
+}
+
+/* A random matrix scaled to Frobenius norm 1, as prim_compile stores
+ * minv_s, with entries of random magnitude (thin and flat primitives). */
+static mat3 vt_minv(uint64_t *s)
+{
+    double m[9], f = 0;
+    mat3 a;
+    int i;
+    for (i = 0; i < 9; i++) {
+        m[i] = vt_uniform(s, 1) * pow(2.0, -(double)(test_rand(s) % 20));
+        f += m[i] * m[i];
+    }
+    for (i = 0; i < 9; i++)
+        a.m[i] = num_from_d(m[i] / sqrt(f));
+    return a;
+}
+
+/* A random vector of norm below lim, its size spread over many octaves. */
+static vec3 vt_vec(uint64_t *s, double lim)
+{
+    double m = lim / sqrt(3.0) * pow(2.0, -(double)(test_rand(s) % 24));
+    return vec3_make(num_from_d(vt_uniform(s, m)), num_from_d(vt_uniform(s, m)), num_from_d(vt_uniform(s, m)));
+}
+
+static vec3 ref_mat3_mul(const mat3 *a, vec3 v)
+{
+    return vec3_make(fx16_add(fx16_add(fx16_mul(a->m[0], v.x), fx16_mul(a->m[1], v.y)), fx16_mul(a->m[2], v.z)),
+                     fx16_add(fx16_add(fx16_mul(a->m[3], v.x), fx16_mul(a->m[4], v.y)), fx16_mul(a->m[5], v.z)),
+                     fx16_add(fx16_add(fx16_mul(a->m[6], v.x), fx16_mul(a->m[7], v.y)), fx16_mul(a->m[8], v.z)));
+}
+
+static num vt_any(uint64_t *s);
+
+static void vt_assert_vec_equal(vec3 a, vec3 b)
+{
+    assert_int_equal(a.x, b.x);
+    assert_int_equal(a.y, b.y);
+    assert_int_equal(a.z, b.z);
+}
+
+/* mat3_mul with rows of norm at most 1 and |v| < 32768. */
+static void test_vec_mat3_mul_matches_chained(void **state)
+{
+    uint64_t s = test_seed("test_vec_mat3_mul_matches_chained");
+    unsigned long before = fx_overflows;
+    int i;
+    (void)state;
+    for (i = 0; i < 1000000; i++) {
+        mat3 a = vt_minv(&s);
+        vec3 v = vt_vec(&s, 32767);
+        vt_assert_vec_equal(mat3_mul(&a, v), ref_mat3_mul(&a, v));
+    }
+    assert_true(fx_overflows == before);
+}
+
+/* mat3_mul of a matrix with one nonzero entry a row is that entry's product
+ * (prim_map's shortcut), over the whole range of v. */
+static void test_vec_mat3_mul_single_entries(void **state)
+{
+    uint64_t s = test_seed("test_vec_mat3_mul_single_entries");
+    int i, r;
+    (void)state;
+    for (i = 0; i < 1000000; i++) {
+        mat3 a = vt_minv(&s);
+        vec3 v = vec3_make(vt_any(&s), vt_any(&s), vt_any(&s)), want;
+        num c[3], w[3];
+        int col[3];
+        c[0] = v.x; c[1] = v.y; c[2] = v.z;
+        for (r = 0; r < 3; r++) {
+            col[r] = (int)(test_rand(&s) % 3);
+            a.m[3 * r + (col[r] + 1) % 3] = a.m[3 * r + (col[r] + 2) % 3] = 0;
+            w[r] = fx16_mul(a.m[3 * r + col[r]], c[col[r]]);
+        }
+        want = vec3_make(w[0], w[1], w[2]);
+        vt_assert_vec_equal(mat3_mul(&a, v), want);
+    }
+}
+
+/* vec3_madd_sub with a + t*d within range, d a unit vector, any c. */
+static void test_vec_madd_sub_matches_chained(void **state)
+{
+    uint64_t s = test_seed("test_vec_madd_sub_matches_chained");
+    int i;
+    (void)state;
+    for (i = 0; i < 1000000; i++) {
+        vec3 a = vt_vec(&s, 16000), c = vt_vec(&s, 56000), d, want;
+        num t = num_from_d(vt_uniform(&s, 16000 * pow(2.0, -(double)(test_rand(&s) % 24))));
+        while (vec3_unit(vt_vec(&s, 2), &d, NULL, NULL))
+            ;
+        want = vec3_sub(vec3_add(a, vec3_make(fx16_mul(d.x, t), fx16_mul(d.y, t), fx16_mul(d.z, t))), c);
+        vt_assert_vec_equal(vec3_madd_sub(a, t, d, c), want);
+    }
+}
+
+/* vec3_unit's Q16.16 form before its scaling was unrolled and its k found
+ * from the size of the sum (the loops below). */
+static int ref_unit(vec3 v, vec3 *unit, num *len, num *rlen)
+{
+    num m = vec3_maxabs(v), raw[3];
+    int64_t w[3], ss = 0;
+    uint64_t xs, y;
+    int e = 0, k = 1, i, sh;
+    if (m == 0)
+        return -1;
+    raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
+    while (((int64_t)m << e) < FX16_ONE)
+        e++;
+    while ((m >> -e) >= 2 * FX16_ONE)
+        e--;
+    for (i = 0; i < 3; i++) {
+        w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
+        ss += w[i] * w[i];
+    }
+    while ((ss >> (2 * k)) >= ((int64_t)1 << 32))
+        k++;
+    xs = (uint64_t)ss >> (2 * k);
+    y = fx_rsqrt_q30(xs);
+    *unit = vec3_make((num)fx_shr_round(w[0] * (int64_t)y, 30 + k), (num)fx_shr_round(w[1] * (int64_t)y, 30 + k),
+                      (num)fx_shr_round(w[2] * (int64_t)y, 30 + k));
+    *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - k + e));
+    sh = 14 + k - e;
+    *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
+    return 0;
+}
+
+/* A component of random size: any bit length, sign, sometimes 0 or an end
+ * of the range. */
+static num vt_any(uint64_t *s)
+{
+    uint64_t r = test_rand(s);
+    switch (r % 16) {
+    case 0: return 0;
+    case 1: return FX16_MAX;
+    case 2: return FX16_MIN;
+    case 3: return (num)(r >> 60) - 8;
+    default: return (num)((int32_t)(r >> 32) >> (r >> 8) % 32);
+    }
+}
+
+/* vec3_unit: unit vector, length and reciprocal against the loop form, for
+ * vectors of every size (powers of two and equal components included). */
+static void test_vec_unit_matches_loops(void **state)
+{
+    uint64_t s = test_seed("test_vec_unit_matches_loops");
+    int i;
+    (void)state;
+    for (i = 0; i < 2000000; i++) {
+        vec3 v = vec3_make(vt_any(&s), vt_any(&s), vt_any(&s)), u1, u2;
+        num l1 = 0, l2 = 0, r1 = 0, r2 = 0;
+        unsigned long before, count;
+        int k1, k2;
+        if (i % 8 == 0)
+            v.y = v.z = v.x;
+        else if (i % 8 == 1)
+            v = vec3_make((num)1 << (i / 8 % 31), 0, -((num)1 << (i / 16 % 31)));
+        before = fx_overflows;
+        k1 = ref_unit(v, &u1, &l1, &r1);
+        count = fx_overflows - before;
+        before = fx_overflows;
+        k2 = vec3_unit(v, &u2, &l2, &r2);
+        assert_int_equal(k1, k2);
+        assert_true(fx_overflows - before == count);
+        if (k1 == 0) {
+            vt_assert_vec_equal(u1, u2);
+            assert_int_equal(l1, l2);
+            assert_int_equal(r1, r2);
+        }
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_vec_mat3_mul_matches_chained),
+        cmocka_unit_test(test_vec_mat3_mul_single_entries),
+        cmocka_unit_test(test_vec_madd_sub_matches_chained),
+        cmocka_unit_test(test_vec_unit_matches_loops),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
