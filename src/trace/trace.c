@@ -8,7 +8,6 @@
 #include "attr/attr_texture.h"
 #include "trace/optics.h"
 #include "trace/shade.h"
-#include "model/scene_map.h"
 #include <math.h>
 #include <string.h>
 
@@ -23,49 +22,36 @@ int NS(trace_ctx_init)(const cscene *cs, trace_ctx *tc)
 
 void NS(trace_ctx_free)(trace_ctx *tc) { arena_free(&tc->ar); }
 
-/* Algorithm 1, step 3: the attribute of face `face` of primitive pi at the
- * surface point sf. The PDS bound to the face (FACE statement) names the
- * region's attribute; where it has no region (PDS_NONE), or the face has no
- * PDS, the primitive's plain attribute applies. */
+/* Algorithm 1, step 3: the attribute of face entry f at the surface point
+ * sf. The PDS bound to the face (FACE statement) names the region's
+ * attribute; where it has no region (PDS_NONE), or the face has no PDS, the
+ * primitive's plain attribute applies. */
+static const scene_attr *trace_face_attribute(const cscene *cs, trace_ctx *tc, const cscene_face *f,
+                                              const geom_surface *sf)
+{
+    if (f->map) {
+        int32_t id = NS(pds_locate)(f->map, num_from_d(sf->u), num_from_d(sf->v));
+        tc->rs.pds_lookups++;
+        if (id >= 0 && (size_t)id < cs->sc->nattrs)
+            return &cs->sc->attrs[id];
+    }
+    return f->plain;
+}
+
 const scene_attr *NS(trace_attribute)(const cscene *cs, trace_ctx *tc, int pi, int face,
                                          const geom_surface *sf)
 {
-    const scene *sc = cs->sc;
-    int m = face >= 0 && face < SCENE_MAX_FACES ? sc->prims[pi].face_map[face] : -1;
-    if (m >= 0) {
-        int32_t id = NS(pds_locate)(cs->maps[m], num_from_d(sf->u), num_from_d(sf->v));
-        tc->rs.pds_lookups++;
-        if (id >= 0 && (size_t)id < sc->nattrs)
-            return &sc->attrs[id];
-    }
-    return &sc->attrs[sc->prims[pi].attr];
+    return trace_face_attribute(cs, tc, cscene_face_at(cs, pi, face), sf);
 }
 
-/* The PDS definition bound to face `face` of primitive pi, or NULL. */
-static const pds_def *trace_map_def(const cscene *cs, int pi, int face)
+/* Evaluates the surface of hit h (on face entry f) at p, (u,v) only where
+ * needed (counted when not). */
+static void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_face *f, const csg_hit *h, vec3 p,
+                          geom_surface *sf)
 {
-    int m = face >= 0 && face < SCENE_MAX_FACES ? cs->sc->prims[pi].face_map[face] : -1;
-    return m >= 0 ? &cs->sc->maps[m]->def : NULL;
-}
-
-/* Whether face `face` of primitive pi needs (u,v) and its tangents: it has
- * a PDS (the region depends on them), or its plain attribute has a texture
- * or a bump. Otherwise only the normal is evaluated. */
-static int trace_needs_uv(const scene *sc, int pi, int face)
-{
-    const scene_attr *at = &sc->attrs[sc->prims[pi].attr];
-    if (face >= 0 && face < SCENE_MAX_FACES && sc->prims[pi].face_map[face] >= 0)
-        return 1;
-    return at->texture >= 0 || at->bump >= 0;
-}
-
-/* Evaluates the surface at a hit, (u,v) only where needed (counted when not). */
-static void trace_surface(const cscene *cs, trace_ctx *tc, const csg_hit *h, vec3 p, geom_surface *sf)
-{
-    int need = trace_needs_uv(cs->sc, h->prim, h->face);
-    if (!need)
+    if (!f->need_uv)
         tc->rs.uv_skipped++;
-    NS(prim_surface)(&cs->prims[h->prim], h->face, p, need, sf);
+    NS(prim_surface)(&cs->prims[h->prim], h->face, p, f->need_uv, sf);
 }
 
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,
@@ -92,6 +78,7 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         csg_hit h;
         geom_surface sf;
         const scene_attr *at;
+        const cscene_face *fc;
         trace_spawn(&s, p, l, pi, n_prim);
         tc->rs.rays_shadow++;
         if (!cs->transparent)     /* any opaque surface on the way will do */
@@ -100,8 +87,9 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
             return pass;
         p = vec3_madd(p, h.t, l);
         dist = num_sub(dist, h.t);
-        trace_surface(cs, tc, &h, p, &sf);
-        at = NS(trace_attribute)(cs, tc, h.prim, h.face, &sf);
+        fc = cscene_face_at(cs, h.prim, h.face);
+        trace_surface(cs, tc, fc, &h, p, &sf);
+        at = trace_face_attribute(cs, tc, fc, &sf);
         pass *= at->transmit;
         if (pass <= TRACE_MIN_WEIGHT)
             return 0;
@@ -128,6 +116,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
 {
     const scene *sc = cs->sc;
     const scene_attr *at;
+    const cscene_face *fc;
     geom_surface sf;
     csg_hit h;
     vec3 p, nsn;
@@ -148,9 +137,10 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         *pid = h.prim;
     p = vec3_madd(r->o, h.t, r->d);
     /* Step 2: (x,y,z) -> face parameters (u,v) and the tangent frame. */
-    trace_surface(cs, tc, &h, p, &sf);
+    fc = cscene_face_at(cs, h.prim, h.face);
+    trace_surface(cs, tc, fc, &h, p, &sf);
     /* Step 3: the region of (u,v) in the face's PDS and its attribute. */
-    at = NS(trace_attribute)(cs, tc, h.prim, h.face, &sf);
+    at = trace_face_attribute(cs, tc, fc, &sf);
 
     /* The ray meets the surface from the side d points away from; `inside`
      * says it travelled inside the solid (it leaves it here), which selects
@@ -189,7 +179,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     /* Step 5 (1): the bump attribute perturbs the normal; the shading normal
      * ns faces the viewer. */
     if (at->bump >= 0)
-        attr_bump_normal_at(&sc->bumps[at->bump], trace_map_def(cs, h.prim, h.face), cs->nm.scale, &sf, ns);
+        attr_bump_normal_at(&sc->bumps[at->bump], fc->def, cs->nm.scale, &sf, ns);
     else
         memcpy(ns, sf.n, sizeof ns);
     if (dn > 0)
@@ -198,7 +188,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     nsn = vec3_from_d(ns);
     /* Step 5 (2): the texture attribute gives the colour. */
     if (at->texture >= 0)
-        attr_texture_rgb_at(&sc->textures[at->texture], trace_map_def(cs, h.prim, h.face), sf.u, sf.v, color);
+        attr_texture_rgb_at(&sc->textures[at->texture], fc->def, sf.u, sf.v, color);
     else
         memcpy(color, at->color, sizeof color);
 
