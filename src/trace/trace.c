@@ -111,6 +111,49 @@ static int trace_budget(trace_ctx *tc)
     return 1;
 }
 
+/* Step 5 (3), the recursive part: the weights of the mirror and refracted
+ * rays of hit h at p (primitive normal n_prim, shading normal ns facing the
+ * viewer, d the unit direction of r), each traced from step 1 and added to
+ * c. `inside` (the ray travelled inside the solid and leaves it here)
+ * selects the refraction ratio. */
+static void trace_secondary(const cscene *cs, trace_ctx *tc, const prim_ray *r, const csg_hit *h, vec3 p,
+                            const double *n_prim, const double *ns, const scene_attr *at,
+                            const double *color, int depth, double weight, double c[3])
+{
+    double d[3], refl, trans, tint[3];
+    int i, inside = !h->entering;
+    vec3 nsn = vec3_from_d(ns);
+    vec3_to_d(r->d, d);
+    NS(shade_weights)(at, color, -dmath_dot3(d, ns), inside ? at->ior : 1.0 / at->ior, &refl, &trans, tint);
+    if (trans > 0 && weight * trans > TRACE_MIN_WEIGHT) {
+        vec3 td;
+        int tir = at->ior > 0 ? NS(optics_refract)(r->d, nsn, inside ? at->ior : 1.0 / at->ior, &td) : 1;
+        if (tir > 0) {
+            refl += trans;                   /* total internal reflection */
+        } else if (tir == 0 && trace_budget(tc)) {
+            prim_ray tr;
+            double tc3[3];
+            trace_spawn(&tr, p, td, h->prim, n_prim);
+            tc->rs.rays_refracted++;
+            NS(trace_ray)(cs, tc, &tr, depth + 1, weight * trans, tc3, NULL);
+            for (i = 0; i < 3; i++)
+                c[i] += trans * tc3[i];
+        }
+    }
+    if (refl > 0 && weight * refl > TRACE_MIN_WEIGHT) {
+        vec3 rd;
+        prim_ray rr;
+        double rc[3];
+        if (!NS(optics_reflect)(r->d, nsn, &rd) && trace_budget(tc)) {
+            trace_spawn(&rr, p, rd, h->prim, n_prim);
+            tc->rs.rays_reflected++;
+            NS(trace_ray)(cs, tc, &rr, depth + 1, weight * refl, rc, NULL);
+            for (i = 0; i < 3; i++)
+                c[i] += refl * tint[i] * rc[i];
+        }
+    }
+}
+
 void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth,
                    double weight, double rgb[3], int *pid)
 {
@@ -119,11 +162,11 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     const cscene_face *fc;
     geom_surface sf;
     csg_hit h;
-    vec3 p, nsn;
-    double d[3], ns[3], dn, refl, trans, tint[3], c[3], color[3], pass[SCENE_MAX_LIGHTS];
+    vec3 p;
+    double d[3], ns[3], dn, c[3], color[3], pass[SCENE_MAX_LIGHTS];
     double ldir[SCENE_MAX_LIGHTS][3];        /* unit direction to each light */
     size_t li;
-    int i, inside, far, lit;
+    int i, far, lit;
 
     /* Step 1: nearest hit and its primitive (PID), else the background. */
     if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)) {
@@ -142,13 +185,11 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     /* Step 3: the region of (u,v) in the face's PDS and its attribute. */
     at = trace_face_attribute(cs, tc, fc, &sf);
 
-    /* The ray meets the surface from the side d points away from; `inside`
-     * says it travelled inside the solid (it leaves it here), which selects
-     * the refraction ratio. The solid's outward normal may be the primitive's
-     * flipped one where a difference exposes a subtracted solid. */
+    /* The ray meets the surface from the side d points away from. The
+     * solid's outward normal may be the primitive's flipped one where a
+     * difference exposes a subtracted solid. */
     vec3_to_d(r->d, d);
     dn = dmath_dot3(d, sf.n);
-    inside = !h.entering;
     /* No ray is spawned from beyond GEOM_TMAX (only a half-space reaches
      * there): ray origins then stay inside the range argued in
      * docs/numerics.md, and nothing out there can cast a visible shadow. */
@@ -185,7 +226,6 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     if (dn > 0)
         for (i = 0; i < 3; i++)
             ns[i] = -ns[i];
-    nsn = vec3_from_d(ns);
     /* Step 5 (2): the texture attribute gives the colour. */
     if (at->texture >= 0)
         attr_texture_rgb_at(&sc->textures[at->texture], fc->def, sf.u, sf.v, color);
@@ -194,38 +234,12 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
 
     /* Step 5 (3): the optical attribute's shading model (shade.c). */
     NS(shade_local)(cs, at, color, ns, d, (const double (*)[3])ldir, pass, c);
-    NS(shade_weights)(at, color, -dmath_dot3(d, ns), inside ? at->ior : 1.0 / at->ior, &refl, &trans, tint);
 
-    /* ... and recursion from step 1 for transmission and mirror reflection. */
-    if (far)
-        depth = cs->max_depth;
-    if (trans > 0 && depth < cs->max_depth && weight * trans > TRACE_MIN_WEIGHT) {
-        vec3 td;
-        int tir = at->ior > 0 ? NS(optics_refract)(r->d, nsn, inside ? at->ior : 1.0 / at->ior, &td) : 1;
-        if (tir > 0) {
-            refl += trans;                   /* total internal reflection */
-        } else if (tir == 0 && trace_budget(tc)) {
-            prim_ray tr;
-            double tc3[3];
-            trace_spawn(&tr, p, td, h.prim, sf.n);
-            tc->rs.rays_refracted++;
-            NS(trace_ray)(cs, tc, &tr, depth + 1, weight * trans, tc3, NULL);
-            for (i = 0; i < 3; i++)
-                c[i] += trans * tc3[i];
-        }
-    }
-    if (refl > 0 && depth < cs->max_depth && weight * refl > TRACE_MIN_WEIGHT) {
-        vec3 rd;
-        prim_ray rr;
-        double rc[3];
-        if (!NS(optics_reflect)(r->d, nsn, &rd) && trace_budget(tc)) {
-            trace_spawn(&rr, p, rd, h.prim, sf.n);
-            tc->rs.rays_reflected++;
-            NS(trace_ray)(cs, tc, &rr, depth + 1, weight * refl, rc, NULL);
-            for (i = 0; i < 3; i++)
-                c[i] += refl * tint[i] * rc[i];
-        }
-    }
+    /* ... and recursion from step 1 for transmission and mirror reflection:
+     * none from beyond GEOM_TMAX, at the depth limit, or where no ray can
+     * have a weight. */
+    if (!far && depth < cs->max_depth && shade_spawns(at))
+        trace_secondary(cs, tc, r, &h, p, sf.n, ns, at, color, depth, weight, c);
     for (i = 0; i < 3; i++)
         rgb[i] = c[i];
 }
