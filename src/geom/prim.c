@@ -590,7 +590,7 @@ static double prim_clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
 void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)
 {
     double w[3], l[3], nl[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
-    double u = 0, v = 0, rho, th = 0, ct = 1, st = 0, len;
+    double u = 0, v = 0, rho = 0, th = 0, ct = 1, st = 0, len;
     int i, planar = 1;
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
@@ -599,9 +599,6 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
                                                || face != PRIM_FACE_CYL_SIDE)) {
         /* a planar face: its normal is stored, nothing else is asked for */
         int f = face >= 0 && face < 6 ? face : 0;
-        memset(out->dpdu, 0, sizeof out->dpdu);
-        memset(out->dpdv, 0, sizeof out->dpdv);
-        out->u = out->v = 0;
         for (i = 0; i < 3; i++)
             out->n[i] = p->pn_d[f][i];
         return;
@@ -609,10 +606,13 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     for (i = 0; i < 3; i++)
         w[i] -= p->org_d[i];
     dmath_m3_mul_v(p->ainv_d, w, l);
-    rho = sqrt(l[0] * l[0] + l[1] * l[1]);
-    if (rho > 0) {
-        ct = l[0] / rho;
-        st = l[1] / rho;
+    /* the sphere's normal alone needs no angle */
+    if (need_uv || p->kind != PRIM_SPHERE) {
+        rho = sqrt(l[0] * l[0] + l[1] * l[1]);
+        if (rho > 0) {
+            ct = l[0] / rho;
+            st = l[1] / rho;
+        }
     }
     if (need_uv) {
         th = atan2(l[1], l[0]);
@@ -669,10 +669,12 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         du[0] = 1; dv[1] = 1;
         break;
     }
-    out->u = prim_clamp01(u);
-    out->v = prim_clamp01(v);
-    dmath_m3_mul_v(p->a_d, du, out->dpdu);
-    dmath_m3_mul_v(p->a_d, dv, out->dpdv);
+    if (need_uv) {
+        out->u = prim_clamp01(u);
+        out->v = prim_clamp01(v);
+        dmath_m3_mul_v(p->a_d, du, out->dpdu);
+        dmath_m3_mul_v(p->a_d, dv, out->dpdv);
+    }
     if (planar) {
         int f = face >= 0 && face < 6 ? face : 0;
         for (i = 0; i < 3; i++)
