@@ -57,7 +57,7 @@ static void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_face *f,
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,
  * double) along unit direction d: the ray excludes that primitive's surface
  * and knows whether it goes into the primitive. */
-static void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_prim)
+static inline void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_prim)
 {
     double dd[3];
     vec3_to_d(d, dd);
