@@ -64,14 +64,16 @@ static inline void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double
     prim_ray_set(r, p, d, pi, dmath_dot3(n_prim, dd) < 0);
 }
 
-/* Step 4: the fraction of the light at distance dist along unit l from p
- * that arrives: 0 behind an opaque surface; each transparent surface on the
- * way (transmittance kt of its attribute at the crossing) passes kt of it,
- * without bending the shadow ray. */
-static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, num dist,
-                                 int pi, const double *n_prim)
+/* Step 4: the fraction of the light at distance dist along unit l (ld in
+ * double) from p on primitive pi that arrives: 0 behind an opaque surface;
+ * each transparent surface on the way (transmittance kt of its attribute at
+ * the crossing) passes kt of it, without bending the shadow ray. `enter`:
+ * l goes into pi (its outward normal and l point apart; the caller's light
+ * test has that dot product). */
+static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, const double *ld,
+                                 num dist, int pi, int enter)
 {
-    double pass = 1, nb[3];
+    double pass = 1;
     int k;
     for (k = 0; k <= cs->max_depth; k++) {
         prim_ray s;
@@ -79,7 +81,7 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         geom_surface sf;
         const scene_attr *at;
         const cscene_face *fc;
-        trace_spawn(&s, p, l, pi, n_prim);
+        prim_ray_set(&s, p, l, pi, enter);
         tc->rs.rays_shadow++;
         if (!cs->transparent)     /* any opaque surface on the way will do */
             return NS(csg_occluded)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h) ? 0 : pass;
@@ -94,8 +96,7 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         if (pass <= TRACE_MIN_WEIGHT)
             return 0;
         pi = h.prim;
-        memcpy(nb, sf.n, sizeof nb);
-        n_prim = nb;
+        enter = dmath_dot3(sf.n, ld) < 0;
     }
     return 0;
 }
@@ -207,14 +208,15 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     for (li = 0; lit && li < cs->nlights; li++) {
         vec3 l;
         num dist;
-        double *ld = ldir[li];
+        double *ld = ldir[li], ln;
         pass[li] = 0;
         if (vec3_normalize(vec3_sub(cs->lights[li].pos, p), &l, &dist))
             continue;
         vec3_to_d(l, ld);
-        if (dmath_dot3(ld, sf.n) * dn >= 0)
+        ln = dmath_dot3(sf.n, ld);
+        if (ln * dn >= 0)
             continue;
-        pass[li] = far ? 1 : trace_light_passes(cs, tc, p, l, dist, h.prim, sf.n);
+        pass[li] = far ? 1 : trace_light_passes(cs, tc, p, l, ld, dist, h.prim, ln < 0);
     }
 
     /* Step 5 (1): the bump attribute perturbs the normal; the shading normal
