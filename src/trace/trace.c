@@ -26,8 +26,8 @@ void NS(trace_ctx_free)(trace_ctx *tc) { arena_free(&tc->ar); }
  * sf. The PDS bound to the face (FACE statement) names the region's
  * attribute; where it has no region (PDS_NONE), or the face has no PDS, the
  * primitive's plain attribute applies. */
-static const scene_attr *trace_face_attribute(const cscene *cs, trace_ctx *tc, const cscene_face *f,
-                                              const geom_surface *sf)
+static inline const scene_attr *trace_face_attribute(const cscene *cs, trace_ctx *tc,
+                                                     const cscene_face *f, const geom_surface *sf)
 {
     if (f->map) {
         int32_t id = NS(pds_locate)(f->map, num_from_d(sf->u), num_from_d(sf->v));
