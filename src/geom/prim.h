@@ -98,4 +98,7 @@ int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out);
  * they were): no trigonometry, and a planar face only copies its stored
  * normal. */
 void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out);
+/* The stored outward unit normal of face `face` of p when the face is
+ * planar (the normal prim_surface gives anywhere on it), else NULL. */
+const double *NS(prim_face_normal)(const prim *p, int face);
 #endif

@@ -130,6 +130,7 @@ static int cscene_faces(const scene *sc, cscene *cs, diag *err)
             e->map = m >= 0 ? cs->maps[m] : NULL;
             e->def = m >= 0 ? &sc->maps[m]->def : NULL;
             e->need_uv = m >= 0 || e->plain->texture >= 0 || e->plain->bump >= 0;
+            e->flat_n = NS(prim_face_normal)(&cs->prims[i], f);
         }
     return 0;
 }

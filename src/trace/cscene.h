@@ -25,6 +25,8 @@ typedef struct cscene_face {
     int need_uv;              /* the hit needs (u,v) and its tangents: the
                                  face has a PDS, or the plain attribute a
                                  texture or a bump */
+    const double *flat_n;     /* a planar face's normal (prim_face_normal),
+                                 else NULL */
 } cscene_face;
 
 typedef struct cscene {
