@@ -71,13 +71,13 @@ static inline void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double
 }
 
 /* Step 4: the fraction of the light at distance dist along unit l (ld in
- * double) from p on primitive pi that arrives: 0 behind an opaque surface;
- * each transparent surface on the way (transmittance kt of its attribute at
- * the crossing) passes kt of it, without bending the shadow ray. `enter`:
- * l goes into pi (its outward normal and l point apart; the caller's light
- * test has that dot product). */
-static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, const double *ld,
-                                 num dist, int pi, int enter)
+ * double) from p on primitive pi that arrives through a scene with
+ * transparent attributes: each transparent surface on the way
+ * (transmittance kt of its attribute at the crossing) passes kt of it,
+ * without bending the shadow ray; an opaque one stops it. `enter`: l goes
+ * into pi (its outward normal and l point apart). */
+static double trace_light_through(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, const double *ld,
+                                  num dist, int pi, int enter)
 {
     double pass = 1;
     int k;
@@ -89,8 +89,6 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         const cscene_face *fc;
         prim_ray_set(&s, p, l, pi, enter);
         tc->rs.rays_shadow++;
-        if (!cs->transparent)     /* any opaque surface on the way will do */
-            return NS(csg_occluded)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h) ? 0 : pass;
         if (!NS(csg_intersect)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h))
             return pass;
         p = vec3_madd(p, h.t, l);
@@ -105,6 +103,21 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l
         enter = dmath_dot3(sf.n, ld) < 0;
     }
     return 0;
+}
+
+/* Step 4: the fraction of the light that arrives, as trace_light_through;
+ * where no attribute transmits, any surface on the way will do (the caller's
+ * light test has the dot product that gives `enter`). */
+static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, const double *ld,
+                                 num dist, int pi, int enter)
+{
+    prim_ray s;
+    csg_hit h;
+    if (cs->transparent)
+        return trace_light_through(cs, tc, p, l, ld, dist, pi, enter);
+    prim_ray_set(&s, p, l, pi, enter);
+    tc->rs.rays_shadow++;
+    return NS(csg_occluded)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h) ? 0 : 1;
 }
 
 /* Takes one secondary ray from the pixel's cap; 0 (counted) when spent. */
