@@ -137,21 +137,26 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                 int pid = -1;
                 unsigned char *px = fb->img.px + 3 * at;
                 tc->rays_left = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)(aa * aa);
-                for (j = 0; j < aa; j++)
-                    for (i = 0; i < aa; i++) {
-                        const double *c = col[(x - xs) * aa + i];
-                        double dd[3], t0 = 0;
-                        prim_ray r;
-                        int p;
-                        for (k = 0; k < 3; k++)
-                            dd[k] = c[k] + sy[j] * up[k];
-                        render_ops_sample(cs, tc, dd, sum, &p, &r, &t0);
-                        if (i == mid && j == mid) {
-                            pid = p;
-                            if (fb->ids.px && p >= 0)
-                                render_ops_ids(cs, tc, &r, t0, &fb->ids.px[at]);
-                        }
+                /* samples (i, j) in one loop: a nest of two costs the
+                 * pixel a second loop set-up */
+                for (i = j = 0; j < aa;) {
+                    const double *c = col[(x - xs) * aa + i];
+                    double dd[3], t0 = 0;
+                    prim_ray r;
+                    int p;
+                    for (k = 0; k < 3; k++)
+                        dd[k] = c[k] + sy[j] * up[k];
+                    render_ops_sample(cs, tc, dd, sum, &p, &r, &t0);
+                    if (i == mid && j == mid) {
+                        pid = p;
+                        if (fb->ids.px && p >= 0)
+                            render_ops_ids(cs, tc, &r, t0, &fb->ids.px[at]);
                     }
+                    if (++i == aa) {
+                        i = 0;
+                        j++;
+                    }
+                }
                 for (k = 0; k < 3; k++)
                     px[k] = render_ops_byte(sum[k] * rss);
                 fb->pid[at] = pid;
