@@ -132,10 +132,10 @@ static int trace_budget(trace_ctx *tc)
 }
 
 /* Step 5 (3), the recursive part: the weights of the mirror and refracted
- * rays of hit h at p (primitive normal n_prim, shading normal ns facing the
- * viewer, d the unit direction of r), each traced from step 1 and added to
- * c. `inside` (the ray travelled inside the solid and leaves it here)
- * selects the refraction ratio. */
+ * rays of ray r's hit h at p (primitive normal n_prim, shading normal ns
+ * facing the viewer), each ray traced from step 1 and added to c. `inside`
+ * (r travelled inside the solid and leaves it here) selects the refraction
+ * ratio. */
 static void trace_secondary(const cscene *cs, trace_ctx *tc, const prim_ray *r, const csg_hit *h, vec3 p,
                             const double *n_prim, const double *ns, const scene_attr *at,
                             const double *color, int depth, double weight, double c[3])
