@@ -183,7 +183,8 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     geom_surface sf;
     csg_hit h;
     vec3 p;
-    double d[3], ns[3], dn, c[3], color[3], pass[SCENE_MAX_LIGHTS];
+    double d[3], ns[3], dn, c[3], tex[3], pass[SCENE_MAX_LIGHTS];
+    const double *color;
     double ldir[SCENE_MAX_LIGHTS][3];        /* unit direction to each light */
     size_t li;
     int i, far, lit;
@@ -248,10 +249,11 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         for (i = 0; i < 3; i++)
             ns[i] = -ns[i];
     /* Step 5 (2): the texture attribute gives the colour. */
-    if (at->texture >= 0)
-        attr_texture_rgb_at(&sc->textures[at->texture], fc->def, sf.u, sf.v, color);
-    else
-        memcpy(color, at->color, sizeof color);
+    color = at->color;
+    if (at->texture >= 0) {
+        attr_texture_rgb_at(&sc->textures[at->texture], fc->def, sf.u, sf.v, tex);
+        color = tex;
+    }
 
     /* Step 5 (3): the optical attribute's shading model (shade.c). */
     NS(shade_local)(cs, at, color, ns, d, (const double (*)[3])ldir, pass, c);
