@@ -678,32 +678,39 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
 
 static double prim_clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
 
+const double *NS(prim_face_normal)(const prim *p, int face)
+{
+    if (p->kind == PRIM_SPHERE || (p->kind != PRIM_BLOCK && p->kind != PRIM_HALFSPACE
+                                   && face == PRIM_FACE_CYL_SIDE))
+        return NULL;
+    return p->pn_d[face >= 0 && face < 6 ? face : 0];
+}
+
 void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)
 {
     double w[3], l[3], nl[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
-    double u = 0, v = 0, rho, th = 0, ct = 1, st = 0, len;
-    int i, planar = 1;
+    double u = 0, v = 0, rho = 0, th = 0, ct = 1, st = 0, len;
+    const double *fn;
+    int i;
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         out->p[i] = w[i];
-    if (!need_uv && p->kind != PRIM_SPHERE && (p->kind == PRIM_BLOCK || p->kind == PRIM_HALFSPACE
-                                               || face != PRIM_FACE_CYL_SIDE)) {
+    if (!need_uv && (fn = NS(prim_face_normal)(p, face)) != NULL) {
         /* a planar face: its normal is stored, nothing else is asked for */
-        int f = face >= 0 && face < 6 ? face : 0;
-        memset(out->dpdu, 0, sizeof out->dpdu);
-        memset(out->dpdv, 0, sizeof out->dpdv);
-        out->u = out->v = 0;
         for (i = 0; i < 3; i++)
-            out->n[i] = p->pn_d[f][i];
+            out->n[i] = fn[i];
         return;
     }
     for (i = 0; i < 3; i++)
         w[i] -= p->org_d[i];
     dmath_m3_mul_v(p->ainv_d, w, l);
-    rho = sqrt(l[0] * l[0] + l[1] * l[1]);
-    if (rho > 0) {
-        ct = l[0] / rho;
-        st = l[1] / rho;
+    /* the sphere's normal alone needs no angle */
+    if (need_uv || p->kind != PRIM_SPHERE) {
+        rho = sqrt(l[0] * l[0] + l[1] * l[1]);
+        if (rho > 0) {
+            ct = l[0] / rho;
+            st = l[1] / rho;
+        }
     }
     if (need_uv) {
         th = atan2(l[1], l[0]);
@@ -712,7 +719,6 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     }
     switch (p->kind) {
     case PRIM_SPHERE:
-        planar = 0;
         u = th / (2 * DMATH_PI);
         v = need_uv ? 0.5 + atan2(l[2], rho) / DMATH_PI : 0;
         nl[0] = l[0]; nl[1] = l[1]; nl[2] = l[2];
@@ -724,7 +730,6 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         double a = num_to_d(p->cone_a), k = num_to_d(p->cone_k), rf;
         if (p->kind == PRIM_CYLINDER) { a = 1; k = 0; }
         if (face == PRIM_FACE_CYL_SIDE) {
-            planar = 0;
             u = th / (2 * DMATH_PI);
             v = l[2];
             nl[0] = ct; nl[1] = st; nl[2] = -k;
@@ -760,14 +765,15 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         du[0] = 1; dv[1] = 1;
         break;
     }
-    out->u = prim_clamp01(u);
-    out->v = prim_clamp01(v);
-    dmath_m3_mul_v(p->a_d, du, out->dpdu);
-    dmath_m3_mul_v(p->a_d, dv, out->dpdv);
-    if (planar) {
-        int f = face >= 0 && face < 6 ? face : 0;
+    if (need_uv) {
+        out->u = prim_clamp01(u);
+        out->v = prim_clamp01(v);
+        dmath_m3_mul_v(p->a_d, du, out->dpdu);
+        dmath_m3_mul_v(p->a_d, dv, out->dpdv);
+    }
+    if ((fn = NS(prim_face_normal)(p, face)) != NULL) {
         for (i = 0; i < 3; i++)
-            out->n[i] = p->pn_d[f][i];
+            out->n[i] = fn[i];
     } else {
         dmath_m3_tmul_v(p->ainv_d, nl, out->n);
         len = dmath_len3(out->n);

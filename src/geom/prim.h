@@ -101,7 +101,11 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
 int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out);
 
 /* Surface data of face `face` of p at world point pt (a hit point). With
- * need_uv 0 only p and n are computed ((u,v), dP/du and dP/dv are 0): no
- * trigonometry, and a planar face only copies its stored normal. */
+ * need_uv 0 only p and n are written ((u,v), dP/du and dP/dv are left as
+ * they were): no trigonometry, and a planar face only copies its stored
+ * normal. */
 void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out);
+/* The stored outward unit normal of face `face` of p when the face is
+ * planar (the normal prim_surface gives anywhere on it), else NULL. */
+const double *NS(prim_face_normal)(const prim *p, int face);
 #endif

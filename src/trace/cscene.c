@@ -114,6 +114,27 @@ static int cscene_maps(const scene *sc, cscene *cs, diag *err)
     return 0;
 }
 
+/* The face table (cscene_face_at), after the maps are compiled. */
+static int cscene_faces(const scene *sc, cscene *cs, diag *err)
+{
+    size_t i;
+    int f;
+    cs->faces = mem_alloc(sc->nprims * (SCENE_MAX_FACES + 1) * sizeof *cs->faces);
+    if (!cs->faces)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    for (i = 0; i < sc->nprims; i++)
+        for (f = -1; f < SCENE_MAX_FACES; f++) {
+            cscene_face *e = &cs->faces[i * (SCENE_MAX_FACES + 1) + (size_t)(f + 1)];
+            int m = f >= 0 ? sc->prims[i].face_map[f] : -1;
+            e->plain = &sc->attrs[sc->prims[i].attr];
+            e->map = m >= 0 ? cs->maps[m] : NULL;
+            e->def = m >= 0 ? &sc->maps[m]->def : NULL;
+            e->need_uv = m >= 0 || e->plain->texture >= 0 || e->plain->bump >= 0;
+            e->flat_n = NS(prim_face_normal)(&cs->prims[i], f);
+        }
+    return 0;
+}
+
 /* Largest |origin| of a primary ray and largest |offset| of a half-space
  * plane, in normalised units: with hit points at most GEOM_TMAX further,
  * every plane and sphere test stays in range (docs/numerics.md, q16:
@@ -337,7 +358,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
             cs->lights[i].rgb[j] = l->color[j] * l->intensity;
     }
     if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)) ||
-        (status = cscene_maps(sc, cs, err)))
+        (status = cscene_maps(sc, cs, err)) || (status = cscene_faces(sc, cs, err)))
         goto fail;
     *out = cs;
     return 0;
@@ -354,6 +375,7 @@ void NS(cscene_free)(cscene *cs)
     for (i = 0; i < cs->nmaps; i++)
         NS(pds_free)(cs->maps[i]);
     mem_free(cs->maps);
+    mem_free(cs->faces);
     NS(csg_free)(&cs->tree);
     mem_free(cs->prims);
     mem_free(cs->lights);

@@ -16,6 +16,19 @@ typedef struct cscene_light {
     double rgb[3];            /* colour times intensity */
 } cscene_light;
 
+/* What a hit on one face of a primitive looks up, resolved at compile time
+ * (cscene_face_at). */
+typedef struct cscene_face {
+    const scene_attr *plain;  /* the primitive's own attribute */
+    const NS(pds) *map;       /* the PDS bound to the face (FACE), or NULL */
+    const pds_def *def;       /* its definition, or NULL */
+    int need_uv;              /* the hit needs (u,v) and its tangents: the
+                                 face has a PDS, or the plain attribute a
+                                 texture or a bump */
+    const double *flat_n;     /* a planar face's normal (prim_face_normal),
+                                 else NULL */
+} cscene_face;
+
 typedef struct cscene {
     const scene *sc;
     geom_norm nm;
@@ -43,9 +56,19 @@ typedef struct cscene {
      * look up). */
     NS(pds) **maps;
     size_t nmaps;
+    /* per primitive, 1 + SCENE_MAX_FACES entries: entry 0 for a face
+     * number outside 0..SCENE_MAX_FACES-1, then one per face */
+    cscene_face *faces;
     int transparent;          /* some attribute transmits light: shadow rays
                                  then look up what they cross */
 } cscene;
+
+/* The entry of face `face` of primitive pi. */
+static inline const cscene_face *cscene_face_at(const cscene *cs, int pi, int face)
+{
+    size_t k = face >= 0 && face < SCENE_MAX_FACES ? (size_t)face + 1 : 0;
+    return &cs->faces[(size_t)pi * (SCENE_MAX_FACES + 1) + k];
+}
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:
  * DIAG_INPUT with the location of the offending definition, DIAG_IO when

@@ -72,10 +72,41 @@ static int render_ops_region(const void *vcs, void *vtc, int prim, int face, dou
     return (int)(NS(trace_attribute)(cs, vtc, prim, face, &sf) - cs->sc->attrs);
 }
 
+/* One sample: the primary ray along dd (not normalised), its colour added
+ * to sum; *p gets the primitive it sees (-1: none), *r and *t0 its last
+ * ray and start. */
+static void render_ops_sample(const cscene *cs, trace_ctx *tc, const double *dd, double *sum, int *p,
+                              prim_ray *r, double *t0)
+{
+    double u[3], rgb[3], after = 0;
+    size_t tries;
+    int k, st1;
+    *p = -1;
+    if (dmath_unit3(dd, u))
+        return;
+    tc->rs.rays_primary++;
+    for (k = 0; k < 3; k++)
+        rgb[k] = cs->sc->background[k];
+    /* started where a surface can first lie; when nothing is hit in range,
+     * again from the next half-space plane */
+    for (tries = 0; tries <= cs->nplanes && *p < 0; tries++) {
+        if ((st1 = NS(cscene_primary)(cs, u, after, r, t0)) <= 0) {
+            tc->rs.range_cut += st1 < 0;
+            break;
+        }
+        NS(trace_ray)(cs, tc, r, 0, 1.0, rgb, p);
+        after = *t0 + GEOM_TMAX - 2;
+    }
+    for (k = 0; k < 3; k++)
+        sum[k] += rgb[k];
+}
+
 /* Pixel centres at (x + (i+1/2)/aa, y + (j+1/2)/aa); the PID is the one seen
  * by the sample nearest the pixel centre. Directions are set up in double,
  * the ray's start too (cscene_primary), and the direction is normalised in
- * num. */
+ * num. A direction fwd + sx right + sy up is summed left to right, so its
+ * column part fwd + sx right is formed once per sample column of a strip of
+ * at most RENDER_TILE pixels and sy once per sample row. */
 static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                             int x0, int y0, int x1, int y1, render_fb *fb, render_stats *st)
 {
@@ -83,51 +114,55 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     trace_ctx *tc = vtc;
     double aspect = (double)o->width / o->height;
     double rss = 1.0 / (o->aa * o->aa);
-    int x, y, i, j, k, aa = o->aa, mid = aa / 2;
+    double col[RENDER_TILE * RENDER_MAX_AA][3], sy[RENDER_MAX_AA], up[3];
+    int xs, xe, x, y, i, j, k, aa = o->aa, mid = aa / 2;
     tc->rs = (render_stats){0};
     tc->gs = (geom_stats){0};
-    for (y = y0; y < y1; y++)
-        for (x = x0; x < x1; x++) {
-            double sum[3] = {0, 0, 0};
-            int pid = -1;
-            unsigned char *px = fb->img.px + 3 * ((size_t)y * (size_t)o->width + (size_t)x);
-            tc->rays_left = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)(aa * aa);
+    memcpy(up, cs->up, sizeof up);
+    for (xs = x0; xs < x1; xs = xe) {
+        xe = x1 - xs > RENDER_TILE ? xs + RENDER_TILE : x1;
+        for (x = xs; x < xe; x++)
+            for (i = 0; i < aa; i++) {
+                double sx = (2 * (x + (i + 0.5) / aa) / o->width - 1) * cs->tan_half * aspect;
+                double *c = col[(x - xs) * aa + i];
+                for (k = 0; k < 3; k++)
+                    c[k] = cs->fwd[k] + sx * cs->right[k];
+            }
+        for (y = y0; y < y1; y++) {
             for (j = 0; j < aa; j++)
-                for (i = 0; i < aa; i++) {
-                    double sx = (2 * (x + (i + 0.5) / aa) / o->width - 1) * cs->tan_half * aspect;
-                    double sy = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
-                    double dd[3], u[3], rgb[3], after = 0, t0;
+                sy[j] = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
+            for (x = xs; x < xe; x++) {
+                size_t at = (size_t)y * (size_t)o->width + (size_t)x;
+                double sum[3] = {0, 0, 0};
+                int pid = -1;
+                unsigned char *px = fb->img.px + 3 * at;
+                tc->rays_left = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)(aa * aa);
+                /* samples (i, j) in one loop: a nest of two costs the
+                 * pixel a second loop set-up */
+                for (i = j = 0; j < aa;) {
+                    const double *c = col[(x - xs) * aa + i];
+                    double dd[3], t0 = 0;
                     prim_ray r;
-                    int p = -1, st1;
-                    size_t tries;
+                    int p;
                     for (k = 0; k < 3; k++)
-                        dd[k] = cs->fwd[k] + sx * cs->right[k] + sy * cs->up[k];
-                    if (dmath_unit3(dd, u))
-                        continue;
-                    tc->rs.rays_primary++;
-                    for (k = 0; k < 3; k++)
-                        rgb[k] = cs->sc->background[k];
-                    /* started where a surface can first lie; when nothing is
-                     * hit in range, again from the next half-space plane */
-                    for (tries = 0; tries <= cs->nplanes && p < 0; tries++) {
-                        if ((st1 = NS(cscene_primary)(cs, u, after, &r, &t0)) <= 0) {
-                            tc->rs.range_cut += st1 < 0;
-                            break;
-                        }
-                        NS(trace_ray)(cs, tc, &r, 0, 1.0, rgb, &p);
-                        after = t0 + GEOM_TMAX - 2;
-                    }
-                    if (i == mid && j == mid && fb->ids.px && p >= 0)
-                        render_ops_ids(cs, tc, &r, t0, &fb->ids.px[(size_t)y * (size_t)o->width + (size_t)x]);
-                    for (k = 0; k < 3; k++)
-                        sum[k] += rgb[k];
-                    if (i == mid && j == mid)
+                        dd[k] = c[k] + sy[j] * up[k];
+                    render_ops_sample(cs, tc, dd, sum, &p, &r, &t0);
+                    if (i == mid && j == mid) {
                         pid = p;
+                        if (fb->ids.px && p >= 0)
+                            render_ops_ids(cs, tc, &r, t0, &fb->ids.px[at]);
+                    }
+                    if (++i == aa) {
+                        i = 0;
+                        j++;
+                    }
                 }
-            for (k = 0; k < 3; k++)
-                px[k] = render_ops_byte(sum[k] * rss);
-            fb->pid[(size_t)y * (size_t)o->width + (size_t)x] = pid;
+                for (k = 0; k < 3; k++)
+                    px[k] = render_ops_byte(sum[k] * rss);
+                fb->pid[at] = pid;
+            }
         }
+    }
     st->rays_primary += tc->rs.rays_primary;
     st->rays_shadow += tc->rs.rays_shadow;
     st->rays_reflected += tc->rs.rays_reflected;

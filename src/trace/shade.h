@@ -32,6 +32,10 @@ double NS(shade_fresnel)(double cos_i, double eta);
 void NS(shade_local)(const cscene *cs, const scene_attr *at, const double color[3], const double ns[3],
                      const double d[3], const double (*ldir)[3], const double *pass, double c[3]);
 
+/* Whether shade_weights can give a recursive ray a positive weight: the
+ * attribute reflects (MIRROR) or transmits (TRANSMIT). */
+static inline int shade_spawns(const scene_attr *at) { return at->mirror > 0 || at->transmit > 0; }
+
 /* Weights of the recursive rays: *refl for the mirror ray (tint[] its
  * colour filter), *trans for the refracted one; cos_i and eta as above. */
 void NS(shade_weights)(const scene_attr *at, const double color[3], double cos_i, double eta, double *refl,
