@@ -149,9 +149,15 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
         prim *p = &cs->prims[i];
         const scene_prim *sp = &sc->prims[i];
         if (p->bounded) {
-            double aspect = dmath_m3_spectral_norm(p->a_d) * dmath_m3_spectral_norm(p->ainv_d);
+            double aspect = 0;
             bounded = 1;
-            if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK && aspect > CSCENE_ASPECT_MAX)
+            /* the Frobenius norms' product is never below the aspect by
+             * more than rounding (dmath_m3_frobenius): a primitive it keeps
+             * 1e-9 under the limit needs no eigenvalues */
+            if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK
+                && dmath_m3_frobenius(p->a_d) * dmath_m3_frobenius(p->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
+                && (aspect = dmath_m3_spectral_norm(p->a_d) * dmath_m3_spectral_norm(p->ainv_d))
+                       > CSCENE_ASPECT_MAX)
                 return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                                "primitive '%s': aspect ratio %.3g is beyond the %s limit of %g "
                                "(docs/numerics.md); use --numeric q32 or f64",

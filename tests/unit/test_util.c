@@ -1,11 +1,12 @@
-/* test_util — the allocation hook, first-error diagnostics and the radix
- * sort (src/util). */
+/* test_util — the allocation hook, first-error diagnostics, the radix sort
+ * and the 3x3 norms (src/util). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <cmocka.h>
 #include "support.h"
 #include "util/diag.h"
+#include "util/dmath.h"
 #include "util/mem.h"
 #include "util/radix.h"
 #include <math.h>
@@ -144,6 +145,40 @@ static void test_util_radix_sort_matches_comparator(void **state)
     }
 }
 
+/* The computed spectral norm never exceeds the Frobenius norm by more than
+ * 1e-14 relative (cscene's aspect check relies on 1e-9): random matrices of
+ * random scales, and the worst cases of the closed form (one singular value,
+ * two equal largest ones, all equal, nearly singular). */
+static void test_util_frobenius_bounds_spectral_norm(void **state)
+{
+    static const double fixed[][9] = {
+        {1, 0, 0, 0, 0, 0, 0, 0, 0},      {1, 2, 3, 2, 4, 6, 3, 6, 9},
+        {1, 0, 0, 0, 1, 0, 0, 0, 1e-9},   {1e-9, 0, 0, 0, 1e-9, 0, 0, 0, 1},
+        {2, 0, 0, 0, 2, 0, 0, 0, 2},      {0.6, 0.8, 0, -0.8, 0.6, 0, 0, 0, 1e-12},
+        {1, 1e-8, 0, 0, 1, 1e-8, 1e-8, 0, 1}, {0, 0, 0, 0, 0, 0, 0, 0, 0}};
+    unsigned seed = 99;
+    int t, i;
+    (void)state;
+    for (t = 0; t < 20000; t++) {
+        double m[9], f, s;
+        if (t < (int)(sizeof fixed / sizeof fixed[0])) {
+            memcpy(m, fixed[t], sizeof m);
+        } else {
+            for (i = 0; i < 9; i++) {
+                seed = seed * 1103515245u + 12345u;
+                m[i] = ((double)(seed >> 8) / 8388608.0 - 1) * pow(10, (int)(seed % 7) - 3);
+            }
+            if (t % 3 == 0)                   /* rank one, or two equal rows */
+                for (i = 3; i < 9; i++)
+                    m[i] = m[i % 3] * (t % 2 ? 1 : (i < 6 ? 0.5 : -2));
+        }
+        f = dmath_m3_frobenius(m);
+        s = dmath_m3_spectral_norm(m);
+        assert_true(s <= f * (1 + 1e-14));
+        assert_true(s >= f / sqrt(3) * (1 - 1e-9));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -151,6 +186,7 @@ int main(void)
         cmocka_unit_test(test_util_mem_fail_and_overflow),
         cmocka_unit_test(test_util_diag_first_error_and_forms),
         cmocka_unit_test(test_util_radix_sort_matches_comparator),
+        cmocka_unit_test(test_util_frobenius_bounds_spectral_norm),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
