@@ -15,6 +15,7 @@
 #include "scene/scene_parse.h"
 #include "model/scene_map.h"
 #include "scene/scene_parser.h"
+#include "scene/scene_xform.h"
 #include "util/mem.h"
 #include "support.h"
 #include "scene_test.h"
@@ -266,6 +267,44 @@ static void test_scene_parse_transform_order(void **state)
 
 /* Seeded property: a random chain of transforms on a definition, an operand
  * and an OBJECT equals applying each step to the point in turn. */
+/* scene_xform_mul gives the full 4x4 product bit for bit on affine
+ * matrices: entries from a pool of signed zeros, ones, exact and inexact
+ * values, products that overflow; where the full product is not finite,
+ * neither passes scene_xform_ok. */
+static void test_scene_parse_xform_mul_is_full_product(void **state)
+{
+    static const double pool[] = {0.0, -0.0, 1.0, -1.0, 0.5, -3.0, 1e-300, 1e200, -1e200};
+    uint64_t seed = test_seed("test_scene_parse_xform_mul_is_full_product");
+    int iter, i, j, k;
+    (void)state;
+    for (iter = 0; iter < 100000; iter++) {
+        double a[16], b[16], full[16], got[16];
+        int finite = 1;
+        scene_xform_identity(a);
+        scene_xform_identity(b);
+        for (i = 0; i < 12; i++) {
+            uint64_t r = test_rand(&seed);
+            a[i] = r % 3 ? pool[r % 9] : test_uniform(&seed, -10, 10);
+            r = test_rand(&seed);
+            b[i] = r % 3 ? pool[r % 7] : test_uniform(&seed, -10, 10);
+        }
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++) {
+                double s = 0;
+                for (k = 0; k < 4; k++)
+                    s += a[i * 4 + k] * b[k * 4 + j];
+                full[i * 4 + j] = s;
+                finite &= isfinite(s) != 0;
+            }
+        memcpy(got, a, sizeof got);
+        scene_xform_mul(got, got, b);                     /* aliasing a */
+        if (finite)
+            assert_memory_equal(got, full, sizeof got);
+        else
+            assert_false(scene_xform_ok(got) || scene_xform_ok(full));
+    }
+}
+
 static void test_scene_parse_transform_property(void **state)
 {
     uint64_t seed = test_seed("test_scene_parse_transform_property");
@@ -903,6 +942,7 @@ int main(void)
         cmocka_unit_test(test_scene_parse_primitives),
         cmocka_unit_test(test_scene_parse_csg_fold),
         cmocka_unit_test(test_scene_parse_transform_order),
+        cmocka_unit_test(test_scene_parse_xform_mul_is_full_product),
         cmocka_unit_test(test_scene_parse_transform_property),
         cmocka_unit_test(test_scene_parse_attr_inheritance),
         cmocka_unit_test(test_scene_parse_sequence_columns),
