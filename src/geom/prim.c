@@ -168,7 +168,9 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         r = dmath_m3_spectral_norm(p.a_d);
     } else if (p.bounded) {
         int k;
-        for (k = 0; k < 8; k++) {
+        /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
+         * and its image as long to the bit: four corners give the radius */
+        for (k = 0; k < 4; k++) {
             double corner[3], w[3], len;
             for (i = 0; i < 3; i++)
                 corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];

@@ -1,7 +1,8 @@
-/* test_cscene — the scene compiler's normalisation (src/trace/cscene.c):
- * the bounding box it takes from each primitive's extreme corners equals,
- * bit for bit, the box of all eight corners formed one by one. Checked in
- * the f64 build; the normalisation is double in every mode. */
+/* test_cscene — what the scene compiler measures in double from each
+ * primitive's corners, against all eight formed one by one, bit for bit:
+ * the box the normalisation is taken from (src/trace/cscene.c) and the
+ * bounding sphere's radius (src/geom/prim.c). Checked in the f64 build;
+ * both are double in every mode. */
 #define NUM_MODE f64
 #define NUM_MODE_f64
 #include <stdarg.h>
@@ -11,7 +12,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "geom/prim.h"
 #include "trace/cscene.h"
+#include "util/dmath.h"
 #include "tracer_test.h"
 
 /* The box of the eight corners of every bounded primitive, each corner
@@ -70,53 +73,58 @@ static double cscene_test_num(uint64_t *seed, double lo, double hi)
     return floor(test_uniform(seed, lo, hi) * 1000) / 1000;
 }
 
-/* 6,000 decks of one to three primitives of every bounded kind, placed by
- * quarter turns (exact zeros in the matrix), other turns, negative and
- * uneven scales and translations that put faces on the deck's planes
- * (boxes touching 0, where corners may differ in the sign of zero): the
- * compiled normalisation equals the one from all eight corners. */
-static void test_cscene_box_from_extreme_corners(void **state)
+/* A deck of one to three primitives of the bounded kinds, placed by quarter
+ * turns (exact zeros in the matrix), other turns, negative and uneven
+ * scales and translations that put faces on the deck's planes (boxes
+ * touching 0, where corners may differ in the sign of zero). */
+static scene *cscene_test_deck(uint64_t *seed, char *text, size_t size)
 {
     static const char *const kind[4] = {"SPHERE P%d %.3f", "CYLINDER P%d %.3f %.3f",
                                         "CONE P%d %.3f %.3f %.3f", "BLOCK P%d %.3f %.3f %.3f"};
+    size_t len = (size_t)snprintf(text, size, "EYE 30 -40 30\nLOOKAT 0 0 0\nLIGHT 6 -4 9\n");
+    int n = 1 + (int)(test_rand(seed) % 3), i, t;
+    for (i = 0; i < n; i++) {
+        int k = (int)(test_rand(seed) % 4);
+        double a = 0.125 + cscene_test_num(seed, 0, 3), b = 0.125 + cscene_test_num(seed, 0, 3);
+        double c = 0.125 + cscene_test_num(seed, 0, 3);
+        len += (size_t)snprintf(text + len, size - len, kind[k], i, a, k == 2 ? 0.0 : b, c);
+        for (t = (int)(test_rand(seed) % 4); t > 0; t--) {
+            uint64_t r = test_rand(seed) % 5;
+            if (r == 0)
+                len += (size_t)snprintf(text + len, size - len, " -\n ROTATE %c %d",
+                                        "XYZ"[test_rand(seed) % 3], 90 * (int)(test_rand(seed) % 4));
+            else if (r == 1)
+                len += (size_t)snprintf(text + len, size - len, " -\n ROTATE AXIS %.3f %.3f 1 %.3f",
+                                        cscene_test_num(seed, -2, 2), cscene_test_num(seed, -2, 2),
+                                        cscene_test_num(seed, -180, 180));
+            else if (r == 2)
+                len += (size_t)snprintf(text + len, size - len, " -\n SCALE %.3f %.3f %.3f",
+                                        test_rand(seed) % 2 ? -1.5 : 0.75, 0.5 + cscene_test_num(seed, 0, 2),
+                                        -0.25 - cscene_test_num(seed, 0, 2));
+            else
+                len += (size_t)snprintf(text + len, size - len, " -\n TRANSLATE %.3f %.3f %.3f",
+                                        cscene_test_num(seed, -5, 5), cscene_test_num(seed, -5, 5),
+                                        cscene_test_num(seed, -5, 5));
+        }
+        len += (size_t)snprintf(text + len, size - len, "\nOBJECT P%d\n", i);
+    }
+    assert_true(len < size);
+    return tt_parse(text);
+}
+
+/* 6,000 random decks: the compiled normalisation equals the one from all
+ * eight corners. */
+static void test_cscene_box_from_extreme_corners(void **state)
+{
     uint64_t seed = test_seed("test_cscene_box_from_extreme_corners");
     int deck;
     (void)state;
     for (deck = 0; deck < 6000; deck++) {
         char text[2048];
-        size_t len = (size_t)snprintf(text, sizeof text, "EYE 30 -40 30\nLOOKAT 0 0 0\nLIGHT 6 -4 9\n");
-        int n = 1 + (int)(test_rand(&seed) % 3), i, t;
-        scene *sc;
+        scene *sc = cscene_test_deck(&seed, text, sizeof text);
         cscene *cs = NULL;
         geom_norm want;
         diag err;
-        for (i = 0; i < n; i++) {
-            int k = (int)(test_rand(&seed) % 4);
-            double a = 0.125 + cscene_test_num(&seed, 0, 3), b = 0.125 + cscene_test_num(&seed, 0, 3);
-            double c = 0.125 + cscene_test_num(&seed, 0, 3);
-            len += (size_t)snprintf(text + len, sizeof text - len, kind[k], i, a, k == 2 ? 0.0 : b, c);
-            for (t = (int)(test_rand(&seed) % 4); t > 0; t--) {
-                uint64_t r = test_rand(&seed) % 5;
-                if (r == 0)
-                    len += (size_t)snprintf(text + len, sizeof text - len, " -\n ROTATE %c %d",
-                                            "XYZ"[test_rand(&seed) % 3], 90 * (int)(test_rand(&seed) % 4));
-                else if (r == 1)
-                    len += (size_t)snprintf(text + len, sizeof text - len, " -\n ROTATE AXIS %.3f %.3f 1 %.3f",
-                                            cscene_test_num(&seed, -2, 2), cscene_test_num(&seed, -2, 2),
-                                            cscene_test_num(&seed, -180, 180));
-                else if (r == 2)
-                    len += (size_t)snprintf(text + len, sizeof text - len, " -\n SCALE %.3f %.3f %.3f",
-                                            test_rand(&seed) % 2 ? -1.5 : 0.75, 0.5 + cscene_test_num(&seed, 0, 2),
-                                            -0.25 - cscene_test_num(&seed, 0, 2));
-                else
-                    len += (size_t)snprintf(text + len, sizeof text - len, " -\n TRANSLATE %.3f %.3f %.3f",
-                                            cscene_test_num(&seed, -5, 5), cscene_test_num(&seed, -5, 5),
-                                            cscene_test_num(&seed, -5, 5));
-            }
-            len += (size_t)snprintf(text + len, sizeof text - len, "\nOBJECT P%d\n", i);
-        }
-        assert_true(len < sizeof text);
-        sc = tt_parse(text);
         assert_non_null(sc);
         diag_init(&err);
         assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
@@ -130,10 +138,54 @@ static void test_cscene_box_from_extreme_corners(void **state)
     }
 }
 
+/* A compiled cylinder's, cone's or block's bounding sphere has the radius
+ * of its farthest corner of all eight (prim_compile measures four), for the
+ * primitives of 6,000 random decks. */
+static void test_cscene_bounding_radius_from_all_corners(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_bounding_radius_from_all_corners");
+    int deck;
+    (void)state;
+    for (deck = 0; deck < 6000; deck++) {
+        char text[2048];
+        scene *sc = cscene_test_deck(&seed, text, sizeof text);
+        cscene *cs = NULL;
+        diag err;
+        size_t n;
+        assert_non_null(sc);
+        diag_init(&err);
+        assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
+        for (n = 0; n < sc->nprims; n++) {
+            const scene_prim *sp = &sc->prims[n];
+            double lo[3] = {-1, -1, 0}, cc[3] = {0, 0, 0.5}, r = 0;
+            prim p;
+            int i, k;
+            if (sp->kind == PRIM_SPHERE)
+                continue;
+            if (sp->kind == PRIM_BLOCK)
+                lo[0] = lo[1] = 0, cc[0] = cc[1] = 0.5;
+            assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, &p, "test", &err), 0);
+            for (k = 0; k < 8; k++) {
+                double corner[3], w[3], len;
+                for (i = 0; i < 3; i++)
+                    corner[i] = ((k >> i) & 1 ? 1 : lo[i]) - cc[i];
+                dmath_m3_mul_v(p.a_d, corner, w);
+                len = dmath_len3(w);
+                if (len > r)
+                    r = len;
+            }
+            assert_true(p.br == r * (1 + 1e-6) + 1.0 / 16384);
+        }
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cscene_box_from_extreme_corners),
+        cmocka_unit_test(test_cscene_bounding_radius_from_all_corners),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
