@@ -127,7 +127,10 @@ static int scene_cur_syntax(const char *s)
 /* 1 if the item spells NaN or infinity the way strtod would accept it. */
 static int scene_cur_nonfinite(const scene_lex_tok *t)
 {
-    scene_lex_tok u = *t;
+    scene_lex_tok u;
+    if (!isalpha((unsigned char)t->text[t->text[0] == '+' || t->text[0] == '-']))
+        return 0;                         /* those are words: not a number's digits */
+    u = *t;
     if (u.text[0] == '+' || u.text[0] == '-') {
         memmove(u.text, u.text + 1, u.len);
         u.len--;
