@@ -3,6 +3,7 @@
 #include "geom/prim.h"
 #include "util/dmath.h"
 #include "util/mem.h"
+#include "util/radix.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -220,7 +221,9 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         r = dmath_m3_spectral_norm(p.a_d);
     } else if (p.bounded) {
         int k;
-        for (k = 0; k < 8; k++) {
+        /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
+         * and its image as long to the bit: four corners give the radius */
+        for (k = 0; k < 4; k++) {
             double corner[3], w[3], len;
             for (i = 0; i < 3; i++)
                 corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
@@ -263,16 +266,6 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
 /* ---- one representation for coincident geometry --------------------- */
 
 typedef struct prim_pref { double key; int prim, k; } prim_pref;
-
-static int prim_pref_cmp(const void *a, const void *b)
-{
-    const prim_pref *x = a, *y = b;
-    if (x->key != y->key)
-        return x->key < y->key ? -1 : 1;
-    if (x->prim != y->prim)
-        return x->prim - y->prim;
-    return x->k - y->k;
-}
 
 /* The orientation (+1, -1) in which plane q equals plane r within
  * PRIM_SAME_TOL, or 0. */
@@ -332,14 +325,6 @@ static int prim_same_solid(const prim *a, const prim *b)
  * below sqrt(3) times its L2 norm, weighted by |w_k|. */
 typedef struct prim_skey { double key, win; size_t i; } prim_skey;
 
-static int prim_skey_cmp(const void *a, const void *b)
-{
-    const prim_skey *x = a, *y = b;
-    if (x->key != y->key)
-        return x->key < y->key ? -1 : 1;
-    return x->i < y->i ? -1 : x->i > y->i;
-}
-
 /* Identical curved solids: the later one intersects through the earliest
  * matching one's data (its own frame still gives (u,v)). Candidates come
  * from a sweep over the sorted keys, so n solids cost O(n log n) plus the
@@ -347,6 +332,7 @@ static int prim_skey_cmp(const void *a, const void *b)
 static int prim_share_solids(prim *prims, size_t n, diag *err)
 {
     prim_skey *sk;
+    uint64_t *sort;
     size_t m = 0, i, p, q;
     long *match;
     for (i = 0; i < n; i++)
@@ -354,14 +340,10 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
     if (m < 2)
         return 0;
     sk = mem_calloc(m, sizeof *sk);
+    sort = mem_calloc(m, sizeof *sort);
     match = mem_calloc(n, sizeof *match);
-    if (!sk || !match) {
-        mem_free(sk);
-        mem_free(match);
-        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
-    }
     m = 0;
-    for (i = 0; i < n; i++) {
+    for (i = 0; sk && sort && match && i < n; i++) {
         const prim *a = &prims[i];
         static const double w[3] = {1, 0.7548776662466927, 0.5698402909980532};
         double cz = a->kind == PRIM_SPHERE ? 0 : 0.5, key = 0, win = 0;
@@ -376,9 +358,16 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
         }
         sk[m].key = key;
         sk[m].win = 4 * PRIM_SAME_TOL * win + 1e-12 * (fabs(key) + 1);
+        sort[m] = radix_key_d(key);
         sk[m++].i = i;
     }
-    qsort(sk, m, sizeof *sk, prim_skey_cmp);
+    if (!sk || !sort || !match || radix_sort(sk, m, sizeof *sk, sort)) {   /* ties in index order */
+        mem_free(sk);
+        mem_free(sort);
+        mem_free(match);
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    }
+    mem_free(sort);
     for (p = 0; p < m; p++) {
         size_t bi = sk[p].i;
         for (q = p; q-- > 0 && sk[p].key - sk[q].key <= 2 * sk[p].win;)
@@ -410,24 +399,31 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
 int NS(prim_share)(prim *prims, size_t n, diag *err)
 {
     prim_pref *pr;
+    uint64_t *sort;
     size_t np = 0, i, j;
     int k;
     for (i = 0; i < n; i++)
         np += (size_t)prims[i].nplanes;
     pr = mem_calloc(np ? np : 1, sizeof *pr);
-    if (!pr)
-        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    sort = mem_calloc(np ? np : 1, sizeof *sort);
     np = 0;
-    for (i = 0; i < n; i++)
+    for (i = 0; pr && sort && i < n; i++)
         for (k = 0; k < prims[i].nplanes; k++) {
             pr[np].key = fabs(prims[i].pl_d[k][3]);
+            sort[np] = radix_key_d(pr[np].key);
             pr[np].prim = (int)i;
             pr[np++].k = k;
         }
-    /* planes sorted by |offset|; each takes the nearest earlier plane of
-     * another primitive that it equals within the tolerance, and that one
-     * already holds its group's single representation */
-    qsort(pr, np, sizeof *pr, prim_pref_cmp);
+    /* planes sorted by |offset|, ties in (primitive, plane) order; each
+     * takes the nearest earlier plane of another primitive that it equals
+     * within the tolerance, and that one already holds its group's single
+     * representation */
+    if (!pr || !sort || radix_sort(pr, np, sizeof *pr, sort)) {
+        mem_free(pr);
+        mem_free(sort);
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    }
+    mem_free(sort);
     for (i = 0; i < np; i++) {
         double *q = prims[pr[i].prim].pl_d[pr[i].k];
         for (j = i; j-- > 0 && pr[i].key - pr[j].key <= PRIM_SAME_TOL;) {

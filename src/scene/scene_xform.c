@@ -12,18 +12,23 @@ void scene_xform_identity(double m[16])
         m[i] = (i % 5 == 0) ? 1.0 : 0.0;
 }
 
+/* Only the top three rows are formed, each sum in the order the full
+ * product adds it: b's last row (0 0 0 1) contributes a[i][3] to column 3
+ * and a[i][3] * 0 elsewhere, which changes no sum (started from +0, a sum
+ * is never -0); a's last row gives b's again. */
 void scene_xform_mul(double out[16], const double a[16], const double b[16])
 {
-    double r[16];
-    int i, j, k;
-    for (i = 0; i < 4; i++)
-        for (j = 0; j < 4; j++) {
-            double s = 0;
-            for (k = 0; k < 4; k++)
-                s += a[i * 4 + k] * b[k * 4 + j];
-            r[i * 4 + j] = s;
-        }
+    double r[12];
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        const double *ai = a + 4 * i;
+        for (j = 0; j < 4; j++)
+            r[4 * i + j] = 0.0 + ai[0] * b[j] + ai[1] * b[4 + j] + ai[2] * b[8 + j];
+        r[4 * i + 3] += ai[3];
+    }
     memcpy(out, r, sizeof r);
+    out[12] = out[13] = out[14] = 0;
+    out[15] = 1;
 }
 
 int scene_xform_ok(const double m[16])

@@ -14,7 +14,8 @@
 #define SCENE_XFORM_MAX_ABS 1e12
 
 void scene_xform_identity(double m[16]);
-/* out = a * b (out may alias a or b). */
+/* out = a * b for affine a and b with finite entries (out may alias a or
+ * b); bit for bit the full 4x4 product. */
 void scene_xform_mul(double out[16], const double a[16], const double b[16]);
 /* 1 if m is finite, within SCENE_XFORM_MAX_ABS, no row of its 3x3 linear
  * part is shorter than 1/SCENE_XFORM_MAX_ABS and that part is invertible

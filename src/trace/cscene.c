@@ -9,8 +9,25 @@
 
 static const char *cscene_file(const scene *sc) { return sc->source ? sc->source : ""; }
 
+/* Coordinate i of the deck-space corner k (bit j: the high end on axis j)
+ * of the canonical box l..h scaled by c, under m. */
+static double cscene_corner(const double *m, int i, int k, const double *c, const double *l,
+                            const double *h)
+{
+    double p[3];
+    int j;
+    for (j = 0; j < 3; j++)
+        p[j] = ((k >> j) & 1 ? h[j] : l[j]) * c[j];
+    return m[4 * i] * p[0] + m[4 * i + 1] * p[1] + m[4 * i + 2] * p[2] + m[4 * i + 3];
+}
+
 /* Grows the box lo/hi by the deck-space corners of primitive sp's canonical
- * bounding box (bounded kinds only). */
+ * bounding box (bounded kinds only). A coordinate is a rounded sum of three
+ * rounded products, one per axis, and grows with each of them: the corner
+ * that takes on every axis the end with the smaller product is the least of
+ * the eight, the one with the larger products the greatest. Only when one
+ * of those is zero, whose sign could differ between corners, are all eight
+ * formed in order. */
 static void cscene_grow_box(const scene_prim *sp, double *lo, double *hi)
 {
     double c[3], l[3], h[3];
@@ -25,15 +42,23 @@ static void cscene_grow_box(const scene_prim *sp, double *lo, double *hi)
     default: return;
     }
     h[0] = h[1] = h[2] = 1;
-    for (k = 0; k < 8; k++) {
-        double p[3], w;
-        for (i = 0; i < 3; i++)
-            p[i] = ((k >> i) & 1 ? h[i] : l[i]) * c[i];
-        for (i = 0; i < 3; i++) {
-            w = m[4 * i] * p[0] + m[4 * i + 1] * p[1] + m[4 * i + 2] * p[2] + m[4 * i + 3];
+    for (i = 0; i < 3; i++) {
+        double wl = 0, wh = 0;
+        int j;
+        for (j = 0; j < 3; j++) {         /* summed as cscene_corner sums them */
+            double a = m[4 * i + j] * (l[j] * c[j]), b = m[4 * i + j] * (h[j] * c[j]);
+            wl = j ? wl + (b < a ? b : a) : (b < a ? b : a);
+            wh = j ? wh + (b > a ? b : a) : (b > a ? b : a);
+        }
+        wl += m[4 * i + 3];
+        wh += m[4 * i + 3];
+        for (k = wl == 0 || wh == 0 ? 0 : 8; k < 8; k++) {
+            double w = cscene_corner(m, i, k, c, l, h);
             if (w < lo[i]) lo[i] = w;
             if (w > hi[i]) hi[i] = w;
         }
+        if (wl < lo[i]) lo[i] = wl;
+        if (wh > hi[i]) hi[i] = wh;
     }
 }
 
@@ -170,9 +195,15 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
         prim *p = &cs->prims[i];
         const scene_prim *sp = &sc->prims[i];
         if (p->bounded) {
-            double aspect = dmath_m3_spectral_norm(p->a_d) * dmath_m3_spectral_norm(p->ainv_d);
+            double aspect = 0;
             bounded = 1;
-            if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK && aspect > CSCENE_ASPECT_MAX)
+            /* the Frobenius norms' product is never below the aspect by
+             * more than rounding (dmath_m3_frobenius): a primitive it keeps
+             * 1e-9 under the limit needs no eigenvalues */
+            if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK
+                && dmath_m3_frobenius(p->a_d) * dmath_m3_frobenius(p->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
+                && (aspect = dmath_m3_spectral_norm(p->a_d) * dmath_m3_spectral_norm(p->ainv_d))
+                       > CSCENE_ASPECT_MAX)
                 return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                                "primitive '%s': aspect ratio %.3g is beyond the %s limit of %g "
                                "(docs/numerics.md); use --numeric q32 or f64",

@@ -71,4 +71,12 @@ static inline void dmath_m3_tmul_v(const double *m, const double *v, double *out
 int dmath_m3_inverse(const double *m, double *inv);
 /* Largest singular value of m (closed-form eigenvalue of m^T m). */
 double dmath_m3_spectral_norm(const double *m);
+/* Frobenius norm of m: never below dmath_m3_spectral_norm(m) by more than
+ * rounding (that one computes the largest eigenvalue of m^T m as q + 2p cos
+ * phi with p <= q and 3q the trace, the square of this norm), and cheaper:
+ * a bound that clears most matrices before the spectral norm is needed. */
+static inline double dmath_m3_frobenius(const double *m)
+{
+    return sqrt(dmath_norm2_3(m) + dmath_norm2_3(m + 3) + dmath_norm2_3(m + 6));
+}
 #endif

@@ -15,27 +15,45 @@ static const uint32_t sha256_k[64] = {
 };
 
 #define SHA256_ROR(x, n) (((x) >> (n)) | ((x) << (32 - (n))))
+/* One round on the working variables as they stand in round i + j, the
+ * eight unrolled so that no variable is copied to the next: Sigma1 and
+ * Sigma0 as nested rotations (one copy each), Ch as g ^ (e & (f ^ g)), Maj
+ * as b ^ ((a ^ b) & (b ^ c)) with b ^ c the previous round's a ^ b. */
+#define SHA256_ROUND(a, b, c, d, e, f, g, h, j)                                             \
+    do {                                                                                   \
+        uint32_t t1 = h + SHA256_ROR(e ^ SHA256_ROR(e ^ SHA256_ROR(e, 14), 5), 6)             \
+                      + (g ^ (e & (f ^ g))) + sha256_k[i + j] + w[i + j];                   \
+        uint32_t ab = a ^ b;                                                               \
+        d += t1;                                                                           \
+        h = t1 + SHA256_ROR(a ^ SHA256_ROR(a ^ SHA256_ROR(a, 9), 11), 2) + (b ^ (ab & bc));  \
+        bc = ab;                                                                           \
+    } while (0)
 
 static void sha256_block(sha256 *s, const unsigned char *p)
 {
-    uint32_t w[64], a, b, c, d, e, f, g, h;
+    uint32_t w[64], a, b, c, d, e, f, g, h, bc;
     int i;
     for (i = 0; i < 16; i++)
         w[i] = (uint32_t)p[4 * i] << 24 | (uint32_t)p[4 * i + 1] << 16 | (uint32_t)p[4 * i + 2] << 8
                | p[4 * i + 3];
     for (i = 16; i < 64; i++) {
-        uint32_t s0 = SHA256_ROR(w[i - 15], 7) ^ SHA256_ROR(w[i - 15], 18) ^ (w[i - 15] >> 3);
-        uint32_t s1 = SHA256_ROR(w[i - 2], 17) ^ SHA256_ROR(w[i - 2], 19) ^ (w[i - 2] >> 10);
+        uint32_t x = w[i - 15], y = w[i - 2];
+        uint32_t s0 = SHA256_ROR(x ^ SHA256_ROR(x, 11), 7) ^ (x >> 3);
+        uint32_t s1 = SHA256_ROR(y ^ SHA256_ROR(y, 2), 17) ^ (y >> 10);
         w[i] = w[i - 16] + s0 + w[i - 7] + s1;
     }
     a = s->h[0]; b = s->h[1]; c = s->h[2]; d = s->h[3];
     e = s->h[4]; f = s->h[5]; g = s->h[6]; h = s->h[7];
-    for (i = 0; i < 64; i++) {
-        uint32_t t1 = h + (SHA256_ROR(e, 6) ^ SHA256_ROR(e, 11) ^ SHA256_ROR(e, 25)) + ((e & f) ^ (~e & g))
-                      + sha256_k[i] + w[i];
-        uint32_t t2 = (SHA256_ROR(a, 2) ^ SHA256_ROR(a, 13) ^ SHA256_ROR(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
-        h = g; g = f; f = e; e = d + t1;
-        d = c; c = b; b = a; a = t1 + t2;
+    bc = b ^ c;
+    for (i = 0; i < 64; i += 8) {
+        SHA256_ROUND(a, b, c, d, e, f, g, h, 0);
+        SHA256_ROUND(h, a, b, c, d, e, f, g, 1);
+        SHA256_ROUND(g, h, a, b, c, d, e, f, 2);
+        SHA256_ROUND(f, g, h, a, b, c, d, e, 3);
+        SHA256_ROUND(e, f, g, h, a, b, c, d, 4);
+        SHA256_ROUND(d, e, f, g, h, a, b, c, 5);
+        SHA256_ROUND(c, d, e, f, g, h, a, b, 6);
+        SHA256_ROUND(b, c, d, e, f, g, h, a, 7);
     }
     s->h[0] += a; s->h[1] += b; s->h[2] += c; s->h[3] += d;
     s->h[4] += e; s->h[5] += f; s->h[6] += g; s->h[7] += h;
@@ -56,6 +74,12 @@ void sha256_update(sha256 *s, const void *data, size_t len)
     s->len += len;
     while (len > 0) {
         size_t n = 64 - s->nbuf < len ? 64 - s->nbuf : len;
+        if (s->nbuf == 0 && len >= 64) {          /* whole blocks need no copy */
+            sha256_block(s, p);
+            p += 64;
+            len -= 64;
+            continue;
+        }
         memcpy(s->buf + s->nbuf, p, n);
         s->nbuf += n;
         p += n;

@@ -46,7 +46,37 @@ static void test_provenance_sha256_vectors(void **state)
     memset(mill, 'a', 1000000);
     hash_of(mill, 1000000, 4093, hex);
     assert_string_equal(hex, "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+    hash_of(mill, 1000000, 1000000, hex);          /* whole blocks straight from the input */
+    assert_string_equal(hex, "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
     free(mill);
+}
+
+/* Lengths either side of the padding's and the block's edges, each fed in
+ * one piece, by 64 and by 7 bytes (digests from Python's hashlib). */
+static void test_provenance_sha256_block_edges(void **state)
+{
+    static const struct { size_t n; const char *hex; } v[] = {
+        {55, "e7313d333c272e639f790978283f9eb392e843d0f29b7016828bb1daa4aac70b"},
+        {56, "4324d65f3c103567f5589c710bc08f8523f929a9272e3af36fc968e52abc6c27"},
+        {57, "35df609437dcfea3279283ab79fd554e2bf78f8f7ae2de532d8ee300b09e8f73"},
+        {63, "81c80242132f230c3bd41b3e63bbcff16107339549214a99614ff26664625055"},
+        {64, "39e3d7b6b5d075d37d053ad89b24b41bef4f3c29760c84447cab3f3be1882241"},
+        {65, "aacca6ff74fdbb296d165a45cecfa04e5127bc008770fbbdd48006f2d2fae95e"},
+        {119, "9ce7368e4daf32341631b492e80359dc9f594b48453cd0dd5bf0b19279cc177e"},
+        {120, "7836b787757e95e58b3ca5aec90b1b004e8deba1e50e9675af9cabf1a13a04b5"},
+        {128, "d2742f1f4ac6bb7ca2b239ee18402ba8b3f9f8e652d2a72973c2b9ba11c08cf6"},
+        {1000, "1e9bc38cbf860b9ec31918b065f9b52476c549a782e0e7990bed8ce3868d2371"}};
+    static const size_t piece[3] = {1000, 64, 7};
+    char data[1000], hex[65];
+    size_t i, k;
+    (void)state;
+    for (i = 0; i < sizeof data; i++)
+        data[i] = (char)((i * 7 + 3) & 255);
+    for (i = 0; i < sizeof v / sizeof v[0]; i++)
+        for (k = 0; k < 3; k++) {
+            hash_of(data, v[i].n, piece[k], hex);
+            assert_string_equal(hex, v[i].hex);
+        }
 }
 
 static void test_provenance_png_text(void **state)
@@ -179,6 +209,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_provenance_sha256_vectors),
+        cmocka_unit_test(test_provenance_sha256_block_edges),
         cmocka_unit_test(test_provenance_png_text),
         cmocka_unit_test(test_provenance_pnm_roundtrip),
         cmocka_unit_test(test_provenance_output_names),

@@ -15,6 +15,7 @@
 #include "scene/scene_parse.h"
 #include "model/scene_map.h"
 #include "scene/scene_parser.h"
+#include "scene/scene_xform.h"
 #include "util/mem.h"
 #include "support.h"
 #include "scene_test.h"
@@ -266,6 +267,102 @@ static void test_scene_parse_transform_order(void **state)
 
 /* Seeded property: a random chain of transforms on a definition, an operand
  * and an OBJECT equals applying each step to the point in turn. */
+/* A deck's numbers take strtod's value bit for bit: random decimal items
+ * (signs, leading zeros, up to 12 integer and 25 fractional digits, a bare
+ * leading or trailing point, exponents) and the edges of the fast path
+ * (2^53 in the digits, 22 fractional digits), each as a TRANSLATE. */
+static void test_scene_parse_numbers_as_strtod(void **state)
+{
+    static const char *const edge[] = {
+        "0.1", "0.3", "-0.0", "+.5", "2.", "999999.9999999999", "0.9007199254740991",
+        "0.9007199254740993", "0.0000000000000000000001", "1.0000000000000000000001",
+        "0.00000000000000000000001", "123456.7890123456789", "5e-324", "1e6", "0.1e1"};
+    uint64_t seed = test_seed("test_scene_parse_numbers_as_strtod");
+    int deck, i;
+    (void)state;
+    for (deck = 0; deck < 8; deck++) {
+        char *buf = NULL, item[2000][48];
+        size_t len = 0, cap = 0;
+        int n = 0;
+        scene *sc;
+        addf(&buf, &len, &cap, "%s", TAIL);
+        while (n < 2000) {
+            char *q = item[n];
+            int k, ni = (int)(test_rand(&seed) % 13), nf = (int)(test_rand(&seed) % 26);
+            int point = ni == 0 || test_rand(&seed) % 4 != 0;
+            if (deck == 0 && n < (int)(sizeof edge / sizeof edge[0])) {
+                strcpy(q, edge[n]);
+            } else {
+                *q = "+- "[test_rand(&seed) % 3];
+                q += *q != ' ';
+                for (k = 0; k < ni; k++)
+                    *q++ = (char)('0' + test_rand(&seed) % (k < 6 && test_rand(&seed) % 3 ? 1 : 10));
+                if (point) {
+                    *q++ = '.';
+                    for (k = 0; k < nf; k++)
+                        *q++ = (char)('0' + test_rand(&seed) % 10);
+                }
+                if (q[-1] == '.' && (ni == 0 || q[-2] < '0' || q[-2] > '9'))
+                    *q++ = '7';                       /* a digit in the mantissa */
+                if (test_rand(&seed) % 8 == 0)
+                    q += sprintf(q, "e%d", (int)(test_rand(&seed) % 30) - 20);
+                *q = '\0';
+                if (!(fabs(strtod(item[n], NULL)) <= 1e6))
+                    continue;                         /* out of a deck's range */
+            }
+            addf(&buf, &len, &cap, "SPHERE S%d 1 TRANSLATE %s 0 0\nOBJECT S%d\n", n, item[n], n);
+            n++;
+        }
+        sc = parse_ok(buf);
+        for (i = 0; i < n; i++) {
+            double want = 0.0 + strtod(item[i], NULL);   /* T * I keeps it, -0 as +0 */
+            if (memcmp(&sc->prims[i].world_from_object[3], &want, sizeof want))
+                fail_msg("%s read as %.17g, strtod gives %.17g", item[i],
+                         sc->prims[i].world_from_object[3], want);
+        }
+        scene_free(sc);
+        free(buf);
+    }
+}
+
+/* scene_xform_mul gives the full 4x4 product bit for bit on affine
+ * matrices: entries from a pool of signed zeros, ones, exact and inexact
+ * values, products that overflow; where the full product is not finite,
+ * neither passes scene_xform_ok. */
+static void test_scene_parse_xform_mul_is_full_product(void **state)
+{
+    static const double pool[] = {0.0, -0.0, 1.0, -1.0, 0.5, -3.0, 1e-300, 1e200, -1e200};
+    uint64_t seed = test_seed("test_scene_parse_xform_mul_is_full_product");
+    int iter, i, j, k;
+    (void)state;
+    for (iter = 0; iter < 100000; iter++) {
+        double a[16], b[16], full[16], got[16];
+        int finite = 1;
+        scene_xform_identity(a);
+        scene_xform_identity(b);
+        for (i = 0; i < 12; i++) {
+            uint64_t r = test_rand(&seed);
+            a[i] = r % 3 ? pool[r % 9] : test_uniform(&seed, -10, 10);
+            r = test_rand(&seed);
+            b[i] = r % 3 ? pool[r % 7] : test_uniform(&seed, -10, 10);
+        }
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++) {
+                double s = 0;
+                for (k = 0; k < 4; k++)
+                    s += a[i * 4 + k] * b[k * 4 + j];
+                full[i * 4 + j] = s;
+                finite &= isfinite(s) != 0;
+            }
+        memcpy(got, a, sizeof got);
+        scene_xform_mul(got, got, b);                     /* aliasing a */
+        if (finite)
+            assert_memory_equal(got, full, sizeof got);
+        else
+            assert_false(scene_xform_ok(got) || scene_xform_ok(full));
+    }
+}
+
 static void test_scene_parse_transform_property(void **state)
 {
     uint64_t seed = test_seed("test_scene_parse_transform_property");
@@ -903,6 +1000,8 @@ int main(void)
         cmocka_unit_test(test_scene_parse_primitives),
         cmocka_unit_test(test_scene_parse_csg_fold),
         cmocka_unit_test(test_scene_parse_transform_order),
+        cmocka_unit_test(test_scene_parse_numbers_as_strtod),
+        cmocka_unit_test(test_scene_parse_xform_mul_is_full_product),
         cmocka_unit_test(test_scene_parse_transform_property),
         cmocka_unit_test(test_scene_parse_attr_inheritance),
         cmocka_unit_test(test_scene_parse_sequence_columns),

@@ -162,6 +162,51 @@ static void test_stress_thin_disc_refused_in_q16(void **state)
     scene_free(sc);
 }
 
+/* The aspect limit at its edge (q16 1e4, q32 1e8): a stretched cylinder or
+ * a turned, squashed sphere 1e-6 under the limit compiles, 1e-6 over it is
+ * refused with the ratio named; a sphere of aspect 0.9 of the limit, whose
+ * Frobenius bound (1.27 of it) does not clear it, compiles. (Two SCALE
+ * items each: a deck number stays within 1e6.) */
+static void test_stress_aspect_limit_edge(void **state)
+{
+    static const struct { const probe_ops *ops; double limit; const char *ratio; } mode[2] = {
+        {&q16_probe_ops, 1e4, "aspect ratio 1e+04 is beyond the q16 limit of 10000"},
+        {&q32_probe_ops, 1e8, "aspect ratio 1e+08 is beyond the q32 limit of 1e+08"}};
+    static const double over[5] = {1 - 1e-6, 1 + 1e-6, 1 - 1e-6, 1 + 1e-6, 0.9};
+    int m, k;
+    (void)state;
+    for (m = 0; m < 2; m++)
+        for (k = 0; k < 5; k++) {
+            char deck[512], buf[512];
+            double a = mode[m].limit * over[k];
+            scene *sc;
+            void *cs = NULL;
+            diag err;
+            int st;
+            if (k < 2)
+                snprintf(deck, sizeof deck, "EYE 3 -4 3\nLOOKAT 0 0 0\nLIGHT 6 -4 9\n"
+                         "CYLINDER C 1 1 SCALE 1 1 %.10g SCALE 1 1 %.10g\nOBJECT C\n", sqrt(a), sqrt(a));
+            else
+                snprintf(deck, sizeof deck, "EYE 3 -4 3\nLOOKAT 0 0 0\nLIGHT 6 -4 9\n"
+                         "SPHERE S 1 SCALE 1 1 %.10g SCALE 1 1 %.10g -\n ROTATE AXIS 1 2 3 37\nOBJECT S\n",
+                         1 / sqrt(a), 1 / sqrt(a));
+            sc = tt_parse(deck);
+            assert_non_null(sc);
+            diag_init(&err);
+            st = mode[m].ops->compile(sc, &cs, &err);
+            diag_format(&err, buf, sizeof buf);
+            printf("# %s aspect %.7g: %s\n", mode[m].ops->name, a, st ? buf : "compiled");
+            if (over[k] > 1) {
+                assert_int_equal(st, DIAG_INPUT);
+                assert_non_null(strstr(buf, mode[m].ratio));
+            } else {
+                assert_int_equal(st, 0);
+                mode[m].ops->free(cs);
+            }
+            scene_free(sc);
+        }
+}
+
 /* Every deck in scenes/ and the valid stress decks, in every mode: zero
  * fixed-point overflows (range cuts are counted, not overflows). */
 static void test_stress_no_overflow_on_valid_decks(void **state)
@@ -199,6 +244,7 @@ int main(void)
         cmocka_unit_test(test_stress_far_eye_and_narrow_lens),
         cmocka_unit_test(test_stress_deep_floor),
         cmocka_unit_test(test_stress_thin_disc_refused_in_q16),
+        cmocka_unit_test(test_stress_aspect_limit_edge),
         cmocka_unit_test(test_stress_no_overflow_on_valid_decks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

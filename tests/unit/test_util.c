@@ -1,13 +1,17 @@
-/* test_util — the allocation hook, first-error diagnostics and the box
- * hierarchy builder (src/util). */
+/* test_util — the allocation hook, first-error diagnostics, the box
+ * hierarchy builder, the radix sort and the 3x3 norms (src/util). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <cmocka.h>
 #include "support.h"
 #include "util/diag.h"
+#include "util/dmath.h"
 #include "util/mem.h"
 #include "util/bvh.h"
+#include "util/radix.h"
+#include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Zero-byte requests return distinct valid pointers; NULL means failure. */
@@ -147,6 +151,115 @@ static void test_util_bvh_covers_every_item_once(void **state)
     }
 }
 
+/* An element as prim_share sorts them: a key, then the (primitive, plane)
+ * it was stored in, ascending. */
+typedef struct util_rec { double key; int prim, k; } util_rec;
+
+/* The order prim_share's comparators give: key, then storage order. */
+static int util_rec_cmp(const void *a, const void *b)
+{
+    const util_rec *x = a, *y = b;
+    if (x->key != y->key)
+        return x->key < y->key ? -1 : 1;
+    if (x->prim != y->prim)
+        return x->prim - y->prim;
+    return x->k - y->k;
+}
+
+/* radix_sort gives exactly qsort's order under util_rec_cmp: keys drawn
+ * from a small pool (many ties; -0 beside +0, negatives, subnormals,
+ * infinities, neighbours one ulp apart) and from all over the doubles, for
+ * sizes 0 to 5000; with all keys equal nothing moves. */
+static void test_util_radix_sort_matches_comparator(void **state)
+{
+    static const double pool[] = {0.0, -0.0, 1.0, -1.0, 0.5, 1e-310, -1e-310, 3.0e300,
+                                  -HUGE_VAL, HUGE_VAL, 1.0000000000000002, 0.9999999999999999,
+                                  2.5, -2.5, 1e-9, 1024.0};
+    static const size_t sizes[] = {0, 1, 2, 3, 255, 2048, 5000};
+    size_t t, i;
+    unsigned seed = 12345;
+    (void)state;
+    for (t = 0; t < 2 * sizeof sizes / sizeof sizes[0]; t++) {
+        size_t n = sizes[t / 2];
+        util_rec *a = mem_alloc(n * sizeof *a), *b = mem_alloc(n * sizeof *b);
+        uint64_t *key = mem_alloc(n * sizeof *key);
+        assert_true(a && b && key);
+        for (i = 0; i < n; i++) {
+            seed = seed * 1103515245u + 12345u;
+            if (t % 2 == 0) {
+                a[i].key = pool[(seed >> 16) % (sizeof pool / sizeof pool[0])];
+            } else {
+                uint64_t u = (uint64_t)seed << 32 ^ (uint64_t)(seed * 2654435761u) << 7;
+                memcpy(&a[i].key, &u, sizeof u);
+                if (isnan(a[i].key))              /* NaN has no order */
+                    a[i].key = 7;
+            }
+            a[i].prim = (int)(i / 6);
+            a[i].k = (int)(i % 6);
+            key[i] = radix_key_d(a[i].key);
+        }
+        memcpy(b, a, n * sizeof *a);
+        qsort(a, n, sizeof *a, util_rec_cmp);
+        assert_int_equal(radix_sort(b, n, sizeof *b, key), 0);
+        assert_memory_equal(a, b, n * sizeof *a);
+        mem_free(a);
+        mem_free(b);
+        mem_free(key);
+    }
+    {
+        util_rec r[300];
+        uint64_t k[300];
+        for (i = 0; i < 300; i++) {
+            r[i].key = 2;
+            r[i].prim = (int)i;
+            r[i].k = 0;
+            k[i] = radix_key_d(r[i].key);
+        }
+        assert_int_equal(radix_sort(r, 300, sizeof r[0], k), 0);
+        for (i = 0; i < 300; i++)
+            assert_int_equal(r[i].prim, (int)i);
+        mem_fail_after(0);                        /* out of memory: untouched, -1 */
+        k[0] = radix_key_d(3);
+        assert_int_equal(radix_sort(r, 300, sizeof r[0], k), -1);
+        mem_fail_after(-1);
+        assert_int_equal(r[0].prim, 0);
+    }
+}
+
+/* The computed spectral norm never exceeds the Frobenius norm by more than
+ * 1e-14 relative (cscene's aspect check relies on 1e-9): random matrices of
+ * random scales, and the worst cases of the closed form (one singular value,
+ * two equal largest ones, all equal, nearly singular). */
+static void test_util_frobenius_bounds_spectral_norm(void **state)
+{
+    static const double fixed[][9] = {
+        {1, 0, 0, 0, 0, 0, 0, 0, 0},      {1, 2, 3, 2, 4, 6, 3, 6, 9},
+        {1, 0, 0, 0, 1, 0, 0, 0, 1e-9},   {1e-9, 0, 0, 0, 1e-9, 0, 0, 0, 1},
+        {2, 0, 0, 0, 2, 0, 0, 0, 2},      {0.6, 0.8, 0, -0.8, 0.6, 0, 0, 0, 1e-12},
+        {1, 1e-8, 0, 0, 1, 1e-8, 1e-8, 0, 1}, {0, 0, 0, 0, 0, 0, 0, 0, 0}};
+    unsigned seed = 99;
+    int t, i;
+    (void)state;
+    for (t = 0; t < 20000; t++) {
+        double m[9], f, s;
+        if (t < (int)(sizeof fixed / sizeof fixed[0])) {
+            memcpy(m, fixed[t], sizeof m);
+        } else {
+            for (i = 0; i < 9; i++) {
+                seed = seed * 1103515245u + 12345u;
+                m[i] = ((double)(seed >> 8) / 8388608.0 - 1) * pow(10, (int)(seed % 7) - 3);
+            }
+            if (t % 3 == 0)                   /* rank one, or two equal rows */
+                for (i = 3; i < 9; i++)
+                    m[i] = m[i % 3] * (t % 2 ? 1 : (i < 6 ? 0.5 : -2));
+        }
+        f = dmath_m3_frobenius(m);
+        s = dmath_m3_spectral_norm(m);
+        assert_true(s <= f * (1 + 1e-14));
+        assert_true(s >= f / sqrt(3) * (1 - 1e-9));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -154,6 +267,8 @@ int main(void)
         cmocka_unit_test(test_util_mem_fail_and_overflow),
         cmocka_unit_test(test_util_diag_first_error_and_forms),
         cmocka_unit_test(test_util_bvh_covers_every_item_once),
+        cmocka_unit_test(test_util_radix_sort_matches_comparator),
+        cmocka_unit_test(test_util_frobenius_bounds_spectral_norm),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,191 @@
+/* test_cscene — what the scene compiler measures in double from each
+ * primitive's corners, against all eight formed one by one, bit for bit:
+ * the box the normalisation is taken from (src/trace/cscene.c) and the
+ * bounding sphere's radius (src/geom/prim.c). Checked in the f64 build;
+ * both are double in every mode. */
+#define NUM_MODE f64
+#define NUM_MODE_f64
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "geom/prim.h"
+#include "trace/cscene.h"
+#include "util/dmath.h"
+#include "tracer_test.h"
+
+/* The box of the eight corners of every bounded primitive, each corner
+ * formed and compared in turn, and the normalisation taken from it. */
+static void cscene_test_norm(const scene *sc, geom_norm *nm)
+{
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    double half = 0;
+    size_t n;
+    int i, j, k;
+    for (n = 0; n < sc->nprims; n++) {
+        const scene_prim *sp = &sc->prims[n];
+        const double *m = sp->world_from_object, *d = sp->dim;
+        double c[3], l[3], h[3] = {1, 1, 1};
+        switch (sp->kind) {
+        case PRIM_SPHERE:   c[0] = c[1] = c[2] = d[0]; l[0] = l[1] = l[2] = -1; break;
+        case PRIM_CYLINDER: c[0] = c[1] = d[0]; c[2] = d[1]; l[0] = l[1] = -1; l[2] = 0; break;
+        case PRIM_CONE:     c[0] = c[1] = d[0] > d[1] ? d[0] : d[1]; c[2] = d[2];
+                            l[0] = l[1] = -1; l[2] = 0; break;
+        case PRIM_BLOCK:    c[0] = d[0]; c[1] = d[1]; c[2] = d[2]; l[0] = l[1] = l[2] = 0; break;
+        default: continue;
+        }
+        for (k = 0; k < 8; k++) {
+            double p[3], w;
+            for (i = 0; i < 3; i++)
+                p[i] = ((k >> i) & 1 ? h[i] : l[i]) * c[i];
+            for (i = 0; i < 3; i++) {
+                w = m[4 * i] * p[0] + m[4 * i + 1] * p[1] + m[4 * i + 2] * p[2] + m[4 * i + 3];
+                if (w < lo[i]) lo[i] = w;
+                if (w > hi[i]) hi[i] = w;
+            }
+        }
+    }
+    for (j = 0; j < 3; j++)
+        if ((hi[j] - lo[j]) / 2 > half)
+            half = (hi[j] - lo[j]) / 2;
+    if (!(half > 0) || !isfinite(GEOM_W / half)) {
+        double mx = 0;
+        for (j = 0; j < 3; j++)
+            if (fabs(lo[j]) > mx) mx = fabs(lo[j]);
+        half = mx > 0 ? mx * 1e-6 : 1.0;
+    }
+    nm->scale = GEOM_W / half;
+    for (j = 0; j < 3; j++)
+        nm->off[j] = -nm->scale * (lo[j] + hi[j]) / 2;
+}
+
+/* A random number for a deck: a few digits, sometimes exactly 0 or 1. */
+static double cscene_test_num(uint64_t *seed, double lo, double hi)
+{
+    uint64_t r = test_rand(seed) % 8;
+    if (r == 0)
+        return 0;
+    if (r == 1)
+        return 1;
+    return floor(test_uniform(seed, lo, hi) * 1000) / 1000;
+}
+
+/* A deck of one to three primitives of the bounded kinds, placed by quarter
+ * turns (exact zeros in the matrix), other turns, negative and uneven
+ * scales and translations that put faces on the deck's planes (boxes
+ * touching 0, where corners may differ in the sign of zero). */
+static scene *cscene_test_deck(uint64_t *seed, char *text, size_t size)
+{
+    static const char *const kind[4] = {"SPHERE P%d %.3f", "CYLINDER P%d %.3f %.3f",
+                                        "CONE P%d %.3f %.3f %.3f", "BLOCK P%d %.3f %.3f %.3f"};
+    size_t len = (size_t)snprintf(text, size, "EYE 30 -40 30\nLOOKAT 0 0 0\nLIGHT 6 -4 9\n");
+    int n = 1 + (int)(test_rand(seed) % 3), i, t;
+    for (i = 0; i < n; i++) {
+        int k = (int)(test_rand(seed) % 4);
+        double a = 0.125 + cscene_test_num(seed, 0, 3), b = 0.125 + cscene_test_num(seed, 0, 3);
+        double c = 0.125 + cscene_test_num(seed, 0, 3);
+        len += (size_t)snprintf(text + len, size - len, kind[k], i, a, k == 2 ? 0.0 : b, c);
+        for (t = (int)(test_rand(seed) % 4); t > 0; t--) {
+            uint64_t r = test_rand(seed) % 5;
+            if (r == 0)
+                len += (size_t)snprintf(text + len, size - len, " -\n ROTATE %c %d",
+                                        "XYZ"[test_rand(seed) % 3], 90 * (int)(test_rand(seed) % 4));
+            else if (r == 1)
+                len += (size_t)snprintf(text + len, size - len, " -\n ROTATE AXIS %.3f %.3f 1 %.3f",
+                                        cscene_test_num(seed, -2, 2), cscene_test_num(seed, -2, 2),
+                                        cscene_test_num(seed, -180, 180));
+            else if (r == 2)
+                len += (size_t)snprintf(text + len, size - len, " -\n SCALE %.3f %.3f %.3f",
+                                        test_rand(seed) % 2 ? -1.5 : 0.75, 0.5 + cscene_test_num(seed, 0, 2),
+                                        -0.25 - cscene_test_num(seed, 0, 2));
+            else
+                len += (size_t)snprintf(text + len, size - len, " -\n TRANSLATE %.3f %.3f %.3f",
+                                        cscene_test_num(seed, -5, 5), cscene_test_num(seed, -5, 5),
+                                        cscene_test_num(seed, -5, 5));
+        }
+        len += (size_t)snprintf(text + len, size - len, "\nOBJECT P%d\n", i);
+    }
+    assert_true(len < size);
+    return tt_parse(text);
+}
+
+/* 6,000 random decks: the compiled normalisation equals the one from all
+ * eight corners. */
+static void test_cscene_box_from_extreme_corners(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_box_from_extreme_corners");
+    int deck;
+    (void)state;
+    for (deck = 0; deck < 6000; deck++) {
+        char text[2048];
+        scene *sc = cscene_test_deck(&seed, text, sizeof text);
+        cscene *cs = NULL;
+        geom_norm want;
+        diag err;
+        assert_non_null(sc);
+        diag_init(&err);
+        assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
+        cscene_test_norm(sc, &want);
+        if (memcmp(&cs->nm, &want, sizeof want))
+            fail_msg("deck %d: scale %.17g off %.17g %.17g %.17g, all corners give %.17g %.17g "
+                     "%.17g %.17g\n%s", deck, cs->nm.scale, cs->nm.off[0], cs->nm.off[1],
+                     cs->nm.off[2], want.scale, want.off[0], want.off[1], want.off[2], text);
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+}
+
+/* A compiled cylinder's, cone's or block's bounding sphere has the radius
+ * of its farthest corner of all eight (prim_compile measures four), for the
+ * primitives of 6,000 random decks. */
+static void test_cscene_bounding_radius_from_all_corners(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_bounding_radius_from_all_corners");
+    int deck;
+    (void)state;
+    for (deck = 0; deck < 6000; deck++) {
+        char text[2048];
+        scene *sc = cscene_test_deck(&seed, text, sizeof text);
+        cscene *cs = NULL;
+        diag err;
+        size_t n;
+        assert_non_null(sc);
+        diag_init(&err);
+        assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
+        for (n = 0; n < sc->nprims; n++) {
+            const scene_prim *sp = &sc->prims[n];
+            double lo[3] = {-1, -1, 0}, cc[3] = {0, 0, 0.5}, r = 0;
+            prim p;
+            int i, k;
+            if (sp->kind == PRIM_SPHERE)
+                continue;
+            if (sp->kind == PRIM_BLOCK)
+                lo[0] = lo[1] = 0, cc[0] = cc[1] = 0.5;
+            assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, &p, "test", &err), 0);
+            for (k = 0; k < 8; k++) {
+                double corner[3], w[3], len;
+                for (i = 0; i < 3; i++)
+                    corner[i] = ((k >> i) & 1 ? 1 : lo[i]) - cc[i];
+                dmath_m3_mul_v(p.a_d, corner, w);
+                len = dmath_len3(w);
+                if (len > r)
+                    r = len;
+            }
+            assert_true(p.br == r * (1 + 1e-6) + 1.0 / 16384);
+        }
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_cscene_box_from_extreme_corners),
+        cmocka_unit_test(test_cscene_bounding_radius_from_all_corners),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
