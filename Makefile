@@ -12,7 +12,8 @@ BUILD   ?= build
 WARN     := -std=c99 -pedantic -Wall -Wextra -Werror
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I. -MMD -MP
 ALL_CFLAGS = $(WARN) $(CFLAGS) -fopenmp $(MODULE_CFLAGS)
-LIBS     = $(MODULE_LIBS) -lpng -lz -lm
+# -ldl: util/libload's dlopen (glibc before 2.34 keeps it in libdl)
+LIBS     = $(MODULE_LIBS) -lpng -lz -lm -ldl
 MODES    := q16 q32 f32 f64 hfp32 hfp64
 
 # Directories compiled once per numeric mode (symbols prefixed by mode).

@@ -3,12 +3,12 @@
  * framebuffer object. Desktop OpenGL, compatibility profile, through
  * eglBindAPI(EGL_OPENGL_API): the drawing code is dl_gl, shared with the
  * OSMesa backend. This is the GL path for Mesa 25.1 and later. libEGL is
- * opened with dlopen when this backend is chosen (dl_lib), so other commands
+ * opened with dlopen when this backend is chosen (util/libload), so other commands
  * never map Mesa; the EGL types, constants and entry points used are spelled
  * out here, so no EGL header is needed to build. */
 #include "display5080/dl_backend.h"
 #include "display5080/dl_gl.h"
-#include "display5080/dl_lib.h"
+#include "util/libload.h"
 #include "util/mem.h"
 #include <stdint.h>
 #include <string.h>
@@ -43,8 +43,8 @@ static int dl_backend_egl_load(diag *err)
     static const char *const syms[] = {"eglGetProcAddress", "eglQueryString", "eglGetError",
                                        "eglInitialize", "eglBindAPI", "eglCreateContext",
                                        "eglMakeCurrent", "eglDestroyContext"};
-    dl_lib_fn f[8];
-    if (dl_lib_load(names, syms, f, 8, "egl", err))
+    libload_fn f[8];
+    if (libload(names, syms, f, 8, "egl", "install it, or use --backend png", err))
         return DIAG_IO;
     dl_backend_egl_fn.GetProcAddress = (dl_gl_proc (*)(const char *))f[0];
     dl_backend_egl_fn.QueryString = (const char *(*)(void *, int32_t))f[1];

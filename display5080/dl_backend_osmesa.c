@@ -1,12 +1,12 @@
 /* dl_backend_osmesa — the display list drawn with OpenGL into an OSMesa
  * buffer (Mesa's off-screen renderer). libOSMesa is opened with dlopen when
- * this backend is chosen (dl_lib), so other commands never map Mesa; where
+ * this backend is chosen (util/libload), so other commands never map Mesa; where
  * it is missing (OSMesa left Mesa in 25.1) opening the backend says so.
  * The few OSMesa entry points and constants are spelled out here, so no
  * OSMesa header is needed to build. */
 #include "display5080/dl_backend.h"
 #include "display5080/dl_gl.h"
-#include "display5080/dl_lib.h"
+#include "util/libload.h"
 #include "util/mem.h"
 #include <string.h>
 
@@ -33,8 +33,8 @@ static int dl_backend_osmesa_load(diag *err)
     static const char *const names[] = {"libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so", NULL};
     static const char *const syms[] = {"OSMesaCreateContextExt", "OSMesaMakeCurrent",
                                        "OSMesaDestroyContext", "OSMesaGetProcAddress"};
-    dl_lib_fn f[4];
-    if (dl_lib_load(names, syms, f, 4, "osmesa", err))
+    libload_fn f[4];
+    if (libload(names, syms, f, 4, "osmesa", "install it, or use --backend png", err))
         return DIAG_IO;
     dl_backend_osmesa_fn.CreateContextExt = (void *(*)(unsigned, int, int, int, void *))f[0];
     dl_backend_osmesa_fn.MakeCurrent = (unsigned char (*)(void *, void *, unsigned, int, int))f[1];

@@ -1,4 +1,6 @@
-/* image_tiff — TIFF input through libtiff (see image_tiff.h). */
+/* image_tiff — TIFF input through libtiff (see image_tiff.h), which is
+ * opened when the first TIFF is read (util/libload): a process that reads
+ * none never maps it or the libraries it brings. */
 #include "image/image_tiff.h"
 
 #ifdef IMAGE_HAVE_TIFF
@@ -6,9 +8,60 @@
 #include <stdio.h>
 #include <string.h>
 #include <tiffio.h>
+#include "util/libload.h"
 #include "util/mem.h"
 
 int image_tiff_available(void) { return 1; }
+
+/* The libtiff entry points used here, with their prototypes from tiffio.h. */
+typedef struct image_tiff_lib {
+    TIFFOpenOptions *(*OpenOptionsAlloc)(void);
+    void (*OpenOptionsFree)(TIFFOpenOptions *);
+    void (*OpenOptionsSetErrorHandlerExtR)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *);
+    void (*OpenOptionsSetWarningHandlerExtR)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *);
+    TIFF *(*ClientOpenExt)(const char *, const char *, thandle_t, TIFFReadWriteProc, TIFFReadWriteProc,
+                           TIFFSeekProc, TIFFCloseProc, TIFFSizeProc, TIFFMapFileProc, TIFFUnmapFileProc,
+                           TIFFOpenOptions *);
+    int (*GetField)(TIFF *, uint32_t, ...);
+    int (*ReadRGBAImageOriented)(TIFF *, uint32_t, uint32_t, uint32_t *, int, int);
+    void (*Close)(TIFF *);
+} image_tiff_lib;
+
+/* Each read looks the entry points up again: after the first, dlopen only
+ * counts a reference and eight lookups cost microseconds, and no state is
+ * shared between threads. */
+static int image_tiff_load(image_tiff_lib *t, const char *name, diag *err)
+{
+    static const char *const names[] = {IMAGE_TIFF_SONAME, NULL};
+    static const char *const syms[] = {"TIFFOpenOptionsAlloc", "TIFFOpenOptionsFree",
+                                       "TIFFOpenOptionsSetErrorHandlerExtR",
+                                       "TIFFOpenOptionsSetWarningHandlerExtR", "TIFFClientOpenExt",
+                                       "TIFFGetField", "TIFFReadRGBAImageOriented", "TIFFClose"};
+    libload_fn f[8];
+    /* the table's types checked against tiffio.h: sizeof does not evaluate
+     * its operand, so nothing here links libtiff */
+    (void)sizeof(t->OpenOptionsAlloc = TIFFOpenOptionsAlloc);
+    (void)sizeof(t->OpenOptionsFree = TIFFOpenOptionsFree);
+    (void)sizeof(t->OpenOptionsSetErrorHandlerExtR = TIFFOpenOptionsSetErrorHandlerExtR);
+    (void)sizeof(t->OpenOptionsSetWarningHandlerExtR = TIFFOpenOptionsSetWarningHandlerExtR);
+    (void)sizeof(t->ClientOpenExt = TIFFClientOpenExt);
+    (void)sizeof(t->GetField = TIFFGetField);
+    (void)sizeof(t->ReadRGBAImageOriented = TIFFReadRGBAImageOriented);
+    (void)sizeof(t->Close = TIFFClose);
+    if (libload(names, syms, f, 8, name, "reading a TIFF needs it: apt-get install -y libtiff6", err))
+        return DIAG_IO;
+    t->OpenOptionsAlloc = (TIFFOpenOptions * (*)(void)) f[0];
+    t->OpenOptionsFree = (void (*)(TIFFOpenOptions *))f[1];
+    t->OpenOptionsSetErrorHandlerExtR = (void (*)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *))f[2];
+    t->OpenOptionsSetWarningHandlerExtR = (void (*)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *))f[3];
+    t->ClientOpenExt = (TIFF * (*)(const char *, const char *, thandle_t, TIFFReadWriteProc, TIFFReadWriteProc,
+                                   TIFFSeekProc, TIFFCloseProc, TIFFSizeProc, TIFFMapFileProc,
+                                   TIFFUnmapFileProc, TIFFOpenOptions *)) f[4];
+    t->GetField = (int (*)(TIFF *, uint32_t, ...))f[5];
+    t->ReadRGBAImageOriented = (int (*)(TIFF *, uint32_t, uint32_t, uint32_t *, int, int))f[6];
+    t->Close = (void (*)(TIFF *))f[7];
+    return 0;
+}
 
 /* A read-only TIFF stream over memory, and the first error libtiff reports. */
 typedef struct image_tiff_mem {
@@ -72,6 +125,7 @@ static int image_tiff_on_warning(TIFF *tif, void *user, const char *module, cons
 int image_read_tiff_memory(const char *name, const void *data, size_t len, int channels,
                            size_t max_pixels, image *out, diag *err)
 {
+    image_tiff_lib t;
     image_tiff_mem m;
     TIFFOpenOptions *opts;
     TIFF *tif;
@@ -79,37 +133,39 @@ int image_read_tiff_memory(const char *name, const void *data, size_t len, int c
     image img;
     size_t i, n;
     int st;
+    if (image_tiff_load(&t, name, err))
+        return DIAG_IO;
     memset(&m, 0, sizeof m);
     m.p = data;
     m.len = (toff_t)len;
-    if (!(opts = TIFFOpenOptionsAlloc()))
+    if (!(opts = t.OpenOptionsAlloc()))
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
-    TIFFOpenOptionsSetErrorHandlerExtR(opts, image_tiff_on_error, &m);
-    TIFFOpenOptionsSetWarningHandlerExtR(opts, image_tiff_on_warning, &m);
-    tif = TIFFClientOpenExt(name, "rm", (thandle_t)&m, image_tiff_read, image_tiff_write, image_tiff_seek,
+    t.OpenOptionsSetErrorHandlerExtR(opts, image_tiff_on_error, &m);
+    t.OpenOptionsSetWarningHandlerExtR(opts, image_tiff_on_warning, &m);
+    tif = t.ClientOpenExt(name, "rm", (thandle_t)&m, image_tiff_read, image_tiff_write, image_tiff_seek,
                             image_tiff_close, image_tiff_size, image_tiff_map, image_tiff_unmap, opts);
-    TIFFOpenOptionsFree(opts);
+    t.OpenOptionsFree(opts);
     if (!tif)
         return diag_at(err, DIAG_INPUT, name, 0, 0, "TIFF: %s", m.msg[0] ? m.msg : "cannot be read");
-    TIFFGetField(tif, TIFFTAG_IMAGEWIDTH, &w);
-    TIFFGetField(tif, TIFFTAG_IMAGELENGTH, &h);
+    t.GetField(tif, TIFFTAG_IMAGEWIDTH, &w);
+    t.GetField(tif, TIFFTAG_IMAGELENGTH, &h);
     if (w < 1 || h < 1 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE || (size_t)w * h > max_pixels) {
-        TIFFClose(tif);
+        t.Close(tif);
         return diag_at(err, DIAG_INPUT, name, 0, 0, "%ux%u pixels is %s; scale it down", (unsigned)w,
                        (unsigned)h, w && h ? "over what this command reads" : "no picture");
     }
     n = (size_t)w * h;
     if (!(rgba = mem_alloc(n * sizeof *rgba))) {
-        TIFFClose(tif);
+        t.Close(tif);
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory for %ux%u pixels", (unsigned)w, (unsigned)h);
     }
-    if (!TIFFReadRGBAImageOriented(tif, w, h, rgba, ORIENTATION_TOPLEFT, 0)) {
+    if (!t.ReadRGBAImageOriented(tif, w, h, rgba, ORIENTATION_TOPLEFT, 0)) {
         st = diag_at(err, DIAG_INPUT, name, 0, 0, "TIFF: %s", m.msg[0] ? m.msg : "cannot decode the picture");
         mem_free(rgba);
-        TIFFClose(tif);
+        t.Close(tif);
         return st;
     }
-    TIFFClose(tif);
+    t.Close(tif);
     if ((st = image_alloc(&img, (int)w, (int)h, channels, name, err)) != 0) {
         mem_free(rgba);
         return st;

@@ -20,7 +20,7 @@
 #include "display5080/dl_encode.h"
 #include "display5080/dl_image.h"
 #include "display5080/dl_render.h"
-#include "display5080/dl_lib.h"
+#include "util/libload.h"
 #include "util/mem.h"
 #include "support.h"
 
@@ -522,19 +522,20 @@ static void test_dl_backend_missing_library_is_reported(void **state)
     static const char *const libc[] = {"libc.so.6", NULL};
     static const char *const bad[] = {"maprt_no_such_symbol"};
     static const char *const good[] = {"strlen"};
-    dl_lib_fn f[1] = {NULL};
+    libload_fn f[1] = {NULL};
     diag err;
     (void)state;
     diag_init(&err);
-    assert_int_equal(dl_lib_load(none, good, f, 1, "osmesa", &err), DIAG_IO);
+    assert_int_equal(libload(none, good, f, 1, "osmesa", "install it", &err), DIAG_IO);
     assert_non_null(strstr(err.msg, "cannot load libmaprt-no-such-gl.so.0"));
+    assert_non_null(strstr(err.msg, "(install it)"));
     assert_null(f[0]);
     diag_init(&err);
-    assert_int_equal(dl_lib_load(libc, bad, f, 1, "egl", &err), DIAG_IO);
+    assert_int_equal(libload(libc, bad, f, 1, "egl", "install it", &err), DIAG_IO);
     assert_non_null(strstr(err.msg, "no symbol maprt_no_such_symbol"));
     assert_null(f[0]);
     diag_init(&err);
-    assert_int_equal(dl_lib_load(libc, good, f, 1, "egl", &err), 0);
+    assert_int_equal(libload(libc, good, f, 1, "egl", "install it", &err), 0);
     assert_non_null(f[0]);
 }
 

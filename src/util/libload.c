@@ -1,25 +1,25 @@
-/* dl_lib — run-time loading of the GL libraries (see dl_lib.h). */
-#include "display5080/dl_lib.h"
+/* libload — run-time loading of optional libraries (see libload.h). */
+#include "util/libload.h"
 #include <dlfcn.h>
 #include <string.h>
 
-#define DL_LIB_MAX_SYMS 32
+#define LIBLOAD_MAX_SYMS 32
 
-int dl_lib_load(const char *const *names, const char *const *syms, dl_lib_fn *fns, size_t n,
-                const char *who, diag *err)
+int libload(const char *const *names, const char *const *syms, libload_fn *fns, size_t n, const char *who,
+            const char *hint, diag *err)
 {
-    dl_lib_fn got[DL_LIB_MAX_SYMS];
+    libload_fn got[LIBLOAD_MAX_SYMS];
     void *h = NULL;
     const char *why = "no library name";
     size_t i;
-    if (n > DL_LIB_MAX_SYMS)
+    if (n > LIBLOAD_MAX_SYMS)
         return diag_at(err, DIAG_IO, who, 0, 0, "internal: %lu symbols asked for", (unsigned long)n);
     for (i = 0; names[i] && !h; i++)
         if (!(h = dlopen(names[i], RTLD_NOW | RTLD_LOCAL)))
             why = dlerror();
     if (!h)
-        return diag_at(err, DIAG_IO, who, 0, 0, "cannot load %s: %s (install it, or use --backend png)",
-                       names[0] ? names[0] : "?", why ? why : "unknown error");
+        return diag_at(err, DIAG_IO, who, 0, 0, "cannot load %s: %s (%s)", names[0] ? names[0] : "?",
+                       why ? why : "unknown error", hint);
     for (i = 0; i < n; i++) {
         void *p = dlsym(h, syms[i]);
         if (!p) {
