@@ -146,12 +146,14 @@ install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
 	  $(DESTDIR)$(DATADIR)/scenes $(DESTDIR)$(DATADIR)/docs
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/maprt
+	$(if $(MPI_BIN),install -m 755 $(MPI_BIN) $(DESTDIR)$(PREFIX)/bin/maprt-mpi)
 	install -m 644 docs/maprt.1 $(DESTDIR)$(PREFIX)/share/man/man1/maprt.1
 	install -m 644 $(SHARE_SCENES) $(DESTDIR)$(DATADIR)/scenes
 	install -m 644 docs/*.md README.md $(DESTDIR)$(DATADIR)/docs
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/bin/maprt $(DESTDIR)$(PREFIX)/share/man/man1/maprt.1
+	rm -f $(DESTDIR)$(PREFIX)/bin/maprt $(DESTDIR)$(PREFIX)/bin/maprt-mpi \
+	  $(DESTDIR)$(PREFIX)/share/man/man1/maprt.1
 	rm -rf $(DESTDIR)$(DATADIR)
 
 clean:

@@ -523,10 +523,33 @@ int cli_mpi_render(const scene *sc, const render_ops *ops, const render_opts *o,
     return 0;
 }
 #else
+/* A launcher's world size (Open MPI, PMI), or 1. */
+static long cli_mpi_launched_ranks(void)
+{
+    static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"};
+    size_t i;
+    for (i = 0; i < sizeof vars / sizeof vars[0]; i++) {
+        const char *v = getenv(vars[i]);
+        long n = v ? strtol(v, NULL, 10) : 0;
+        if (n > 1)
+            return n;
+    }
+    return 1;
+}
+
+/* Started as one of several ranks, this build would have each rank do the
+ * whole job and write the same files: it refuses and names the one that
+ * shares the work. */
 int cli_mpi_start(int *argc, char ***argv)
 {
+    long n = cli_mpi_launched_ranks();
     (void)argc;
     (void)argv;
+    if (n > 1) {
+        fprintf(stderr, "maprt: error: started as one of %ld MPI ranks, but this maprt is built without MPI; "
+                        "run maprt-mpi under mpirun (docs/cluster.md)\n", n);
+        return -1;
+    }
     return 0;
 }
 void cli_mpi_stop(void) {}

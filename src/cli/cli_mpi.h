@@ -1,12 +1,13 @@
-/* cli_mpi — maprt across the ranks of an MPI job (Open MPI), for builds made
- * with MPI (mk/mpi.mk: MAPRT_MPI). Under `mpirun -n N build/maprt render ...`
+/* cli_mpi — maprt across the ranks of an MPI job (Open MPI), in maprt-mpi
+ * (mk/mpi.mk: MAPRT_MPI). Under `mpirun -n N build/maprt-mpi render ...`
  * every rank reads the deck and compiles the scene; rank 0 hands out bands of
  * tile rows, renders bands itself, gathers the others' bands (as render_part
  * encodings, with the identity map when asked) and writes the outputs,
  * which are exactly the bytes a single process writes. `bench` hands out
  * its (scene, mode) cells through the same farm. Without MPI, or when the
  * program was not started by an MPI launcher, everything here is a
- * single-rank no-op. */
+ * single-rank no-op; maprt built without MPI refuses to start as one of
+ * several ranks. */
 #ifndef CLI_MPI_H
 #define CLI_MPI_H
 #include <stddef.h>
@@ -25,7 +26,8 @@ typedef struct cli_mpi_share {
 
 /* Starts MPI when the process was launched by mpirun (Open MPI or PMIx
  * environment); call first thing in main. 0, or -1 when MPI failed to start
- * (a message is printed). */
+ * or this build has no MPI and is one of several ranks (a message is
+ * printed). */
 int cli_mpi_start(int *argc, char ***argv);
 /* Ends MPI (if started); call before returning from main. */
 void cli_mpi_stop(void);

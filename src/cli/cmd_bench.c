@@ -73,7 +73,7 @@ static void cmd_bench_help(FILE *f)
         "  -h, --help        show this help\n"
         "\n"
         "Timings depend on machine load; the median of N runs damps the noise.\n"
-        "Under 'mpirun -n N' (a build with MPI) the (scene, mode) cells are handed\n"
+        "Under 'mpirun -n N maprt-mpi bench' the (scene, mode) cells are handed\n"
         "out to the ranks, each rank renders its cells' N runs with --threads\n"
         "threads, and rank 0 prints and writes the rows in the order above; the\n"
         "outputs are written all or none, and none when a cell or a rank fails.\n"

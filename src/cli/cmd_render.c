@@ -91,8 +91,8 @@ static void cmd_render_help(FILE *f)
         "On a terminal (or with --progress) stderr shows the share done, elapsed\n"
         "time, ETA and rays/s, the share weighted by each tile's cost as measured\n"
         "before the render so that it runs linearly in time, and one closing line:\n"
-        "time (wall and CPU), rays/s and the outputs written. Under 'mpirun -n N'\n"
-        "(a build with MPI) the ranks share the image and rank 0 writes the outputs\n"
+        "time (wall and CPU), rays/s and the outputs written. Under 'mpirun -n N\n"
+        "maprt-mpi render' the ranks share the image and rank 0 writes the outputs\n"
         "(--stats adds mpi.ranks and each rank's share).\n"
         "exit status: 0 ok, 1 bad scene, 2 usage, 3 I/O or internal failure\n",
         RENDER_MAX_RAYS_PER_SAMPLE, cli_files_help);
