@@ -189,6 +189,7 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
     size_t i;
     int bounded = 0;
     cs->orig_max = CSCENE_ORIG_MAX;
+    cs->orig_in2 = CSCENE_ORIG_MAX * CSCENE_ORIG_MAX * (1 - 0x1p-40);
     cs->nplanes = 0;
     cs->advance = 1;
     for (i = 0; i < cs->nprims; i++) {
@@ -238,7 +239,7 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
 int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray *r, double *t0)
 {
     const double margin = 1;
-    double t = HUGE_VAL, o[3];
+    double t = HUGE_VAL, o[3], n2;
     vec3 org;
     size_t k;
     int i;
@@ -271,7 +272,8 @@ int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray
     } else {
         for (i = 0; i < 3; i++)
             o[i] = cs->eye[i] + t * u[i];
-        if (dmath_len3(o) > cs->orig_max)
+        n2 = dmath_norm2_3(o);
+        if (n2 >= cs->orig_in2 && sqrt(n2) > cs->orig_max)
             return -1;
         org = vec3_from_d(o);
     }

@@ -41,8 +41,10 @@ typedef struct cscene {
     /* Primary rays start where something can first be hit (computed in
      * double, see cscene_primary): the sphere of radius bound_r about the
      * centre that holds every bounded primitive (0: none), and the planes
-     * of the half-spaces (n, d). orig_max bounds |origin| in this mode. */
-    double bound_r, orig_max;
+     * of the half-spaces (n, d). orig_max bounds |origin| in this mode;
+     * below orig_in2 (a hair under its square) |origin|^2 is certainly
+     * within it, without a square root. */
+    double bound_r, orig_max, orig_in2;
     double planes[CSCENE_MAX_PLANES][4];
     double plane_gap[CSCENE_MAX_PLANES];   /* d - n.eye per plane */
     size_t nplanes;
