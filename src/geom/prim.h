@@ -60,7 +60,7 @@ typedef struct prim {
     num smin;          /* 1 / frobenius norm of canonical_from_world */
     num inv_smin;      /* its reciprocal (the frobenius norm) */
     num cone_a, cone_k;/* cone radius at canonical z: a + k z */
-    unsigned fast;     /* exact shortcuts: bits 4k..4k+3 how pl[k]'s dot
+    unsigned fast;     /* exact shortcuts: bits 3k..3k+2 how pl[k]'s dot
                           products are formed (k < 6), bits 24..31 minv_s's
                           nonzero column per row (prim_cols) */
     /* double copies for surface evaluation */
