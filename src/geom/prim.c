@@ -634,13 +634,7 @@ static int prim_side(const prim *p, const prim_ray *r, num tc, span *s)
     return 0;
 }
 
-/* prim_intersect_tc past the exclusion test, kept out of line so that the
- * frequent early return (every primitive a spawned ray leaves) saves and
- * restores no registers. */
-#if defined(__GNUC__)
-__attribute__((noinline))
-#endif
-static int prim_intersect_spans(const prim *p, const prim_ray *r, num tc, span *out)
+int NS(prim_intersect_spans)(const prim *p, const prim_ray *r, num tc, span *out)
 {
     const num big = num_from_i(GEOM_TBIG);
     span s;
@@ -660,16 +654,6 @@ static int prim_intersect_spans(const prim *p, const prim_ray *r, num tc, span *
     }
     *out = s;
     return 1;
-}
-
-int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out)
-{
-    /* The ray starts on this convex primitive's surface: leaving it, the
-     * primitive is behind (nothing to solve); entering it, the span starts
-     * at the origin. */
-    if (r->excl_prim == p->id && !r->excl_enter)
-        return 0;
-    return prim_intersect_spans(p, r, tc, out);
 }
 
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out)

@@ -95,10 +95,21 @@ int NS(prim_share)(prim *prims, size_t n, diag *err);
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
  * and carry PRIM_FACE_NONE) or 0 when the ray misses. */
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
+/* prim_intersect_tc past its exclusion test. */
+int NS(prim_intersect_spans)(const prim *p, const prim_ray *r, num tc, span *out);
 /* The same after the caller has tested p's bounding sphere (bc, br) itself
  * and found the ray's closest parameter tc (0 for the unbounded half-space):
- * a CSG leaf's bound is then tested once. */
-int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out);
+ * a CSG leaf's bound is then tested once. Inline, so that the frequent
+ * early return (every primitive a spawned ray leaves) costs no call. */
+static inline int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out)
+{
+    /* The ray starts on this convex primitive's surface: leaving it, the
+     * primitive is behind (nothing to solve); entering it, the span starts
+     * at the origin (prim_intersect_spans). */
+    if (r->excl_prim == p->id && !r->excl_enter)
+        return 0;
+    return NS(prim_intersect_spans)(p, r, tc, out);
+}
 
 /* Surface data of face `face` of p at world point pt (a hit point). With
  * need_uv 0 only p and n are written ((u,v), dP/du and dP/dv are left as
