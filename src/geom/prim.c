@@ -479,15 +479,21 @@ static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
                 return 0;
             continue;
         }
+        /* entry against exit only when one of them moved: the pair as it
+         * stood has passed (or both were unset) */
         if (den < NUM_ZERO) {
             nm = num_neg(nm);
             den = num_neg(den);
-            if (ad == NUM_ZERO || num_frac_gt(nm, den, an, ad)) { an = nm; ad = den; af = pl->face; }
+            if (ad == NUM_ZERO || num_frac_gt(nm, den, an, ad)) {
+                an = nm; ad = den; af = pl->face;
+                if (bd != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
+                    return 0;
+            }
         } else if (bd == NUM_ZERO || num_frac_gt(bn, bd, nm, den)) {
             bn = nm; bd = den; bf = pl->face;
+            if (ad != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
+                return 0;
         }
-        if (ad != NUM_ZERO && bd != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
-            return 0;
     }
     if (ad != NUM_ZERO && (t = num_div_clamp(an, ad, big)) > s->a.t) { s->a.t = t; s->a.face = af; }
     if (bd != NUM_ZERO && (t = num_div_clamp(bn, bd, big)) < s->b.t) { s->b.t = t; s->b.face = bf; }
