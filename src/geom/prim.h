@@ -28,17 +28,25 @@ typedef struct ray {
     int excl_enter;
 } prim_ray;
 
+/* Sets every field of r from o and d and their binary64 copies od, dd
+ * (vec3_to_d of o and d, which a caller may have at hand). */
+static inline void prim_ray_set_d(prim_ray *r, vec3 o, vec3 d, const double *od, const double *dd,
+                                  int excl_prim, int excl_enter)
+{
+    r->o = o;
+    r->d = d;
+    bbox_ray_init(&r->b, od, dd);
+    r->excl_prim = excl_prim;
+    r->excl_enter = excl_enter;
+}
+
 /* Sets every field of r, the culling tests' binary64 copy included. */
 static inline void prim_ray_set(prim_ray *r, vec3 o, vec3 d, int excl_prim, int excl_enter)
 {
     double od[3], dd[3];
-    r->o = o;
-    r->d = d;
     vec3_to_d(o, od);
     vec3_to_d(d, dd);
-    bbox_ray_init(&r->b, od, dd);
-    r->excl_prim = excl_prim;
-    r->excl_enter = excl_enter;
+    prim_ray_set_d(r, o, d, od, dd, excl_prim, excl_enter);
 }
 
 typedef struct prim_plane {
