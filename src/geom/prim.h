@@ -28,17 +28,25 @@ typedef struct ray {
     int excl_enter;
 } prim_ray;
 
+/* Sets every field of r from o and d and their binary64 copies od, dd
+ * (vec3_to_d of o and d, which a caller may have at hand). */
+static inline void prim_ray_set_d(prim_ray *r, vec3 o, vec3 d, const double *od, const double *dd,
+                                  int excl_prim, int excl_enter)
+{
+    r->o = o;
+    r->d = d;
+    bbox_ray_init(&r->b, od, dd);
+    r->excl_prim = excl_prim;
+    r->excl_enter = excl_enter;
+}
+
 /* Sets every field of r, the culling tests' binary64 copy included. */
 static inline void prim_ray_set(prim_ray *r, vec3 o, vec3 d, int excl_prim, int excl_enter)
 {
     double od[3], dd[3];
-    r->o = o;
-    r->d = d;
     vec3_to_d(o, od);
     vec3_to_d(d, dd);
-    bbox_ray_init(&r->b, od, dd);
-    r->excl_prim = excl_prim;
-    r->excl_enter = excl_enter;
+    prim_ray_set_d(r, o, d, od, dd, excl_prim, excl_enter);
 }
 
 typedef struct prim_plane {
@@ -60,7 +68,7 @@ typedef struct prim {
     num smin;          /* 1 / frobenius norm of canonical_from_world */
     num inv_smin;      /* its reciprocal (the frobenius norm) */
     num cone_a, cone_k;/* cone radius at canonical z: a + k z */
-    unsigned fast;     /* exact shortcuts: bits 4k..4k+3 how pl[k]'s dot
+    unsigned fast;     /* exact shortcuts: bits 3k..3k+2 how pl[k]'s dot
                           products are formed (k < 6), bits 24..31 minv_s's
                           nonzero column per row (prim_cols) */
     /* double copies for surface evaluation */
@@ -95,10 +103,21 @@ int NS(prim_share)(prim *prims, size_t n, diag *err);
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
  * and carry PRIM_FACE_NONE) or 0 when the ray misses. */
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
+/* prim_intersect_tc past its exclusion test. */
+int NS(prim_intersect_spans)(const prim *p, const prim_ray *r, num tc, span *out);
 /* The same after the caller has tested p's bounding sphere (bc, br) itself
  * and found the ray's closest parameter tc (0 for the unbounded half-space):
- * a CSG leaf's bound is then tested once. */
-int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out);
+ * a CSG leaf's bound is then tested once. Inline, so that the frequent
+ * early return (every primitive a spawned ray leaves) costs no call. */
+static inline int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc, span *out)
+{
+    /* The ray starts on this convex primitive's surface: leaving it, the
+     * primitive is behind (nothing to solve); entering it, the span starts
+     * at the origin (prim_intersect_spans). */
+    if (r->excl_prim == p->id && !r->excl_enter)
+        return 0;
+    return NS(prim_intersect_spans)(p, r, tc, out);
+}
 
 /* Surface data of face `face` of p at world point pt (a hit point). With
  * need_uv 0 only p and n are written ((u,v), dP/du and dP/dv are left as

@@ -51,6 +51,27 @@ static inline vec3 vec3_cross(vec3 a, vec3 b)
 }
 static inline num vec3_maxabs(vec3 a) { return num_max(num_abs(a.x), num_max(num_abs(a.y), num_abs(a.z))); }
 
+#if defined(NUM_MODE_q16)
+/* vec3_unit's last steps for the scaled vector w (sum of squares ss, scale
+ * 2^e), with k a constant in each of its two calls so that every shift
+ * count is too. */
+VEC_HOT void vec3_unit_q16(const int64_t *w, int64_t ss, int e, int k, vec3 *unit, num *len, num *rlen)
+{
+    uint64_t xs = (uint64_t)ss >> (2 * k);
+    uint64_t y = fx_rsqrt_q30(xs);                      /* 2^k / sqrt(S), Q.30 */
+    if (unit)
+        *unit = vec3_make((num)fx_shr_round(w[0] * (int64_t)y, 30 + k),
+                          (num)fx_shr_round(w[1] * (int64_t)y, 30 + k),
+                          (num)fx_shr_round(w[2] * (int64_t)y, 30 + k));
+    if (len)      /* sqrt(S) 2^-e = xs y 2^(k - 46 - e) in Q16.16 */
+        *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - k + e));
+    if (rlen) {   /* 2^e / sqrt(S) = y 2^(e - k - 30) in Q16.16 */
+        int sh = 14 + k - e;
+        *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
+    }
+}
+#endif
+
 /* Unit vector along v, its length and the reciprocal of its length (each
  * output may be NULL). Returns 0, or -1 (outputs untouched) for v = 0.
  * No large component is ever squared and nothing is divided:
@@ -72,8 +93,7 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
 #if defined(NUM_MODE_q16)
     {
         int64_t w[3], ss;
-        uint64_t xs, y;
-        int e = 0, k;
+        int e = 0;
 #if defined(__GNUC__)
         e = __builtin_clz((unsigned)m) - 15;         /* top bit of m to bit 16 */
 #else
@@ -93,19 +113,10 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
         }
         /* exact: the largest |w_i| is in [2^16, 2^17], so ss in [2^32, 3 2^34] */
         ss = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        k = ss < ((int64_t)1 << 34) ? 1 : 2;            /* ss/4^k in [2^30, 2^32) */
-        xs = (uint64_t)ss >> (2 * k);
-        y = fx_rsqrt_q30(xs);                           /* 2^k / sqrt(S), Q.30 */
-        if (unit)
-            *unit = vec3_make((num)fx_shr_round(w[0] * (int64_t)y, 30 + k),
-                              (num)fx_shr_round(w[1] * (int64_t)y, 30 + k),
-                              (num)fx_shr_round(w[2] * (int64_t)y, 30 + k));
-        if (len)      /* sqrt(S) 2^-e = xs y 2^(k - 46 - e) in Q16.16 */
-            *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - k + e));
-        if (rlen) {   /* 2^e / sqrt(S) = y 2^(e - k - 30) in Q16.16 */
-            int sh = 14 + k - e;
-            *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
-        }
+        if (ss < ((int64_t)1 << 34))                    /* ss/4^k in [2^30, 2^32) */
+            vec3_unit_q16(w, ss, e, 1, unit, len, rlen);
+        else
+            vec3_unit_q16(w, ss, e, 2, unit, len, rlen);
         return 0;
     }
 #else

@@ -54,21 +54,21 @@ static inline fx16 fx16_sat(int64_t v)
     return (fx16)v;
 }
 
-/* Round to nearest, ties away from zero, without a call to llround: the
- * truncation and its remainder are exact for |r| < 2^31. */
+/* Round to nearest, ties away from zero, without a call to llround or a
+ * branch on the rounding: one test keeps NaN and out-of-range values out;
+ * then truncation and its remainder f are exact for |r| < 2^31, and so is
+ * 2f, whose truncation is +-1 exactly when |f| >= 1/2. */
 static inline fx16 fx16_from_double(double x)
 {
-    double r, f;
+    double r = x * 65536.0, f;
     int64_t i;
-    if (x != x) { fx_overflows++; return 0; }
-    r = x * 65536.0;
-    if (r >= 2147483647.5) { fx_overflows++; return FX16_MAX; }
-    if (r <= -2147483648.5) { fx_overflows++; return FX16_MIN; }
+    if (!(r < 2147483647.5 && r > -2147483648.5)) {
+        fx_overflows++;
+        return x != x ? 0 : r > 0 ? FX16_MAX : FX16_MIN;
+    }
     i = (int64_t)r;
     f = r - (double)i;
-    if (f >= 0.5) i++;
-    else if (f <= -0.5) i--;
-    return (fx16)i;
+    return (fx16)(i + (int64_t)(f + f));
 }
 
 static inline double fx16_to_double(fx16 a) { return (double)a * (1.0 / 65536.0); }

@@ -65,9 +65,10 @@ static void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_face *f,
  * and knows whether it goes into the primitive. */
 static inline void trace_spawn(prim_ray *r, vec3 p, vec3 d, int pi, const double *n_prim)
 {
-    double dd[3];
+    double pd[3], dd[3];
+    vec3_to_d(p, pd);
     vec3_to_d(d, dd);
-    prim_ray_set(r, p, d, pi, dmath_dot3(n_prim, dd) < 0);
+    prim_ray_set_d(r, p, d, pd, dd, pi, dmath_dot3(n_prim, dd) < 0);
 }
 
 /* Step 4: the fraction of the light at distance dist along unit l (ld in
@@ -87,7 +88,9 @@ static double trace_light_through(const cscene *cs, trace_ctx *tc, vec3 p, vec3 
         geom_surface sf;
         const scene_attr *at;
         const cscene_face *fc;
-        prim_ray_set(&s, p, l, pi, enter);
+        double pd[3];
+        vec3_to_d(p, pd);
+        prim_ray_set_d(&s, p, l, pd, ld, pi, enter);
         tc->rs.rays_shadow++;
         if (!NS(csg_intersect)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h))
             return pass;
@@ -107,15 +110,16 @@ static double trace_light_through(const cscene *cs, trace_ctx *tc, vec3 p, vec3 
 
 /* Step 4: the fraction of the light that arrives, as trace_light_through;
  * where no attribute transmits, any surface on the way will do (the caller's
- * light test has the dot product that gives `enter`). */
-static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, vec3 l, const double *ld,
-                                 num dist, int pi, int enter)
+ * light test has the dot product that gives `enter`). pd is p in double,
+ * formed once for all the lights. */
+static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, const double *pd, vec3 l,
+                                 const double *ld, num dist, int pi, int enter)
 {
     prim_ray s;
     csg_hit h;
     if (cs->transparent)
         return trace_light_through(cs, tc, p, l, ld, dist, pi, enter);
-    prim_ray_set(&s, p, l, pi, enter);
+    prim_ray_set_d(&s, p, l, pd, ld, pi, enter);
     tc->rs.rays_shadow++;
     return NS(csg_occluded)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h) ? 0 : 1;
 }
@@ -183,7 +187,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     geom_surface sf;
     csg_hit h;
     vec3 p;
-    double d[3], ns[3], dn, c[3], tex[3], pass[SCENE_MAX_LIGHTS];
+    double d[3], pd[3], ns[3], dn, c[3], tex[3], pass[SCENE_MAX_LIGHTS];
     const double *color;
     double ldir[SCENE_MAX_LIGHTS][3];        /* unit direction to each light */
     size_t li;
@@ -224,6 +228,8 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         tc->rs.shadow_skipped += cs->nlights;
         for (li = 0; li < cs->nlights; li++)
             pass[li] = 0;
+    } else if (!far) {
+        vec3_to_d(p, pd);
     }
     for (li = 0; lit && li < cs->nlights; li++) {
         vec3 l;
@@ -236,7 +242,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         ln = dmath_dot3(sf.n, ld);
         if (ln * dn >= 0)
             continue;
-        pass[li] = far ? 1 : trace_light_passes(cs, tc, p, l, ld, dist, h.prim, ln < 0);
+        pass[li] = far ? 1 : trace_light_passes(cs, tc, p, pd, l, ld, dist, h.prim, ln < 0);
     }
 
     /* Step 5 (1): the bump attribute perturbs the normal; the shading normal

@@ -269,6 +269,86 @@ static void test_fx16_div_clamp_matches_saturating_form(void **state)
                                      ref_div_clamp(edge[i], edge[j], edge[k]));
 }
 
+/* fx16_from_double(x) = round(x 2^16), ties away from zero, saturated,
+ * NaN 0; one overflow counted for each saturation or NaN. The reference
+ * rounds with floorl/ceill and an exact remainder test in long double. */
+static fx16 ref_from_double(double x, unsigned long *count)
+{
+    long double s = (long double)x * 65536.0L, q;
+    *count = 0;
+    if (x != x) {
+        *count = 1;
+        return 0;
+    }
+    if (s >= 0) {
+        q = floorl(s);
+        if (s - q >= 0.5L) q += 1;
+    } else {
+        q = ceill(s);
+        if (s - q <= -0.5L) q -= 1;
+    }
+    if (q > 2147483647.0L || q < -2147483648.0L) {
+        *count = 1;
+        return q > 0 ? FX16_MAX : FX16_MIN;
+    }
+    return (fx16)q;
+}
+
+static void check_from_double(double x)
+{
+    unsigned long before = fx_overflows, want_count;
+    fx16 want = ref_from_double(x, &want_count), got = fx16_from_double(x);
+    if (got != want || fx_overflows - before != want_count)
+        fail_msg("fx16_from_double(%.17g) = %ld, want %ld (overflows %lu, want %lu)", x,
+                 (long)got, (long)want, fx_overflows - before, want_count);
+}
+
+/* Random magnitudes from 2^-1074 to 2^1023, exact ties n + 1/2 ulps of
+ * 2^-16 and their neighbours either side, the ends of the range, zeros,
+ * infinities and NaN. */
+static void test_fx16_from_double_rounds_like_reference(void **state)
+{
+    static const double edge[] = {0.0, -0.0, 1.0, -1.0, 0.5 / 65536, -0.5 / 65536, 1.5 / 65536,
+                                  -1.5 / 65536, 4.9406564584124654e-324, -4.9406564584124654e-324,
+                                  2.2250738585072014e-308, 32767.999992370605, -32768.000007629395,
+                                  32767.999984741211, -32768.0, 32768.0, -32768.000015258789,
+                                  1e300, -1e300, 1.7976931348623157e308, -1.7976931348623157e308};
+    uint64_t s = test_seed("test_fx16_from_double_rounds_like_reference");
+    int i, k;
+    (void)state;
+    for (i = 0; i < (int)(sizeof edge / sizeof edge[0]); i++)
+        for (k = -2; k <= 2; k++) {
+            double x = edge[i];
+            int j;
+            for (j = 0; j < (k < 0 ? -k : k); j++)
+                x = nextafter(x, k < 0 ? -HUGE_VAL : HUGE_VAL);
+            check_from_double(x);
+        }
+    check_from_double(HUGE_VAL);
+    check_from_double(-HUGE_VAL);
+    check_from_double(NAN);
+    check_from_double(-NAN);
+    for (i = 0; i < 2000000; i++) {
+        uint64_t u = test_rand(&s);
+        double x;
+        if (i % 2) {              /* (n + 1/2) / 2^16, n over int32 and a little beyond */
+            int64_t n = (int64_t)(int32_t)test_rand(&s) >> (test_rand(&s) % 32);
+            if (i % 16 == 1)
+                n += (int64_t)(n < 0 ? -1 : 1) << 31;
+            x = ((double)n + 0.5) / 65536;
+            k = (int)(test_rand(&s) % 3);
+            if (k)
+                x = nextafter(x, k == 1 ? -HUGE_VAL : HUGE_VAL);
+        } else {                  /* any sign, mantissa and exponent */
+            x = ldexp((double)(u >> 11) / 9007199254740992.0 + 0.5,
+                      i % 8 ? (int)(test_rand(&s) % 64) - 40 : (int)(test_rand(&s) % 2100) - 1075);
+            if (u & 1)
+                x = -x;
+        }
+        check_from_double(x);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -281,6 +361,7 @@ int main(void)
         cmocka_unit_test(test_fx32_native_matches_portable),
         cmocka_unit_test(test_fx16_rsqrt_rounds_to_nearest),
         cmocka_unit_test(test_fx16_div_clamp_matches_saturating_form),
+        cmocka_unit_test(test_fx16_from_double_rounds_like_reference),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
