@@ -71,8 +71,7 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         b->bounded = p->bounded;
         vec3_to_d(p->bc, b->c);
         b->r = num_to_d(p->br);
-        memcpy(b->lo, p->box_d, sizeof b->lo);
-        memcpy(b->hi, p->box_d + 3, sizeof b->hi);
+        NS(prim_box)(p, b->lo, b->hi);
         b->nspans = 1;
         b->peak = 1;
     } else {

@@ -52,7 +52,6 @@ typedef struct prim {
     int bounded;       /* 0 for the half-space */
     vec3 bc;           /* bounding sphere centre and radius (world) */
     num br;
-    double box_d[6];   /* bounding box (world): lo[3], hi[3] */
     int nplanes;
     prim_plane pl[6];
     vec3 org;          /* canonical origin in the world */
@@ -64,8 +63,9 @@ typedef struct prim {
                           products are formed (k < 6), bits 24..31 minv_s's
                           nonzero column per row (prim_cols) */
     /* double copies for surface evaluation */
-    double a_d[9], ainv_d[9], org_d[3], pn_d[6][3];
-    double pl_d[6][4]; /* planes in double (n, d), in pl's order */
+    double a_d[9], ainv_d[9], org_d[3];
+    double pl_d[6][4]; /* planes in double (n, d), in pl's order; n is also
+                          the face's shading normal */
 } prim;
 
 /* Two planes, or two placements of one canonical solid, that agree within
@@ -89,6 +89,9 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
  * Intersected with one ray they then give bit-identical parameters. 0, or
  * DIAG_IO when memory runs out. */
 int NS(prim_share)(prim *prims, size_t n, diag *err);
+
+/* The bounding box of p in the world (lo, hi); zeros for the half-space. */
+void NS(prim_box)(const prim *p, double lo[3], double hi[3]);
 
 /* Intersects r with p; the bounding test rejects p when it lies wholly
  * outside the parameters [tmin, tmax] (the span itself is not clipped).
