@@ -139,24 +139,54 @@ static int cscene_maps(const scene *sc, cscene *cs, diag *err)
     return 0;
 }
 
+/* One row of the face table: what faces of primitive kind of attribute
+ * attr look up under the face bindings fmap (NULL: none). */
+static void cscene_face_row(const scene *sc, const cscene *cs, int attr, const int *fmap,
+                            cscene_face *row)
+{
+    int f;
+    for (f = -1; f < SCENE_MAX_FACES; f++) {
+        cscene_face *e = &row[f + 1];
+        int m = fmap && f >= 0 ? fmap[f] : -1;
+        e->plain = &sc->attrs[attr];
+        e->map = m >= 0 ? cs->maps[m] : NULL;
+        e->def = m >= 0 ? &sc->maps[m]->def : NULL;
+        e->need_uv = m >= 0 || e->plain->texture >= 0 || e->plain->bump >= 0;
+    }
+}
+
+/* 1 when primitive sp has a face bound by FACE. */
+static int cscene_face_bound(const scene_prim *sp)
+{
+    int f;
+    for (f = 0; f < SCENE_MAX_FACES; f++)
+        if (sp->face_map[f] >= 0)
+            return 1;
+    return 0;
+}
+
 /* The face table (cscene_face_at), after the maps are compiled. */
 static int cscene_faces(const scene *sc, cscene *cs, diag *err)
 {
-    size_t i;
-    int f;
-    cs->faces = mem_alloc(sc->nprims * (SCENE_MAX_FACES + 1) * sizeof *cs->faces);
-    if (!cs->faces)
-        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    size_t i, nrows = sc->nattrs;
     for (i = 0; i < sc->nprims; i++)
-        for (f = -1; f < SCENE_MAX_FACES; f++) {
-            cscene_face *e = &cs->faces[i * (SCENE_MAX_FACES + 1) + (size_t)(f + 1)];
-            int m = f >= 0 ? sc->prims[i].face_map[f] : -1;
-            e->plain = &sc->attrs[sc->prims[i].attr];
-            e->map = m >= 0 ? cs->maps[m] : NULL;
-            e->def = m >= 0 ? &sc->maps[m]->def : NULL;
-            e->need_uv = m >= 0 || e->plain->texture >= 0 || e->plain->bump >= 0;
-            e->flat_n = NS(prim_face_normal)(&cs->prims[i], f);
+        nrows += (size_t)cscene_face_bound(&sc->prims[i]);
+    cs->face_row = mem_calloc(sc->nprims ? sc->nprims : 1, sizeof *cs->face_row);
+    cs->faces = mem_calloc(nrows ? nrows : 1, (SCENE_MAX_FACES + 1) * sizeof *cs->faces);
+    if (!cs->face_row || !cs->faces)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    for (i = 0; i < sc->nattrs; i++)
+        cscene_face_row(sc, cs, (int)i, NULL, &cs->faces[i * (SCENE_MAX_FACES + 1)]);
+    nrows = sc->nattrs;
+    for (i = 0; i < sc->nprims; i++) {
+        const scene_prim *sp = &sc->prims[i];
+        if (!cscene_face_bound(sp)) {
+            cs->face_row[i] = (size_t)sp->attr;
+            continue;
         }
+        cs->face_row[i] = nrows;
+        cscene_face_row(sc, cs, sp->attr, sp->face_map, &cs->faces[nrows++ * (SCENE_MAX_FACES + 1)]);
+    }
     return 0;
 }
 
@@ -407,6 +437,7 @@ void NS(cscene_free)(cscene *cs)
         NS(pds_free)(cs->maps[i]);
     mem_free(cs->maps);
     mem_free(cs->faces);
+    mem_free(cs->face_row);
     NS(csg_free)(&cs->tree);
     mem_free(cs->prims);
     mem_free(cs->lights);
