@@ -86,8 +86,8 @@ static const prim_cplane prim_cap_planes[2] = {
     {{0, 0, 1}, {0, 0, 1}, PRIM_FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, PRIM_FACE_CYL_BOTTOM}};
 static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, PRIM_FACE_HALFSPACE_PLANE}};
 
-int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
-                     const char *file, diag *err)
+int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
+                     double (*pl_d)[4], prim *out, const char *file, diag *err)
 {
     prim p;
     double c[3] = {1, 1, 1}, cc[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
@@ -104,6 +104,8 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         if (!isfinite(d[i]))
             return prim_fail(err, file, sp, "dimension is not finite");
     p.kind = sp->kind;
+    p.pl = pl;
+    p.pl_d = pl_d;
     p.id = id;
     p.attr = sp->attr;
     p.bounded = 1;

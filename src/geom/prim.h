@@ -53,7 +53,8 @@ typedef struct prim {
     vec3 bc;           /* bounding sphere centre and radius (world) */
     num br;
     int nplanes;
-    prim_plane pl[6];
+    prim_plane *pl;    /* nplanes planes, in storage the caller provides
+                          (prim_compile): a sphere needs none, a block six */
     vec3 org;          /* canonical origin in the world */
     mat3 minv_s;       /* canonical_from_world (linear part) times smin */
     num smin;          /* 1 / frobenius norm of canonical_from_world */
@@ -64,8 +65,8 @@ typedef struct prim {
                           nonzero column per row (prim_cols) */
     /* double copies for surface evaluation */
     double a_d[9], ainv_d[9], org_d[3];
-    double pl_d[6][4]; /* planes in double (n, d), in pl's order; n is also
-                          the face's shading normal */
+    double (*pl_d)[4]; /* planes in double (n, d), in pl's order (storage
+                          as pl); n is also the face's shading normal */
 } prim;
 
 /* Two planes, or two placements of one canonical solid, that agree within
@@ -74,11 +75,21 @@ typedef struct prim {
  * below any resolution a mode could use to tell them apart. */
 #define PRIM_SAME_TOL (1.0 / 1073741824.0)
 
-/* Compiles scene primitive sp (index id) under the normalisation nm.
- * 0 on success; DIAG_INPUT (located at sp->loc in file) for bad dimensions,
- * non-finite or singular transforms, or a primitive outside the range. */
-int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
-                     const char *file, diag *err);
+/* The number of planar faces of a primitive of kind `kind` (0 for an
+ * unknown kind): the room prim_compile needs in pl and pl_d. */
+static inline int prim_nplanes(int kind)
+{
+    return kind == PRIM_BLOCK ? 6 : kind == PRIM_CYLINDER || kind == PRIM_CONE ? 2
+           : kind == PRIM_HALFSPACE ? 1 : 0;
+}
+
+/* Compiles scene primitive sp (index id) under the normalisation nm, its
+ * planes into pl and pl_d (prim_nplanes(sp->kind) entries each, kept by
+ * out). 0 on success; DIAG_INPUT (located at sp->loc in file) for bad
+ * dimensions, non-finite or singular transforms, or a primitive outside
+ * the range. */
+int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
+                     double (*pl_d)[4], prim *out, const char *file, diag *err);
 
 /* Gives coincident geometry of the compiled primitives one representation
  * (docs/numerics.md, "Coincident surfaces"): every plane equal within

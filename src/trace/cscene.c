@@ -316,7 +316,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     cscene *cs;
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
-    size_t i;
+    size_t i, npl = 0;
     int status = DIAG_IO;
 
     if (!cscene_finite3(v->eye) || !cscene_finite3(v->look) || !cscene_finite3(v->up)
@@ -356,23 +356,29 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     cs->max_depth = sc->max_depth < 0 ? 0 : sc->max_depth > CSCENE_MAX_DEPTH ? CSCENE_MAX_DEPTH
                                                                           : sc->max_depth;
     status = DIAG_IO;
+    for (i = 0; i < sc->nprims; i++)
+        npl += (size_t)prim_nplanes(sc->prims[i].kind);
     if (sc->nprims) {
         cs->prims = mem_calloc(sc->nprims, sizeof *cs->prims);
-        if (!cs->prims) {
+        cs->prim_pl = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl);
+        cs->prim_pl_d = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
+        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
         }
     }
     cs->nprims = sc->nprims;
-    for (i = 0; i < sc->nprims; i++) {
+    for (i = 0, npl = 0; i < sc->nprims; i++) {
         const scene_prim *sp = &sc->prims[i];
         if (sp->attr < 0 || (size_t)sp->attr >= sc->nattrs) {
             status = diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                              "primitive '%s': attribute index out of range", sp->name);
             goto fail;
         }
-        if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, &cs->prims[i], cscene_file(sc), err)))
+        if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl,
+                                       &cs->prims[i], cscene_file(sc), err)))
             goto fail;
+        npl += (size_t)prim_nplanes(sp->kind);
     }
     if ((status = NS(prim_share)(cs->prims, cs->nprims, err)) || (status = cscene_ranges(sc, cs, err)))
         goto fail;
@@ -440,6 +446,8 @@ void NS(cscene_free)(cscene *cs)
     mem_free(cs->face_row);
     NS(csg_free)(&cs->tree);
     mem_free(cs->prims);
+    mem_free(cs->prim_pl);
+    mem_free(cs->prim_pl_d);
     mem_free(cs->lights);
     mem_free(cs);
 }

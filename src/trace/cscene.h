@@ -32,6 +32,10 @@ typedef struct cscene {
     geom_norm nm;
     prim *prims;
     size_t nprims;
+    /* the primitives' planes (prim.pl, prim.pl_d) in primitive order, as
+     * many as each has: a sphere none, a block six */
+    prim_plane *prim_pl;
+    double (*prim_pl_d)[4];
     csg tree;
     cscene_light *lights;
     size_t nlights;
