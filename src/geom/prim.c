@@ -75,7 +75,8 @@ static int prim_fail(diag *err, const char *file, const scene_prim *sp, const ch
                    "primitive '%s': %s", sp->name, what);
 }
 
-/* Canonical planes per kind: outward normal, a point, face id. */
+/* Canonical planes per kind: outward normal, a point, face id; in face
+ * order, as prim_face_plane assumes. */
 typedef struct prim_cplane { double n[3], p[3]; int face; } prim_cplane;
 
 static const prim_cplane prim_block_planes[6] = {
@@ -685,12 +686,8 @@ const double *NS(prim_face_normal)(const prim *p, int face)
     if (p->kind == PRIM_SPHERE || (p->kind != PRIM_BLOCK && p->kind != PRIM_HALFSPACE
                                    && face == PRIM_FACE_CYL_SIDE))
         return NULL;
-    if (face < 0 || face >= 6)
-        face = 0;
-    for (k = 0; k < p->nplanes; k++)
-        if (p->pl[k].face == face)
-            return p->pl_d[k];
-    return none;
+    k = prim_face_plane(p->kind, face >= 0 && face < 6 ? face : 0);
+    return k >= 0 ? p->pl_d[k] : none;
 }
 
 void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)

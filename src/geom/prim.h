@@ -83,6 +83,15 @@ static inline int prim_nplanes(int kind)
            : kind == PRIM_HALFSPACE ? 1 : 0;
 }
 
+/* The index in pl of the plane of face `face` of a primitive of kind
+ * `kind`, or -1 for a curved or unknown face: the planes are stored in
+ * face order, after the curved side of a cylinder or cone. */
+static inline int prim_face_plane(int kind, int face)
+{
+    int k = face - (kind == PRIM_CYLINDER || kind == PRIM_CONE);
+    return face >= 0 && k >= 0 && k < prim_nplanes(kind) ? k : -1;
+}
+
 /* Compiles scene primitive sp (index id) under the normalisation nm, its
  * planes into pl and pl_d (prim_nplanes(sp->kind) entries each, kept by
  * out). 0 on success; DIAG_INPUT (located at sp->loc in file) for bad

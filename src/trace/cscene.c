@@ -139,9 +139,9 @@ static int cscene_maps(const scene *sc, cscene *cs, diag *err)
     return 0;
 }
 
-/* One row of the face table: what faces of primitive kind of attribute
- * attr look up under the face bindings fmap (NULL: none). */
-static void cscene_face_row(const scene *sc, const cscene *cs, int attr, const int *fmap,
+/* One row of the face table: what the faces of a primitive of kind `kind`
+ * and attribute attr look up under the face bindings fmap (NULL: none). */
+static void cscene_face_row(const scene *sc, const cscene *cs, int kind, int attr, const int *fmap,
                             cscene_face *row)
 {
     int f;
@@ -152,6 +152,7 @@ static void cscene_face_row(const scene *sc, const cscene *cs, int attr, const i
         e->map = m >= 0 ? cs->maps[m] : NULL;
         e->def = m >= 0 ? &sc->maps[m]->def : NULL;
         e->need_uv = m >= 0 || e->plain->texture >= 0 || e->plain->bump >= 0;
+        e->flat_k = prim_face_plane(kind, f);
     }
 }
 
@@ -165,27 +166,30 @@ static int cscene_face_bound(const scene_prim *sp)
     return 0;
 }
 
-/* The face table (cscene_face_at), after the maps are compiled. */
+/* The face table (cscene_face_at), after the maps and primitives are
+ * compiled (every kind is known). */
 static int cscene_faces(const scene *sc, cscene *cs, diag *err)
 {
-    size_t i, nrows = sc->nattrs;
+    const size_t row = SCENE_MAX_FACES + 1, nshared = sc->nattrs * PRIM_KIND_COUNT;
+    size_t i, nrows = nshared;
     for (i = 0; i < sc->nprims; i++)
         nrows += (size_t)cscene_face_bound(&sc->prims[i]);
     cs->face_row = mem_calloc(sc->nprims ? sc->nprims : 1, sizeof *cs->face_row);
-    cs->faces = mem_calloc(nrows ? nrows : 1, (SCENE_MAX_FACES + 1) * sizeof *cs->faces);
+    cs->faces = mem_calloc(nrows ? nrows : 1, row * sizeof *cs->faces);
     if (!cs->face_row || !cs->faces)
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
-    for (i = 0; i < sc->nattrs; i++)
-        cscene_face_row(sc, cs, (int)i, NULL, &cs->faces[i * (SCENE_MAX_FACES + 1)]);
-    nrows = sc->nattrs;
+    for (i = 0; i < nshared; i++)
+        cscene_face_row(sc, cs, (int)(i % PRIM_KIND_COUNT), (int)(i / PRIM_KIND_COUNT), NULL,
+                        &cs->faces[i * row]);
+    nrows = nshared;
     for (i = 0; i < sc->nprims; i++) {
         const scene_prim *sp = &sc->prims[i];
         if (!cscene_face_bound(sp)) {
-            cs->face_row[i] = (size_t)sp->attr;
+            cs->face_row[i] = (size_t)sp->attr * PRIM_KIND_COUNT + (size_t)sp->kind;
             continue;
         }
         cs->face_row[i] = nrows;
-        cscene_face_row(sc, cs, sp->attr, sp->face_map, &cs->faces[nrows++ * (SCENE_MAX_FACES + 1)]);
+        cscene_face_row(sc, cs, sp->kind, sp->attr, sp->face_map, &cs->faces[nrows++ * row]);
     }
     return 0;
 }

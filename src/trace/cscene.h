@@ -25,6 +25,9 @@ typedef struct cscene_face {
     int need_uv;              /* the hit needs (u,v) and its tangents: the
                                  face has a PDS, or the plain attribute a
                                  texture or a bump */
+    int flat_k;               /* the face's plane in prim.pl_d, whose normal
+                                 serves when (u,v) is not needed
+                                 (prim_face_plane), or -1 */
 } cscene_face;
 
 typedef struct cscene {
@@ -59,10 +62,11 @@ typedef struct cscene {
     NS(pds) **maps;
     size_t nmaps;
     /* rows of 1 + SCENE_MAX_FACES entries: entry 0 for a face number
-     * outside 0..SCENE_MAX_FACES-1, then one per face. Row a (a < nattrs)
-     * serves every primitive of attribute a with no face bound by FACE,
-     * so a large scene keeps a few rows, not one per primitive; each
-     * other primitive has a row of its own. face_row[i]: primitive i's. */
+     * outside 0..SCENE_MAX_FACES-1, then one per face. Row
+     * a * PRIM_KIND_COUNT + kind serves every primitive of that kind and
+     * attribute a with no face bound by FACE, so a large scene keeps a
+     * few rows, not one per primitive; each other primitive has a row of
+     * its own. face_row[i]: primitive i's. */
     cscene_face *faces;
     size_t *face_row;
     int transparent;          /* some attribute transmits light: shadow rays
