@@ -679,7 +679,8 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
 
 static double prim_clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
 
-const double *NS(prim_face_normal)(const prim *p, int face)
+/* prim_face_normal, inlined into prim_surface */
+static inline const double *prim_flat_normal(const prim *p, int face)
 {
     static const double none[3];   /* a face number the kind has no plane for */
     int k;
@@ -688,6 +689,11 @@ const double *NS(prim_face_normal)(const prim *p, int face)
         return NULL;
     k = prim_face_plane(p->kind, face >= 0 && face < 6 ? face : 0);
     return k >= 0 ? p->pl_d[k] : none;
+}
+
+const double *NS(prim_face_normal)(const prim *p, int face)
+{
+    return prim_flat_normal(p, face);
 }
 
 void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)
@@ -699,7 +705,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         out->p[i] = w[i];
-    if (!need_uv && (fn = NS(prim_face_normal)(p, face)) != NULL) {
+    if (!need_uv && (fn = prim_flat_normal(p, face)) != NULL) {
         /* a planar face: its normal is stored, nothing else is asked for */
         for (i = 0; i < 3; i++)
             out->n[i] = fn[i];
@@ -775,7 +781,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         dmath_m3_mul_v(p->a_d, du, out->dpdu);
         dmath_m3_mul_v(p->a_d, dv, out->dpdv);
     }
-    if ((fn = NS(prim_face_normal)(p, face)) != NULL) {
+    if ((fn = prim_flat_normal(p, face)) != NULL) {
         for (i = 0; i < 3; i++)
             out->n[i] = fn[i];
     } else {

@@ -88,8 +88,10 @@ static inline int prim_nplanes(int kind)
  * face order, after the curved side of a cylinder or cone. */
 static inline int prim_face_plane(int kind, int face)
 {
-    int k = face - (kind == PRIM_CYLINDER || kind == PRIM_CONE);
-    return face >= 0 && k >= 0 && k < prim_nplanes(kind) ? k : -1;
+    static const signed char k[PRIM_KIND_COUNT][6] = {
+        {-1, -1, -1, -1, -1, -1}, {-1, 0, 1, -1, -1, -1}, {0, 1, 2, 3, 4, 5},
+        {-1, 0, 1, -1, -1, -1}, {0, -1, -1, -1, -1, -1}};
+    return kind >= 0 && kind < PRIM_KIND_COUNT && face >= 0 && face < 6 ? k[kind][face] : -1;
 }
 
 /* Compiles scene primitive sp (index id) under the normalisation nm, its

@@ -185,11 +185,11 @@ static int cscene_faces(const scene *sc, cscene *cs, diag *err)
     for (i = 0; i < sc->nprims; i++) {
         const scene_prim *sp = &sc->prims[i];
         if (!cscene_face_bound(sp)) {
-            cs->face_row[i] = (size_t)sp->attr * PRIM_KIND_COUNT + (size_t)sp->kind;
+            cs->face_row[i] = ((size_t)sp->attr * PRIM_KIND_COUNT + (size_t)sp->kind) * row;
             continue;
         }
-        cs->face_row[i] = nrows;
-        cscene_face_row(sc, cs, sp->kind, sp->attr, sp->face_map, &cs->faces[nrows++ * row]);
+        cs->face_row[i] = nrows++ * row;
+        cscene_face_row(sc, cs, sp->kind, sp->attr, sp->face_map, &cs->faces[cs->face_row[i]]);
     }
     return 0;
 }

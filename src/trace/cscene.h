@@ -66,7 +66,7 @@ typedef struct cscene {
      * a * PRIM_KIND_COUNT + kind serves every primitive of that kind and
      * attribute a with no face bound by FACE, so a large scene keeps a
      * few rows, not one per primitive; each other primitive has a row of
-     * its own. face_row[i]: primitive i's. */
+     * its own. face_row[i]: the index in faces of primitive i's row. */
     cscene_face *faces;
     size_t *face_row;
     int transparent;          /* some attribute transmits light: shadow rays
@@ -77,7 +77,7 @@ typedef struct cscene {
 static inline const cscene_face *cscene_face_at(const cscene *cs, int pi, int face)
 {
     size_t k = face >= 0 && face < SCENE_MAX_FACES ? (size_t)face + 1 : 0;
-    return &cs->faces[cs->face_row[pi] * (SCENE_MAX_FACES + 1) + k];
+    return &cs->faces[cs->face_row[pi] + k];
 }
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:
