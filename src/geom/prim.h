@@ -52,7 +52,6 @@ typedef struct prim {
     int bounded;       /* 0 for the half-space */
     vec3 bc;           /* bounding sphere centre and radius (world) */
     num br;
-    int nplanes;
     prim_plane *pl;    /* nplanes planes, in storage the caller provides
                           (prim_compile): a sphere needs none, a block six */
     vec3 org;          /* canonical origin in the world */
@@ -60,6 +59,7 @@ typedef struct prim {
     num smin;          /* 1 / frobenius norm of canonical_from_world */
     num inv_smin;      /* its reciprocal (the frobenius norm) */
     num cone_a, cone_k;/* cone radius at canonical z: a + k z */
+    int nplanes;
     unsigned fast;     /* exact shortcuts: bits 4k..4k+3 how pl[k]'s dot
                           products are formed (k < 6), bits 24..31 minv_s's
                           nonzero column per row (prim_cols) */
