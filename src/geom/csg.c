@@ -18,8 +18,11 @@ typedef struct csg_ctx {
     const scene *sc;
     const prim *prims;
     csg_node *nodes;
-    csg_bound *bd;           /* double bounds per compiled node */
-    int n, cap;
+    csg_bound *bd;           /* double bounds of the current object's
+                                compiled nodes: node i's is bd[i - b0] (no
+                                parent reads a bound of another object) */
+    size_t bdcap;
+    int n, cap, b0;
     diag *err;
 } csg_ctx;
 
@@ -58,8 +61,12 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         csg_err(x, DIAG_INPUT, "CSG tree has a cycle or shares subtrees too often");
         return -1;
     }
+    if (mem_grow((void **)&x->bd, &x->bdcap, (size_t)(x->n - x->b0) + 1, sizeof *x->bd)) {
+        csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
+        return -1;
+    }
     nd = &x->nodes[x->n];
-    b = &x->bd[x->n];
+    b = &x->bd[x->n - x->b0];
     memset(nd, 0, sizeof *nd);
     memset(b, 0, sizeof *b);
     nd->op = op;
@@ -71,12 +78,11 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         b->bounded = p->bounded;
         vec3_to_d(p->bc, b->c);
         b->r = num_to_d(p->br);
-        memcpy(b->lo, p->box_d, sizeof b->lo);
-        memcpy(b->hi, p->box_d + 3, sizeof b->hi);
+        NS(prim_box)(p, b->lo, b->hi);
         b->nspans = 1;
         b->peak = 1;
     } else {
-        const csg_bound *bl = &x->bd[l], *br = &x->bd[r];
+        const csg_bound *bl = &x->bd[l - x->b0], *br = &x->bd[r - x->b0];
         size_t a = bl->peak, c = bl->nspans + br->peak, e = 2 * (bl->nspans + br->nspans);
         b->nspans = bl->nspans + br->nspans;
         b->peak = a > c ? (a > e ? a : e) : (c > e ? c : e);
@@ -142,7 +148,7 @@ static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
     if (n == 1)
         return items[0];
     for (i = 0; i < n; i++)
-        if (x->bd[items[i]].bounded) {
+        if (x->bd[items[i] - x->b0].bounded) {
             int t = items[nb]; items[nb] = items[i]; items[i] = t; nb++;
         }
     if (nb < n) {
@@ -153,7 +159,7 @@ static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
     }
     for (i = 0; i < n; i++)
         for (j = 0; j < 3; j++) {
-            double c = x->bd[items[i]].c[j];
+            double c = x->bd[items[i] - x->b0].c[j];
             if (c < lo[j]) lo[j] = c;
             if (c > hi[j]) hi[j] = c;
         }
@@ -161,7 +167,7 @@ static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
         if (hi[j] - lo[j] > hi[axis] - lo[axis])
             axis = j;
     for (i = 0; i < n; i++) {
-        keys[i].key = x->bd[items[i]].c[axis];
+        keys[i].key = x->bd[items[i] - x->b0].c[axis];
         keys[i].idx = items[i];
     }
     qsort(keys, (size_t)n, sizeof *keys, csg_key_cmp);
@@ -315,22 +321,22 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
         return csg_err(&x, DIAG_INPUT, "CSG tree too large");
     x.cap = (int)cap;
     x.nodes = mem_calloc(cap, sizeof *x.nodes);
-    x.bd = mem_calloc(cap, sizeof *x.bd);
     obj = mem_calloc(sc->nroots + 1, sizeof *obj);
     lo = mem_calloc(sc->nroots + 1, sizeof *lo);
     hi = mem_calloc(sc->nroots + 1, sizeof *hi);
-    if (!x.nodes || !x.bd || !obj || !lo || !hi) {
+    if (!x.nodes || !obj || !lo || !hi) {
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
     }
     /* each object compiled on its own; the bounded ones first (the
      * hierarchy's items), the unbounded ones after them */
     for (i = 0; i < sc->nroots; i++) {
-        int r = csg_compile_node(&x, sc->roots[i], 1);
-        if (r < 0)
+        int r;
+        x.b0 = x.n;
+        if ((r = csg_compile_node(&x, sc->roots[i], 1)) < 0)
             goto fail;
-        if (x.bd[r].peak > peak)
-            peak = x.bd[r].peak;
+        if (x.bd[r - x.b0].peak > peak)
+            peak = x.bd[r - x.b0].peak;
         if (x.nodes[r].bounded) {
             memmove(obj + nb + 1, obj + nb, (size_t)nu * sizeof *obj);
             memcpy(lo[nb], x.nodes[r].lo, sizeof lo[nb]);

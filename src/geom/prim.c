@@ -10,39 +10,6 @@
 
 /* ---- compile (double precision) ------------------------------------- */
 
-/* Exact bounding box of a bounded primitive in the normalised world:
- * ellipsoid extents for the sphere, the two end discs for cylinder and
- * cone, the corners for the block. */
-static void prim_box(prim *p, int kind)
-{
-    const double *a = p->a_d;
-    int i, k;
-    for (i = 0; i < 3; i++) {
-        double lo = HUGE_VAL, hi = -HUGE_VAL;
-        if (kind == PRIM_SPHERE) {
-            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]);
-            lo = -h;
-            hi = h;
-        } else if (kind == PRIM_BLOCK) {
-            for (k = 0; k < 8; k++) {
-                double v = (k & 1 ? a[3 * i] : 0) + (k & 2 ? a[3 * i + 1] : 0) + (k & 4 ? a[3 * i + 2] : 0);
-                if (v < lo) lo = v;
-                if (v > hi) hi = v;
-            }
-        } else {
-            double ra = kind == PRIM_CONE ? num_to_d(p->cone_a) : 1;
-            double rb = kind == PRIM_CONE ? ra + num_to_d(p->cone_k) : 1;
-            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1]);
-            lo = -ra * h;
-            hi = ra * h;
-            if (a[3 * i + 2] - rb * h < lo) lo = a[3 * i + 2] - rb * h;
-            if (a[3 * i + 2] + rb * h > hi) hi = a[3 * i + 2] + rb * h;
-        }
-        p->box_d[i] = p->org_d[i] + lo;
-        p->box_d[3 + i] = p->org_d[i] + hi;
-    }
-}
-
 /* How prim_clip_planes forms a plane's n.d and n.o (prim->fast, 3 bits a
  * plane): two dot products; the previous plane's, negated, when n is
  * exactly its normal negated (the opposite faces of a block, a cylinder's
@@ -70,15 +37,13 @@ static int prim_dot_code(const prim *p, int i)
     return PRIM_DOT_FULL;
 }
 
-/* Rounds plane i of p from its double form to num and records the face's
- * double normal for shading; then sets how the clip forms its dot products
- * and the next plane's, which may refer to it. */
+/* Rounds plane i of p from its double form to num; then sets how the clip
+ * forms its dot products and the next plane's, which may refer to it. */
 static void prim_round_plane(prim *p, int i)
 {
     int k;
     p->pl[i].n = vec3_from_d(p->pl_d[i]);
     p->pl[i].d = num_from_d(p->pl_d[i][3]);
-    memcpy(p->pn_d[p->pl[i].face], p->pl_d[i], 3 * sizeof(double));
     for (k = i; k <= i + 1 && k < p->nplanes; k++)
         p->fast = (p->fast & ~(7u << 3 * k)) | (unsigned)prim_dot_code(p, k) << 3 * k;
 }
@@ -110,7 +75,8 @@ static int prim_fail(diag *err, const char *file, const scene_prim *sp, const ch
                    "primitive '%s': %s", sp->name, what);
 }
 
-/* Canonical planes per kind: outward normal, a point, face id. */
+/* Canonical planes per kind: outward normal, a point, face id; in face
+ * order, as prim_face_plane assumes. */
 typedef struct prim_cplane { double n[3], p[3]; int face; } prim_cplane;
 
 static const prim_cplane prim_block_planes[6] = {
@@ -121,8 +87,8 @@ static const prim_cplane prim_cap_planes[2] = {
     {{0, 0, 1}, {0, 0, 1}, PRIM_FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, PRIM_FACE_CYL_BOTTOM}};
 static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, PRIM_FACE_HALFSPACE_PLANE}};
 
-int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
-                     const char *file, diag *err)
+int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
+                     double (*pl_d)[4], prim *out, const char *file, diag *err)
 {
     prim p;
     double c[3] = {1, 1, 1}, cc[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
@@ -139,6 +105,8 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         if (!isfinite(d[i]))
             return prim_fail(err, file, sp, "dimension is not finite");
     p.kind = sp->kind;
+    p.pl = pl;
+    p.pl_d = pl_d;
     p.id = id;
     p.attr = sp->attr;
     p.bounded = 1;
@@ -234,7 +202,6 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
         }
     }
     if (p.bounded) {
-        prim_box(&p, sp->kind);
         for (i = 0; i < 3; i++)
             if (fabs(bc[i]) + r > 4 * GEOM_W)
                 return prim_fail(err, file, sp, "outside the normalised scene (internal)");
@@ -261,6 +228,44 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
     }
     *out = p;
     return 0;
+}
+
+/* Exact box: ellipsoid extents for the sphere, the two end discs for
+ * cylinder and cone, the corners for the block. Computed when asked rather
+ * than stored: only the CSG compile needs it. */
+void NS(prim_box)(const prim *p, double lo_out[3], double hi_out[3])
+{
+    const double *a = p->a_d;
+    int i, k, kind = p->kind;
+    if (!p->bounded) {
+        memset(lo_out, 0, 3 * sizeof *lo_out);
+        memset(hi_out, 0, 3 * sizeof *hi_out);
+        return;
+    }
+    for (i = 0; i < 3; i++) {
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        if (kind == PRIM_SPHERE) {
+            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1] + a[3 * i + 2] * a[3 * i + 2]);
+            lo = -h;
+            hi = h;
+        } else if (kind == PRIM_BLOCK) {
+            for (k = 0; k < 8; k++) {
+                double v = (k & 1 ? a[3 * i] : 0) + (k & 2 ? a[3 * i + 1] : 0) + (k & 4 ? a[3 * i + 2] : 0);
+                if (v < lo) lo = v;
+                if (v > hi) hi = v;
+            }
+        } else {
+            double ra = kind == PRIM_CONE ? num_to_d(p->cone_a) : 1;
+            double rb = kind == PRIM_CONE ? ra + num_to_d(p->cone_k) : 1;
+            double h = sqrt(a[3 * i] * a[3 * i] + a[3 * i + 1] * a[3 * i + 1]);
+            lo = -ra * h;
+            hi = ra * h;
+            if (a[3 * i + 2] - rb * h < lo) lo = a[3 * i + 2] - rb * h;
+            if (a[3 * i + 2] + rb * h > hi) hi = a[3 * i + 2] + rb * h;
+        }
+        lo_out[i] = p->org_d[i] + lo;
+        hi_out[i] = p->org_d[i] + hi;
+    }
 }
 
 /* ---- one representation for coincident geometry --------------------- */
@@ -681,12 +686,21 @@ int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, spa
 
 static double prim_clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
 
-const double *NS(prim_face_normal)(const prim *p, int face)
+/* prim_face_normal, inlined into prim_surface */
+static inline const double *prim_flat_normal(const prim *p, int face)
 {
+    static const double none[3];   /* a face number the kind has no plane for */
+    int k;
     if (p->kind == PRIM_SPHERE || (p->kind != PRIM_BLOCK && p->kind != PRIM_HALFSPACE
                                    && face == PRIM_FACE_CYL_SIDE))
         return NULL;
-    return p->pn_d[face >= 0 && face < 6 ? face : 0];
+    k = prim_face_plane(p->kind, face >= 0 && face < 6 ? face : 0);
+    return k >= 0 ? p->pl_d[k] : none;
+}
+
+const double *NS(prim_face_normal)(const prim *p, int face)
+{
+    return prim_flat_normal(p, face);
 }
 
 void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)
@@ -698,7 +712,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         out->p[i] = w[i];
-    if (!need_uv && (fn = NS(prim_face_normal)(p, face)) != NULL) {
+    if (!need_uv && (fn = prim_flat_normal(p, face)) != NULL) {
         /* a planar face: its normal is stored, nothing else is asked for */
         for (i = 0; i < 3; i++)
             out->n[i] = fn[i];
@@ -774,7 +788,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         dmath_m3_mul_v(p->a_d, du, out->dpdu);
         dmath_m3_mul_v(p->a_d, dv, out->dpdv);
     }
-    if ((fn = NS(prim_face_normal)(p, face)) != NULL) {
+    if ((fn = prim_flat_normal(p, face)) != NULL) {
         for (i = 0; i < 3; i++)
             out->n[i] = fn[i];
     } else {

@@ -60,20 +60,21 @@ typedef struct prim {
     int bounded;       /* 0 for the half-space */
     vec3 bc;           /* bounding sphere centre and radius (world) */
     num br;
-    double box_d[6];   /* bounding box (world): lo[3], hi[3] */
-    int nplanes;
-    prim_plane pl[6];
+    prim_plane *pl;    /* nplanes planes, in storage the caller provides
+                          (prim_compile): a sphere needs none, a block six */
     vec3 org;          /* canonical origin in the world */
     mat3 minv_s;       /* canonical_from_world (linear part) times smin */
     num smin;          /* 1 / frobenius norm of canonical_from_world */
     num inv_smin;      /* its reciprocal (the frobenius norm) */
     num cone_a, cone_k;/* cone radius at canonical z: a + k z */
+    int nplanes;
     unsigned fast;     /* exact shortcuts: bits 3k..3k+2 how pl[k]'s dot
                           products are formed (k < 6), bits 24..31 minv_s's
                           nonzero column per row (prim_cols) */
     /* double copies for surface evaluation */
-    double a_d[9], ainv_d[9], org_d[3], pn_d[6][3];
-    double pl_d[6][4]; /* planes in double (n, d), in pl's order */
+    double a_d[9], ainv_d[9], org_d[3];
+    double (*pl_d)[4]; /* planes in double (n, d), in pl's order (storage
+                          as pl); n is also the face's shading normal */
 } prim;
 
 /* Two planes, or two placements of one canonical solid, that agree within
@@ -82,11 +83,32 @@ typedef struct prim {
  * below any resolution a mode could use to tell them apart. */
 #define PRIM_SAME_TOL (1.0 / 1073741824.0)
 
-/* Compiles scene primitive sp (index id) under the normalisation nm.
- * 0 on success; DIAG_INPUT (located at sp->loc in file) for bad dimensions,
- * non-finite or singular transforms, or a primitive outside the range. */
-int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *out,
-                     const char *file, diag *err);
+/* The number of planar faces of a primitive of kind `kind` (0 for an
+ * unknown kind): the room prim_compile needs in pl and pl_d. */
+static inline int prim_nplanes(int kind)
+{
+    return kind == PRIM_BLOCK ? 6 : kind == PRIM_CYLINDER || kind == PRIM_CONE ? 2
+           : kind == PRIM_HALFSPACE ? 1 : 0;
+}
+
+/* The index in pl of the plane of face `face` of a primitive of kind
+ * `kind`, or -1 for a curved or unknown face: the planes are stored in
+ * face order, after the curved side of a cylinder or cone. */
+static inline int prim_face_plane(int kind, int face)
+{
+    static const signed char k[PRIM_KIND_COUNT][6] = {
+        {-1, -1, -1, -1, -1, -1}, {-1, 0, 1, -1, -1, -1}, {0, 1, 2, 3, 4, 5},
+        {-1, 0, 1, -1, -1, -1}, {0, -1, -1, -1, -1, -1}};
+    return kind >= 0 && kind < PRIM_KIND_COUNT && face >= 0 && face < 6 ? k[kind][face] : -1;
+}
+
+/* Compiles scene primitive sp (index id) under the normalisation nm, its
+ * planes into pl and pl_d (prim_nplanes(sp->kind) entries each, kept by
+ * out). 0 on success; DIAG_INPUT (located at sp->loc in file) for bad
+ * dimensions, non-finite or singular transforms, or a primitive outside
+ * the range. */
+int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
+                     double (*pl_d)[4], prim *out, const char *file, diag *err);
 
 /* Gives coincident geometry of the compiled primitives one representation
  * (docs/numerics.md, "Coincident surfaces"): every plane equal within
@@ -97,6 +119,9 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim *ou
  * Intersected with one ray they then give bit-identical parameters. 0, or
  * DIAG_IO when memory runs out. */
 int NS(prim_share)(prim *prims, size_t n, diag *err);
+
+/* The bounding box of p in the world (lo, hi); zeros for the half-space. */
+void NS(prim_box)(const prim *p, double lo[3], double hi[3]);
 
 /* Intersects r with p; the bounding test rejects p when it lies wholly
  * outside the parameters [tmin, tmax] (the span itself is not clipped).

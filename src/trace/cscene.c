@@ -139,24 +139,58 @@ static int cscene_maps(const scene *sc, cscene *cs, diag *err)
     return 0;
 }
 
-/* The face table (cscene_face_at), after the maps are compiled. */
+/* One row of the face table: what the faces of a primitive of kind `kind`
+ * and attribute attr look up under the face bindings fmap (NULL: none). */
+static void cscene_face_row(const scene *sc, const cscene *cs, int kind, int attr, const int *fmap,
+                            cscene_face *row)
+{
+    int f;
+    for (f = -1; f < SCENE_MAX_FACES; f++) {
+        cscene_face *e = &row[f + 1];
+        int m = fmap && f >= 0 ? fmap[f] : -1;
+        e->plain = &sc->attrs[attr];
+        e->map = m >= 0 ? cs->maps[m] : NULL;
+        e->def = m >= 0 ? &sc->maps[m]->def : NULL;
+        e->need_uv = m >= 0 || e->plain->texture >= 0 || e->plain->bump >= 0;
+        e->flat_k = prim_face_plane(kind, f);
+    }
+}
+
+/* 1 when primitive sp has a face bound by FACE. */
+static int cscene_face_bound(const scene_prim *sp)
+{
+    int f;
+    for (f = 0; f < SCENE_MAX_FACES; f++)
+        if (sp->face_map[f] >= 0)
+            return 1;
+    return 0;
+}
+
+/* The face table (cscene_face_at), after the maps and primitives are
+ * compiled (every kind is known). */
 static int cscene_faces(const scene *sc, cscene *cs, diag *err)
 {
-    size_t i;
-    int f;
-    cs->faces = mem_alloc(sc->nprims * (SCENE_MAX_FACES + 1) * sizeof *cs->faces);
-    if (!cs->faces)
-        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    const size_t row = SCENE_MAX_FACES + 1, nshared = sc->nattrs * PRIM_KIND_COUNT;
+    size_t i, nrows = nshared;
     for (i = 0; i < sc->nprims; i++)
-        for (f = -1; f < SCENE_MAX_FACES; f++) {
-            cscene_face *e = &cs->faces[i * (SCENE_MAX_FACES + 1) + (size_t)(f + 1)];
-            int m = f >= 0 ? sc->prims[i].face_map[f] : -1;
-            e->plain = &sc->attrs[sc->prims[i].attr];
-            e->map = m >= 0 ? cs->maps[m] : NULL;
-            e->def = m >= 0 ? &sc->maps[m]->def : NULL;
-            e->need_uv = m >= 0 || e->plain->texture >= 0 || e->plain->bump >= 0;
-            e->flat_n = NS(prim_face_normal)(&cs->prims[i], f);
+        nrows += (size_t)cscene_face_bound(&sc->prims[i]);
+    cs->face_row = mem_calloc(sc->nprims ? sc->nprims : 1, sizeof *cs->face_row);
+    cs->faces = mem_calloc(nrows ? nrows : 1, row * sizeof *cs->faces);
+    if (!cs->face_row || !cs->faces)
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    for (i = 0; i < nshared; i++)
+        cscene_face_row(sc, cs, (int)(i % PRIM_KIND_COUNT), (int)(i / PRIM_KIND_COUNT), NULL,
+                        &cs->faces[i * row]);
+    nrows = nshared;
+    for (i = 0; i < sc->nprims; i++) {
+        const scene_prim *sp = &sc->prims[i];
+        if (!cscene_face_bound(sp)) {
+            cs->face_row[i] = ((size_t)sp->attr * PRIM_KIND_COUNT + (size_t)sp->kind) * row;
+            continue;
         }
+        cs->face_row[i] = nrows++ * row;
+        cscene_face_row(sc, cs, sp->kind, sp->attr, sp->face_map, &cs->faces[cs->face_row[i]]);
+    }
     return 0;
 }
 
@@ -288,7 +322,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     cscene *cs;
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
-    size_t i;
+    size_t i, npl = 0;
     int status = DIAG_IO;
 
     if (!cscene_finite3(v->eye) || !cscene_finite3(v->look) || !cscene_finite3(v->up)
@@ -328,23 +362,29 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     cs->max_depth = sc->max_depth < 0 ? 0 : sc->max_depth > CSCENE_MAX_DEPTH ? CSCENE_MAX_DEPTH
                                                                           : sc->max_depth;
     status = DIAG_IO;
+    for (i = 0; i < sc->nprims; i++)
+        npl += (size_t)prim_nplanes(sc->prims[i].kind);
     if (sc->nprims) {
         cs->prims = mem_calloc(sc->nprims, sizeof *cs->prims);
-        if (!cs->prims) {
+        cs->prim_pl = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl);
+        cs->prim_pl_d = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
+        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
         }
     }
     cs->nprims = sc->nprims;
-    for (i = 0; i < sc->nprims; i++) {
+    for (i = 0, npl = 0; i < sc->nprims; i++) {
         const scene_prim *sp = &sc->prims[i];
         if (sp->attr < 0 || (size_t)sp->attr >= sc->nattrs) {
             status = diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                              "primitive '%s': attribute index out of range", sp->name);
             goto fail;
         }
-        if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, &cs->prims[i], cscene_file(sc), err)))
+        if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl,
+                                       &cs->prims[i], cscene_file(sc), err)))
             goto fail;
+        npl += (size_t)prim_nplanes(sp->kind);
     }
     if ((status = NS(prim_share)(cs->prims, cs->nprims, err)) || (status = cscene_ranges(sc, cs, err)))
         goto fail;
@@ -409,8 +449,11 @@ void NS(cscene_free)(cscene *cs)
         NS(pds_free)(cs->maps[i]);
     mem_free(cs->maps);
     mem_free(cs->faces);
+    mem_free(cs->face_row);
     NS(csg_free)(&cs->tree);
     mem_free(cs->prims);
+    mem_free(cs->prim_pl);
+    mem_free(cs->prim_pl_d);
     mem_free(cs->lights);
     mem_free(cs);
 }

@@ -25,8 +25,9 @@ typedef struct cscene_face {
     int need_uv;              /* the hit needs (u,v) and its tangents: the
                                  face has a PDS, or the plain attribute a
                                  texture or a bump */
-    const double *flat_n;     /* a planar face's normal (prim_face_normal),
-                                 else NULL */
+    int flat_k;               /* the face's plane in prim.pl_d, whose normal
+                                 serves when (u,v) is not needed
+                                 (prim_face_plane), or -1 */
 } cscene_face;
 
 typedef struct cscene {
@@ -34,6 +35,10 @@ typedef struct cscene {
     geom_norm nm;
     prim *prims;
     size_t nprims;
+    /* the primitives' planes (prim.pl, prim.pl_d) in primitive order, as
+     * many as each has: a sphere none, a block six */
+    prim_plane *prim_pl;
+    double (*prim_pl_d)[4];
     csg tree;
     cscene_light *lights;
     size_t nlights;
@@ -58,9 +63,14 @@ typedef struct cscene {
      * look up). */
     NS(pds) **maps;
     size_t nmaps;
-    /* per primitive, 1 + SCENE_MAX_FACES entries: entry 0 for a face
-     * number outside 0..SCENE_MAX_FACES-1, then one per face */
+    /* rows of 1 + SCENE_MAX_FACES entries: entry 0 for a face number
+     * outside 0..SCENE_MAX_FACES-1, then one per face. Row
+     * a * PRIM_KIND_COUNT + kind serves every primitive of that kind and
+     * attribute a with no face bound by FACE, so a large scene keeps a
+     * few rows, not one per primitive; each other primitive has a row of
+     * its own. face_row[i]: the index in faces of primitive i's row. */
     cscene_face *faces;
+    size_t *face_row;
     int transparent;          /* some attribute transmits light: shadow rays
                                  then look up what they cross */
 } cscene;
@@ -69,7 +79,7 @@ typedef struct cscene {
 static inline const cscene_face *cscene_face_at(const cscene *cs, int pi, int face)
 {
     size_t k = face >= 0 && face < SCENE_MAX_FACES ? (size_t)face + 1 : 0;
-    return &cs->faces[(size_t)pi * (SCENE_MAX_FACES + 1) + k];
+    return &cs->faces[cs->face_row[pi] + k];
 }
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:

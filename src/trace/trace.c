@@ -46,14 +46,14 @@ const scene_attr *NS(trace_attribute)(const cscene *cs, trace_ctx *tc, int pi, i
 
 /* Evaluates the surface of hit h (on face entry f) at p, (u,v) only where
  * needed (counted when not). Without (u,v) the trace reads only the
- * normal: a planar face's is copied from the entry and sf->p is not set. */
-static void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_face *f, const csg_hit *h, vec3 p,
+ * normal: a planar face's is copied from its plane and sf->p is not set. */
+static inline void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_face *f, const csg_hit *h, vec3 p,
                           geom_surface *sf)
 {
     if (!f->need_uv) {
         tc->rs.uv_skipped++;
-        if (f->flat_n) {
-            memcpy(sf->n, f->flat_n, sizeof sf->n);
+        if (f->flat_k >= 0) {
+            memcpy(sf->n, cs->prims[h->prim].pl_d[f->flat_k], sizeof sf->n);
             return;
         }
     }

@@ -159,12 +159,14 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
             const scene_prim *sp = &sc->prims[n];
             double lo[3] = {-1, -1, 0}, cc[3] = {0, 0, 0.5}, r = 0;
             prim p;
+            prim_plane pl[6];
+            double pl_d[6][4];
             int i, k;
             if (sp->kind == PRIM_SPHERE)
                 continue;
             if (sp->kind == PRIM_BLOCK)
                 lo[0] = lo[1] = 0, cc[0] = cc[1] = 0.5;
-            assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, &p, "test", &err), 0);
+            assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &p, "test", &err), 0);
             for (k = 0; k < 8; k++) {
                 double corner[3], w[3], len;
                 for (i = 0; i < 3; i++)
