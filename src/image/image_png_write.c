@@ -30,7 +30,7 @@ static inline unsigned char image_png_write_paeth(unsigned char a, unsigned char
     unsigned char pa = (unsigned char)(b > c ? b - c : c - b), pb = (unsigned char)(a > c ? a - c : c - a);
     unsigned char pc = (unsigned char)(pa > pb ? pa - pb : pb - pa);
     int one_side = (a >= c) == (b >= c);
-    return (pa <= pb) & (one_side | (pa <= pc)) ? a : one_side | (pb <= pc) ? b : c;
+    return (pa <= pb) & (one_side | (pa <= pc)) ? a : (one_side | (pb <= pc)) ? b : c;
 }
 
 /* (a + b) / 2 rounded down, in bytes. */
