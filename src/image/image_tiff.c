@@ -38,16 +38,17 @@ static int image_tiff_load(image_tiff_lib *t, const char *name, diag *err)
                                        "TIFFOpenOptionsSetWarningHandlerExtR", "TIFFClientOpenExt",
                                        "TIFFGetField", "TIFFReadRGBAImageOriented", "TIFFClose"};
     libload_fn f[8];
-    /* the table's types checked against tiffio.h: sizeof does not evaluate
+    /* the table's types checked against tiffio.h (a conditional needs
+     * compatible pointer types); sizeof does not evaluate
      * its operand, so nothing here links libtiff */
-    (void)sizeof(t->OpenOptionsAlloc = TIFFOpenOptionsAlloc);
-    (void)sizeof(t->OpenOptionsFree = TIFFOpenOptionsFree);
-    (void)sizeof(t->OpenOptionsSetErrorHandlerExtR = TIFFOpenOptionsSetErrorHandlerExtR);
-    (void)sizeof(t->OpenOptionsSetWarningHandlerExtR = TIFFOpenOptionsSetWarningHandlerExtR);
-    (void)sizeof(t->ClientOpenExt = TIFFClientOpenExt);
-    (void)sizeof(t->GetField = TIFFGetField);
-    (void)sizeof(t->ReadRGBAImageOriented = TIFFReadRGBAImageOriented);
-    (void)sizeof(t->Close = TIFFClose);
+    (void)sizeof(1 ? t->OpenOptionsAlloc : TIFFOpenOptionsAlloc);
+    (void)sizeof(1 ? t->OpenOptionsFree : TIFFOpenOptionsFree);
+    (void)sizeof(1 ? t->OpenOptionsSetErrorHandlerExtR : TIFFOpenOptionsSetErrorHandlerExtR);
+    (void)sizeof(1 ? t->OpenOptionsSetWarningHandlerExtR : TIFFOpenOptionsSetWarningHandlerExtR);
+    (void)sizeof(1 ? t->ClientOpenExt : TIFFClientOpenExt);
+    (void)sizeof(1 ? t->GetField : TIFFGetField);
+    (void)sizeof(1 ? t->ReadRGBAImageOriented : TIFFReadRGBAImageOriented);
+    (void)sizeof(1 ? t->Close : TIFFClose);
     if (libload(names, syms, f, 8, name, "reading a TIFF needs it: apt-get install -y libtiff6", err))
         return DIAG_IO;
     t->OpenOptionsAlloc = (TIFFOpenOptions * (*)(void)) f[0];
