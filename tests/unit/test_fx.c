@@ -334,7 +334,7 @@ static void test_fx16_from_double_rounds_like_reference(void **state)
         if (i % 2) {              /* (n + 1/2) / 2^16, n over int32 and a little beyond */
             int64_t n = (int64_t)(int32_t)test_rand(&s) >> (test_rand(&s) % 32);
             if (i % 16 == 1)
-                n += (int64_t)(n < 0 ? -1 : 1) << 31;
+                n += (n < 0 ? -1 : 1) * ((int64_t)1 << 31);
             x = ((double)n + 0.5) / 65536;
             k = (int)(test_rand(&s) % 3);
             if (k)

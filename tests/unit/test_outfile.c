@@ -228,6 +228,12 @@ static void test_outfile_input_is_not_output(void **state)
 
 int main(void)
 {
+    /* a launcher may have left a signal ignored (nohup: SIGHUP), which
+     * outfile rightly keeps ignored: the signal tests need the defaults */
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    signal(SIGHUP, SIG_DFL);
+    signal(SIGXFSZ, SIG_DFL);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_outfile_names_unpredictable),
         cmocka_unit_test(test_outfile_symlink_not_followed),

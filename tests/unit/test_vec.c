@@ -124,7 +124,7 @@ static int ref_unit(vec3 v, vec3 *unit, num *len, num *rlen)
     raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
     while (((int64_t)m << e) < FX16_ONE)
         e++;
-    while ((m >> -e) >= 2 * FX16_ONE)
+    while (e <= 0 && (m >> -e) >= 2 * FX16_ONE)   /* e > 0: m << e is below 2^17 */
         e--;
     for (i = 0; i < 3; i++) {
         w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
