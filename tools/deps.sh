@@ -34,6 +34,7 @@ test gnuplot-nox         bench --plot (tests/cli/bench_plot.sh)
 test libjpeg62-turbo-dev compare reads JPEG (mk/image.mk)
 test libtiff-dev         compare reads TIFF (mk/image.mk)
 test imagemagick         writes the JPEG/TIFF test pictures (tests/cli/compare_formats.sh)
+test strace              tests/cli/threads.sh counts the threads a render starts
 test hercules            tapemap, hetmap, hetupd (cms tests) and the HFP instructions (test_hfp)
 test libopenmpi-dev      the MPI build (mk/mpi.mk) and tests/cli/mpi.sh
 test openmpi-bin         mpirun for tests/cli/mpi.sh

@@ -66,7 +66,8 @@ static void cmd_render_help(FILE *f)
         "                        hfp32 or hfp64 (System/370 short/long hexadecimal)\n"
         "  --size WxH            image size in pixels, 1..%d each (default: the\n"
         "                        deck's SIZE; at most %d with --dl)\n"
-        "  --threads N           worker threads, 1..%d (default: OpenMP's count, %d here)\n"
+        "  --threads N           threads for the render and the PNG encoder, 1..%d\n"
+        "                        (default: OpenMP's count, %d here)\n"
         "  --aa N                N x N samples per pixel, 1..%d (default 1)\n"
         , SCENE_MAX_SIDE, DL_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA);
     fprintf(f,
@@ -266,6 +267,8 @@ int cmd_render(int argc, char **argv)
         cli_files_free(&files);
         return status;
     }
+    /* every parallel region after the render too (the PNG encoder) */
+    omp_set_num_threads(o.threads);
 
     /* Resolve and check every name before the long work: a bad fileid, a
      * missing or read-only directory, two outputs on one file or an output
