@@ -9,6 +9,9 @@
 #include <stdint.h>
 #include <string.h>
 #include <zlib.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #define IMAGE_PNG_WRITE_WINDOW 32768
 
@@ -46,6 +49,66 @@ static inline unsigned image_png_write_mag(unsigned char v)
     return v < w ? v : w;
 }
 
+#if defined(__SSE2__)
+/* image_png_write_paeth on 16 bytes: pa = |b - c|, pb = |a - c| and
+ * pc = |pa - pb| by saturating differences, the comparisons of unsigned
+ * bytes by their minima and maxima. */
+static inline __m128i image_png_write_paeth16(__m128i a, __m128i b, __m128i c)
+{
+    __m128i pa = _mm_or_si128(_mm_subs_epu8(b, c), _mm_subs_epu8(c, b));
+    __m128i pb = _mm_or_si128(_mm_subs_epu8(a, c), _mm_subs_epu8(c, a));
+    __m128i pc = _mm_or_si128(_mm_subs_epu8(pa, pb), _mm_subs_epu8(pb, pa));
+    __m128i a_ge = _mm_cmpeq_epi8(_mm_max_epu8(a, c), a), b_ge = _mm_cmpeq_epi8(_mm_max_epu8(b, c), b);
+    __m128i one_side = _mm_cmpeq_epi8(a_ge, b_ge);
+    __m128i pa_le_pb = _mm_cmpeq_epi8(_mm_min_epu8(pa, pb), pa);
+    __m128i pa_le_pc = _mm_cmpeq_epi8(_mm_min_epu8(pa, pc), pa);
+    __m128i pb_le_pc = _mm_cmpeq_epi8(_mm_min_epu8(pb, pc), pb);
+    __m128i take_a = _mm_and_si128(pa_le_pb, _mm_or_si128(one_side, pa_le_pc));
+    __m128i take_b = _mm_or_si128(one_side, pb_le_pc);
+    __m128i bc = _mm_or_si128(_mm_and_si128(take_b, b), _mm_andnot_si128(take_b, c));
+    return _mm_or_si128(_mm_and_si128(take_a, a), _mm_andnot_si128(take_a, bc));
+}
+
+/* The five filters' sums of magnitudes over bytes [i, n) of the row, 16
+ * at a time, from i >= k (bpp) while 16 remain; returns where it stopped.
+ * The same bytes as the scalar loop below: Paeth and the floor average
+ * as in image_png_write_paeth and _avg, the magnitude min(v, -v), and
+ * each 16 magnitudes summed by psadbw against zero into two 64-bit lanes
+ * (GCC 12 at -O2 widens them to 32 bits a byte at a time instead, 60 %
+ * of the filter's instructions). */
+static size_t image_png_write_sums16(const unsigned char *cur, const unsigned char *prev, size_t i,
+                                     size_t n, size_t k, unsigned sum[5])
+{
+    const __m128i zero = _mm_setzero_si128(), one = _mm_set1_epi8(1);
+    __m128i acc[5];
+    int f;
+    for (f = 0; f < 5; f++)
+        acc[f] = zero;
+    for (; i + 16 <= n; i += 16) {
+        __m128i x = _mm_loadu_si128((const __m128i *)(cur + i));
+        __m128i a = _mm_loadu_si128((const __m128i *)(cur + i - k));
+        __m128i b = _mm_loadu_si128((const __m128i *)(prev + i));
+        __m128i c = _mm_loadu_si128((const __m128i *)(prev + i - k));
+        /* floor((a + b) / 2): pavgb rounds up, minus the odd bit */
+        __m128i avg = _mm_sub_epi8(_mm_avg_epu8(a, b), _mm_and_si128(_mm_xor_si128(a, b), one));
+        __m128i pred = image_png_write_paeth16(a, b, c);
+        __m128i v[5];
+        v[0] = x;
+        v[1] = _mm_sub_epi8(x, a);
+        v[2] = _mm_sub_epi8(x, b);
+        v[3] = _mm_sub_epi8(x, avg);
+        v[4] = _mm_sub_epi8(x, pred);
+        for (f = 0; f < 5; f++) {
+            __m128i m = _mm_min_epu8(v[f], _mm_sub_epi8(zero, v[f]));
+            acc[f] = _mm_add_epi64(acc[f], _mm_sad_epu8(m, zero));
+        }
+    }
+    for (f = 0; f < 5; f++)
+        sum[f] += (unsigned)(_mm_cvtsi128_si32(acc[f]) + _mm_cvtsi128_si32(_mm_unpackhi_epi64(acc[f], acc[f])));
+    return i;
+}
+#endif
+
 /* Filters row cur (n bytes, bpp per pixel; prev is a row of zeros for the
  * first row) into out[0..n]: type byte, then the bytes of the filter (0
  * none, 1 sub, 2 up, 3 average, 4 Paeth) whose outputs, read as signed,
@@ -67,6 +130,9 @@ static void image_png_write_filter(const unsigned char *cur, const unsigned char
         sum[3] += image_png_write_mag((unsigned char)(x - (b >> 1)));
         sum[4] += image_png_write_mag((unsigned char)(x - image_png_write_paeth(0, b, 0)));
     }
+#if defined(__SSE2__)
+    i = image_png_write_sums16(cur, prev, i, n, k, sum);
+#endif
     for (; i < n; i++) {
         unsigned char x = cur[i], a = cur[i - k], b = prev[i], c = prev[i - k];
         sum[0] += image_png_write_mag(x);
@@ -102,6 +168,15 @@ static void image_png_write_filter(const unsigned char *cur, const unsigned char
     default:
         for (i = 0; i < k; i++)
             out[i] = (unsigned char)(cur[i] - image_png_write_paeth(0, prev[i], 0));
+#if defined(__SSE2__)
+        for (; i + 16 <= n; i += 16) {
+            __m128i p = image_png_write_paeth16(_mm_loadu_si128((const __m128i *)(cur + i - k)),
+                                                _mm_loadu_si128((const __m128i *)(prev + i)),
+                                                _mm_loadu_si128((const __m128i *)(prev + i - k)));
+            _mm_storeu_si128((__m128i *)(out + i),
+                             _mm_sub_epi8(_mm_loadu_si128((const __m128i *)(cur + i)), p));
+        }
+#endif
         for (; i < n; i++)
             out[i] = (unsigned char)(cur[i] - image_png_write_paeth(cur[i - k], prev[i], prev[i - k]));
         break;
