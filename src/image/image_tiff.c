@@ -19,6 +19,7 @@ typedef struct image_tiff_lib {
     void (*OpenOptionsFree)(TIFFOpenOptions *);
     void (*OpenOptionsSetErrorHandlerExtR)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *);
     void (*OpenOptionsSetWarningHandlerExtR)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *);
+    void (*OpenOptionsSetMaxSingleMemAlloc)(TIFFOpenOptions *, tmsize_t);
     TIFF *(*ClientOpenExt)(const char *, const char *, thandle_t, TIFFReadWriteProc, TIFFReadWriteProc,
                            TIFFSeekProc, TIFFCloseProc, TIFFSizeProc, TIFFMapFileProc, TIFFUnmapFileProc,
                            TIFFOpenOptions *);
@@ -28,16 +29,17 @@ typedef struct image_tiff_lib {
 } image_tiff_lib;
 
 /* Each read looks the entry points up again: after the first, dlopen only
- * counts a reference and eight lookups cost microseconds, and no state is
+ * counts a reference and nine lookups cost microseconds, and no state is
  * shared between threads. */
 static int image_tiff_load(image_tiff_lib *t, const char *name, diag *err)
 {
     static const char *const names[] = {IMAGE_TIFF_SONAME, NULL};
     static const char *const syms[] = {"TIFFOpenOptionsAlloc", "TIFFOpenOptionsFree",
                                        "TIFFOpenOptionsSetErrorHandlerExtR",
-                                       "TIFFOpenOptionsSetWarningHandlerExtR", "TIFFClientOpenExt",
+                                       "TIFFOpenOptionsSetWarningHandlerExtR",
+                                       "TIFFOpenOptionsSetMaxSingleMemAlloc", "TIFFClientOpenExt",
                                        "TIFFGetField", "TIFFReadRGBAImageOriented", "TIFFClose"};
-    libload_fn f[8];
+    libload_fn f[9];
     /* the table's types checked against tiffio.h (a conditional needs
      * compatible pointer types); sizeof does not evaluate
      * its operand, so nothing here links libtiff */
@@ -45,22 +47,24 @@ static int image_tiff_load(image_tiff_lib *t, const char *name, diag *err)
     (void)sizeof(1 ? t->OpenOptionsFree : TIFFOpenOptionsFree);
     (void)sizeof(1 ? t->OpenOptionsSetErrorHandlerExtR : TIFFOpenOptionsSetErrorHandlerExtR);
     (void)sizeof(1 ? t->OpenOptionsSetWarningHandlerExtR : TIFFOpenOptionsSetWarningHandlerExtR);
+    (void)sizeof(1 ? t->OpenOptionsSetMaxSingleMemAlloc : TIFFOpenOptionsSetMaxSingleMemAlloc);
     (void)sizeof(1 ? t->ClientOpenExt : TIFFClientOpenExt);
     (void)sizeof(1 ? t->GetField : TIFFGetField);
     (void)sizeof(1 ? t->ReadRGBAImageOriented : TIFFReadRGBAImageOriented);
     (void)sizeof(1 ? t->Close : TIFFClose);
-    if (libload(names, syms, f, 8, name, "reading a TIFF needs it: apt-get install -y libtiff6", err))
+    if (libload(names, syms, f, 9, name, "reading a TIFF needs it: apt-get install -y libtiff6", err))
         return DIAG_IO;
     t->OpenOptionsAlloc = (TIFFOpenOptions * (*)(void)) f[0];
     t->OpenOptionsFree = (void (*)(TIFFOpenOptions *))f[1];
     t->OpenOptionsSetErrorHandlerExtR = (void (*)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *))f[2];
     t->OpenOptionsSetWarningHandlerExtR = (void (*)(TIFFOpenOptions *, TIFFErrorHandlerExtR, void *))f[3];
+    t->OpenOptionsSetMaxSingleMemAlloc = (void (*)(TIFFOpenOptions *, tmsize_t))f[4];
     t->ClientOpenExt = (TIFF * (*)(const char *, const char *, thandle_t, TIFFReadWriteProc, TIFFReadWriteProc,
                                    TIFFSeekProc, TIFFCloseProc, TIFFSizeProc, TIFFMapFileProc,
-                                   TIFFUnmapFileProc, TIFFOpenOptions *)) f[4];
-    t->GetField = (int (*)(TIFF *, uint32_t, ...))f[5];
-    t->ReadRGBAImageOriented = (int (*)(TIFF *, uint32_t, uint32_t, uint32_t *, int, int))f[6];
-    t->Close = (void (*)(TIFF *))f[7];
+                                   TIFFUnmapFileProc, TIFFOpenOptions *)) f[5];
+    t->GetField = (int (*)(TIFF *, uint32_t, ...))f[6];
+    t->ReadRGBAImageOriented = (int (*)(TIFF *, uint32_t, uint32_t, uint32_t *, int, int))f[7];
+    t->Close = (void (*)(TIFF *))f[8];
     return 0;
 }
 
@@ -123,6 +127,43 @@ static int image_tiff_on_warning(TIFF *tif, void *user, const char *module, cons
     return 1;
 }
 
+/* What libtiff may allocate at once: its strip and tile buffers are sized
+ * from the header's samples and tile sides, not from the file, so a
+ * 162-byte file could ask for gigabytes. The cap allows a strip or tile of
+ * IMAGE_TIFF_MAX_BYTES_PER_PIXEL bytes per pixel over max_pixels, and
+ * IMAGE_TIFF_MIN_CAP for tiles larger than a small image. */
+#define IMAGE_TIFF_MAX_BYTES_PER_PIXEL 16u        /* RGBA of 32-bit samples */
+#define IMAGE_TIFF_MIN_CAP ((size_t)64 << 20)
+#define IMAGE_TIFF_MIN_TILE_PIXELS ((size_t)1 << 20)
+
+static size_t image_tiff_cap(size_t max_pixels)
+{
+    size_t px = max_pixels < IMAGE_MAX_PIXELS ? max_pixels : IMAGE_MAX_PIXELS;
+    return IMAGE_TIFF_MIN_CAP + px * IMAGE_TIFF_MAX_BYTES_PER_PIXEL;
+}
+
+/* The header's layout against what a picture of w x h needs: at most
+ * IMAGE_TIFF_MAX_BYTES_PER_PIXEL bytes a pixel, and tiles no larger than
+ * the picture or IMAGE_TIFF_MIN_TILE_PIXELS, whichever is more. */
+static int image_tiff_check_layout(const image_tiff_lib *t, TIFF *tif, const char *name, uint32_t w,
+                                   uint32_t h, diag *err)
+{
+    uint16_t spp = 1, bps = 1;
+    uint32_t tw = 0, th = 0;
+    size_t tile_max = (size_t)w * h > IMAGE_TIFF_MIN_TILE_PIXELS ? (size_t)w * h : IMAGE_TIFF_MIN_TILE_PIXELS;
+    t->GetField(tif, TIFFTAG_SAMPLESPERPIXEL, &spp);
+    t->GetField(tif, TIFFTAG_BITSPERSAMPLE, &bps);
+    if ((unsigned long)spp * bps > 8ul * IMAGE_TIFF_MAX_BYTES_PER_PIXEL)
+        return diag_at(err, DIAG_INPUT, name, 0, 0,
+                       "TIFF: %u samples of %u bits a pixel is over the %u bits this command reads",
+                       (unsigned)spp, (unsigned)bps, 8u * IMAGE_TIFF_MAX_BYTES_PER_PIXEL);
+    if (t->GetField(tif, TIFFTAG_TILEWIDTH, &tw) && t->GetField(tif, TIFFTAG_TILELENGTH, &th) &&
+        (size_t)tw * th > tile_max)
+        return diag_at(err, DIAG_INPUT, name, 0, 0, "TIFF: %ux%u tiles for a %ux%u picture are over %lu pixels",
+                       (unsigned)tw, (unsigned)th, (unsigned)w, (unsigned)h, (unsigned long)tile_max);
+    return 0;
+}
+
 int image_read_tiff_memory(const char *name, const void *data, size_t len, int channels,
                            size_t max_pixels, image *out, diag *err)
 {
@@ -143,6 +184,7 @@ int image_read_tiff_memory(const char *name, const void *data, size_t len, int c
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory");
     t.OpenOptionsSetErrorHandlerExtR(opts, image_tiff_on_error, &m);
     t.OpenOptionsSetWarningHandlerExtR(opts, image_tiff_on_warning, &m);
+    t.OpenOptionsSetMaxSingleMemAlloc(opts, (tmsize_t)image_tiff_cap(max_pixels));
     tif = t.ClientOpenExt(name, "rm", (thandle_t)&m, image_tiff_read, image_tiff_write, image_tiff_seek,
                             image_tiff_close, image_tiff_size, image_tiff_map, image_tiff_unmap, opts);
     t.OpenOptionsFree(opts);
@@ -154,6 +196,10 @@ int image_read_tiff_memory(const char *name, const void *data, size_t len, int c
         t.Close(tif);
         return diag_at(err, DIAG_INPUT, name, 0, 0, "%ux%u pixels is %s; scale it down", (unsigned)w,
                        (unsigned)h, w && h ? "over what this command reads" : "no picture");
+    }
+    if ((st = image_tiff_check_layout(&t, tif, name, w, h, err)) != 0) {
+        t.Close(tif);
+        return st;
     }
     n = (size_t)w * h;
     if (!(rgba = mem_alloc(n * sizeof *rgba))) {

@@ -14,6 +14,7 @@
 #include "compare/diffpic.h"
 #include "compare/ssim.h"
 #include "compare/imgload.h"
+#include "image/image_tiff.h"
 #include "image/pnm.h"
 #include "util/mem.h"
 #include "test_compare_synth.h"
@@ -603,6 +604,76 @@ static void test_compare_input_errors(void **state)
     image_free(&b);
 }
 
+/* A little-endian TIFF of one IFD whose strip or tile holds 16 zero bytes:
+ * tags[] are (tag, type 3 or 4, value) triples in ascending tag order, and
+ * the offset tag (273 or 324) gets the data's offset. */
+static size_t tiff_build(unsigned char *b, const unsigned long (*tags)[3], int n)
+{
+    size_t data = 8 + 2 + 12 * (size_t)n + 4, p = 0;
+    int i, k;
+    memcpy(b, "II*\0\x08\0\0\0", 8);
+    p = 8;
+    b[p++] = (unsigned char)n;
+    b[p++] = 0;
+    for (i = 0; i < n; i++) {
+        unsigned long v = tags[i][0] == 273 || tags[i][0] == 324 ? data : tags[i][2];
+        unsigned char f[12] = {0};
+        f[0] = (unsigned char)tags[i][0];
+        f[1] = (unsigned char)(tags[i][0] >> 8);
+        f[2] = (unsigned char)tags[i][1];
+        f[4] = 1;
+        for (k = 0; k < (tags[i][1] == 3 ? 2 : 4); k++)
+            f[8 + k] = (unsigned char)(v >> (8 * k));
+        memcpy(b + p, f, 12);
+        p += 12;
+    }
+    memset(b + p, 0, 4 + 16);
+    return p + 4 + 16;
+}
+
+/* A TIFF header can describe buffers far larger than its file (65535
+ * samples a pixel, 32768x32768 tiles of a 16x16 picture): the reader
+ * refuses the layout, by name, before libtiff allocates, and still reads a
+ * small one of the same form. */
+static void test_compare_tiff_layout_limits(void **state)
+{
+    static const unsigned long samples[][3] = {
+        {256, 4, 16384}, {257, 4, 1}, {258, 3, 8}, {259, 3, 8}, {262, 3, 1},
+        {273, 4, 0}, {277, 3, 65535}, {278, 4, 1}, {279, 4, 16}, {284, 3, 1}};
+    static const unsigned long tiles[][3] = {
+        {256, 4, 16}, {257, 4, 16}, {258, 3, 8}, {259, 3, 32773}, {262, 3, 1}, {277, 3, 1},
+        {284, 3, 1}, {322, 4, 32768}, {323, 4, 32768}, {324, 4, 0}, {325, 4, 16}};
+    unsigned long small[11][3];
+    unsigned char b[256];
+    image img;
+    diag err;
+    char buf[300];
+    size_t n;
+    (void)state;
+    if (!image_tiff_available())
+        skip();
+    n = tiff_build(b, samples, 10);
+    diag_init(&err);
+    assert_int_equal(imgload_memory("s.tif", b, n, (size_t)1 << 20, &img, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "s.tif: error: TIFF: 65535 samples of 8 bits a pixel is over the 128 bits this "
+                             "command reads");
+    n = tiff_build(b, tiles, 11);
+    diag_init(&err);
+    assert_int_equal(imgload_memory("t.tif", b, n, (size_t)1 << 20, &img, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "t.tif: error: TIFF: 32768x32768 tiles for a 16x16 picture are over 1048576 pixels");
+    /* the same picture in 16x16 tiles: PackBits of zero bytes */
+    memcpy(small, tiles, sizeof small);
+    small[7][2] = small[8][2] = 16;
+    n = tiff_build(b, (const unsigned long (*)[3])small, 11);
+    diag_init(&err);
+    assert_int_equal(imgload_memory("t.tif", b, n, (size_t)1 << 20, &img, &err), 0);
+    assert_int_equal(img.width, 16);
+    assert_int_equal(img.height, 16);
+    image_free(&img);
+}
+
 /* Fails each allocation of a registered comparison with both pictures in
  * turn: every failure is a clean DIAG_IO, and the run after succeeds. */
 static void test_compare_oom_sweep(void **state)
@@ -665,6 +736,7 @@ int main(void)
         cmocka_unit_test(test_compare_pnm_formats),
         cmocka_unit_test(test_compare_pnm_errors),
         cmocka_unit_test(test_compare_input_errors),
+        cmocka_unit_test(test_compare_tiff_layout_limits),
         cmocka_unit_test(test_compare_oom_sweep),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
