@@ -10,6 +10,9 @@ typedef struct sha256 {
     uint64_t len;             /* bytes hashed so far */
     unsigned char buf[64];
     size_t nbuf;
+    int shani;                /* blocks by the x86 SHA extensions (sha256_init
+                                 sets it where the processor has them; 0
+                                 forces the portable rounds) */
 } sha256;
 
 void sha256_init(sha256 *s);
