@@ -1,8 +1,14 @@
 /* mem — allocation hook with fault injection (see mem.h). */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE 1     /* MADV_HUGEPAGE, which POSIX does not name */
+#endif
 #include "util/mem.h"
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 static long fail_after = -1;
 static long alloc_count;
@@ -26,6 +32,39 @@ static int mem_should_fail(void)
 void mem_fail_after(long n) { fail_after = n; alloc_count = 0; }
 long mem_alloc_count(void) { return alloc_count; }
 
+/* Large blocks (a deck of 10,000 objects compiles to about 50 MB) are
+ * offered to the kernel for transparent huge pages, where it lets a
+ * process ask (Linux, `madvise` mode of
+ * /sys/kernel/mm/transparent_hugepage/enabled): one fault maps 2 MiB
+ * instead of 4 KiB. Each first touch of a page is a fault, which a virtual
+ * machine makes dear: the 10,000-object deck took 15,170 of them and 40 ms
+ * of system time, against 6,365 and 19 ms with huge pages (docs/performance.md).
+ * Only the 2 MiB-aligned interior of a block is advised; the advice is a
+ * hint, and its failure changes nothing. */
+
+int mem_huge_range(uintptr_t p, size_t size, uintptr_t *start, size_t *len)
+{
+    uintptr_t a = (p + MEM_HUGE_PAGE - 1) & ~(MEM_HUGE_PAGE - 1), b = (p + size) & ~(MEM_HUGE_PAGE - 1);
+    if (size < MEM_HUGE_MIN || p > UINTPTR_MAX - size || a < p || b <= a)
+        return 0;
+    *start = a;
+    *len = (size_t)(b - a);
+    return 1;
+}
+
+static void *mem_huge(void *p, size_t size)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    uintptr_t a;
+    size_t n;
+    if (p && mem_huge_range((uintptr_t)p, size, &a, &n))
+        (void)madvise((void *)a, n, MADV_HUGEPAGE);
+#else
+    (void)size;
+#endif
+    return p;
+}
+
 /* A request for zero bytes gets a valid, distinct pointer (one byte), so
  * that callers need not special-case empty arrays and NULL always means
  * failure. */
@@ -33,21 +72,21 @@ void *mem_alloc(size_t size)
 {
     if (mem_should_fail())
         return NULL;
-    return malloc(size ? size : 1);
+    return mem_huge(malloc(size ? size : 1), size);
 }
 
 void *mem_calloc(size_t count, size_t size)
 {
     if ((size && count > SIZE_MAX / size) || mem_should_fail())
         return NULL;
-    return count && size ? calloc(count, size) : calloc(1, 1);
+    return count && size ? mem_huge(calloc(count, size), count * size) : calloc(1, 1);
 }
 
 void *mem_realloc(void *p, size_t size)
 {
     if (mem_should_fail())
         return NULL;
-    return realloc(p, size ? size : 1);
+    return mem_huge(realloc(p, size ? size : 1), size);
 }
 
 void mem_free(void *p) { free(p); }

@@ -4,6 +4,7 @@
 #ifndef MEM_H
 #define MEM_H
 #include <stddef.h>
+#include <stdint.h>
 
 /* NULL means failure only: a request for zero bytes returns a valid pointer
  * that mem_free releases. */
@@ -18,6 +19,14 @@ char *mem_strdup(const char *s);
  * returns 0 on success, -1 on overflow or failure (then *p
  * and *cap are unchanged). */
 int mem_grow(void **p, size_t *cap, size_t need, size_t elem);
+
+/* Blocks of MEM_HUGE_MIN bytes or more are advised for transparent huge
+ * pages where Linux offers them (mem.c says why): mem_huge_range gives the
+ * range advised for a block of size bytes at address p, the 2 MiB-aligned
+ * interior, as 1 and *start, *len; 0 when there is none. */
+#define MEM_HUGE_PAGE ((uintptr_t)2 << 20)
+#define MEM_HUGE_MIN ((size_t)2 << 20)
+int mem_huge_range(uintptr_t p, size_t size, uintptr_t *start, size_t *len);
 
 /* Test hook: allocations succeed n more times, then fail; n < 0 disables.
  * mem_alloc_count() is the number of successful allocations so far. */

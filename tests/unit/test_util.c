@@ -11,6 +11,8 @@
 #include "util/bvh.h"
 #include "util/radix.h"
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,6 +49,64 @@ static void test_util_mem_fail_and_overflow(void **state)
     assert_null(mem_alloc(16));
     mem_fail_after(-1);
     assert_null(mem_calloc((size_t)-1, 16));
+}
+
+/* The range advised for huge pages is the 2 MiB-aligned interior of a
+ * block of at least MEM_HUGE_MIN bytes. On Linux with transparent huge
+ * pages offered on request ("[madvise]" or "[always]" in
+ * /sys/kernel/mm/transparent_hugepage/enabled), a block of 8 MiB from
+ * mem_alloc lies in a mapping whose VmFlags (proc(5), smaps) carry "hg",
+ * the advice given. */
+static void test_util_mem_huge_pages(void **state)
+{
+    const uintptr_t M = MEM_HUGE_PAGE;
+    uintptr_t a = 0;
+    size_t n = 0;
+    FILE *f;
+    char line[512];
+    (void)state;
+    assert_int_equal(mem_huge_range(3 * M, 2 * M, &a, &n), 1);
+    assert_true(a == 3 * M && n == 2 * M);
+    assert_int_equal(mem_huge_range(3 * M + 16, 4 * M, &a, &n), 1);
+    assert_true(a == 4 * M && n == 3 * M);
+    assert_int_equal(mem_huge_range(3 * M + 16, 2 * M, &a, &n), 1);
+    assert_true(a == 4 * M && n == M);
+    assert_int_equal(mem_huge_range(3 * M + 16, M + 32, &a, &n), 0);   /* no aligned 2 MiB inside */
+    assert_int_equal(mem_huge_range(3 * M, MEM_HUGE_MIN - 1, &a, &n), 0);
+    assert_int_equal(mem_huge_range(UINTPTR_MAX - M, 4 * M, &a, &n), 0);
+    f = fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
+    if (!f || !fgets(line, sizeof line, f) || (!strstr(line, "[madvise]") && !strstr(line, "[always]"))) {
+        if (f)
+            fclose(f);
+        print_message("# transparent huge pages not offered here: the advice is not checked\n");
+        return;
+    }
+    fclose(f);
+    {
+        size_t size = 8u << 20;
+        unsigned char *p = mem_alloc(size);
+        uintptr_t lo, hi;
+        int in = 0, flagged = -1;
+        assert_non_null(p);
+        memset(p, 1, size);
+        assert_int_equal(mem_huge_range((uintptr_t)p, size, &a, &n), 1);
+        f = fopen("/proc/self/smaps", "r");
+        assert_non_null(f);
+        while (fgets(line, sizeof line, f)) {
+            unsigned long l, h;
+            if (sscanf(line, "%lx-%lx ", &l, &h) == 2 && strchr(line, '-') < strchr(line, ' ')) {
+                lo = (uintptr_t)l;
+                hi = (uintptr_t)h;
+                in = a >= lo && a < hi;
+            } else if (in && !strncmp(line, "VmFlags:", 8)) {
+                flagged = strstr(line, " hg") != NULL;
+                break;
+            }
+        }
+        fclose(f);
+        mem_free(p);
+        assert_int_equal(flagged, 1);
+    }
 }
 
 /* The first error wins; line/col and offset forms format as documented. */
@@ -265,6 +325,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_util_mem_zero_bytes),
         cmocka_unit_test(test_util_mem_fail_and_overflow),
+        cmocka_unit_test(test_util_mem_huge_pages),
         cmocka_unit_test(test_util_diag_first_error_and_forms),
         cmocka_unit_test(test_util_bvh_covers_every_item_once),
         cmocka_unit_test(test_util_radix_sort_matches_comparator),
