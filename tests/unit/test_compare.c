@@ -8,12 +8,16 @@
 #include <math.h>
 #include <png.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include "compare/compare.h"
 #include "compare/diffpic.h"
 #include "compare/ssim.h"
 #include "compare/imgload.h"
+#ifdef IMAGE_HAVE_JPEG
+#include <jpeglib.h>
+#endif
 #include "image/image_tiff.h"
 #include "image/pnm.h"
 #include "util/mem.h"
@@ -674,6 +678,81 @@ static void test_compare_tiff_layout_limits(void **state)
     image_free(&img);
 }
 
+#ifdef IMAGE_HAVE_JPEG
+/* A progressive 64x64 JPEG from libjpeg with its last scan repeated `extra`
+ * times before the end marker (a valid file, which libjpeg warns of and
+ * reads), written to out (room for cap bytes); returns its length. */
+static size_t jpeg_repeated_scans(unsigned char *out, size_t cap, int extra)
+{
+    struct jpeg_compress_struct c;
+    struct jpeg_error_mgr e;
+    unsigned char *buf = NULL, row[64 * 3];
+    unsigned long len = 0;
+    size_t i, last = 0, n = 0;
+    int k;
+    c.err = jpeg_std_error(&e);
+    jpeg_create_compress(&c);
+    jpeg_mem_dest(&c, &buf, &len);
+    c.image_width = c.image_height = 64;
+    c.input_components = 3;
+    c.in_color_space = JCS_RGB;
+    jpeg_set_defaults(&c);
+    jpeg_simple_progression(&c);
+    jpeg_start_compress(&c, TRUE);
+    for (i = 0; i < 64; i++) {
+        for (k = 0; k < 64 * 3; k++)
+            row[k] = (unsigned char)(i * 4 + (size_t)k);
+        {
+            JSAMPROW r = row;
+            jpeg_write_scanlines(&c, &r, 1);
+        }
+    }
+    jpeg_finish_compress(&c);
+    jpeg_destroy_compress(&c);
+    /* the last start-of-scan marker: its scan runs to the end marker */
+    for (i = 0; i + 1 < len; i++)
+        if (buf[i] == 0xff && buf[i + 1] == 0xda)
+            last = i;
+    assert_true(last > 0 && buf[len - 2] == 0xff && buf[len - 1] == 0xd9);
+    assert_true(len + (size_t)extra * (len - 2 - last) <= cap);
+    memcpy(out, buf, len - 2);
+    n = len - 2;
+    for (k = 0; k < extra; k++, n += len - 2 - last)
+        memcpy(out + n, buf + last, len - 2 - last);
+    out[n++] = 0xff;
+    out[n++] = 0xd9;
+    free(buf);
+    return n;
+}
+#endif
+
+/* A progressive JPEG of more than 500 scans is refused by name; one of
+ * 10 + 400 is read. */
+static void test_compare_jpeg_scan_limit(void **state)
+{
+#ifdef IMAGE_HAVE_JPEG
+    static unsigned char b[1 << 20];
+    image img;
+    diag err;
+    char buf[300];
+    size_t n;
+    (void)state;
+    n = jpeg_repeated_scans(b, sizeof b, 400);
+    diag_init(&err);
+    assert_int_equal(imgload_memory("ok.jpg", b, n, (size_t)1 << 20, &img, &err), 0);
+    assert_int_equal(img.width, 64);
+    image_free(&img);
+    n = jpeg_repeated_scans(b, sizeof b, 600);
+    diag_init(&err);
+    assert_int_equal(imgload_memory("scans.jpg", b, n, (size_t)1 << 20, &img, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "scans.jpg: error: JPEG: more than 500 scans (a progressive JPEG has about 10)");
+#else
+    (void)state;
+    skip();
+#endif
+}
+
 /* Fails each allocation of a registered comparison with both pictures in
  * turn: every failure is a clean DIAG_IO, and the run after succeeds. */
 static void test_compare_oom_sweep(void **state)
@@ -737,6 +816,7 @@ int main(void)
         cmocka_unit_test(test_compare_pnm_errors),
         cmocka_unit_test(test_compare_input_errors),
         cmocka_unit_test(test_compare_tiff_layout_limits),
+        cmocka_unit_test(test_compare_jpeg_scan_limit),
         cmocka_unit_test(test_compare_oom_sweep),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
