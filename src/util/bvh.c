@@ -64,6 +64,14 @@ static int bvh_split(bvh_ctx *x, int first, int count, int depth)
     scale = BVH_BINS / (chi[axis] - clo[axis]);
     if (!(scale < 1e300))                /* a spread too small to bin */
         return count / 2;
+    if (count == 2) {   /* what the bins would give, without them: the lower centre first */
+        int a = x->items[first], b = x->items[first + 1];
+        if (x->cen[b][axis] < x->cen[a][axis]) {
+            x->items[first] = b;
+            x->items[first + 1] = a;
+        }
+        return 1;
+    }
     for (k = 0; k < BVH_BINS; k++) {
         bvh_box_empty(&bin[k]);
         nbin[k] = 0;

@@ -37,8 +37,9 @@ long mem_alloc_count(void) { return alloc_count; }
  * process ask (Linux, `madvise` mode of
  * /sys/kernel/mm/transparent_hugepage/enabled): one fault maps 2 MiB
  * instead of 4 KiB. Each first touch of a page is a fault, which a virtual
- * machine makes dear: the 10,000-object deck took 15,170 of them and 40 ms
- * of system time, against 6,365 and 19 ms with huge pages (docs/performance.md).
+ * machine makes dear: the 10,000-object deck took 15,170 of them and 42 ms
+ * of system time, and about 9,200 and 28 ms with this advice
+ * (docs/performance.md, run I).
  * Only the 2 MiB-aligned interior of a block is advised; the advice is a
  * hint, and its failure changes nothing. */
 
