@@ -228,8 +228,8 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         tc->rs.shadow_skipped += cs->nlights;
         for (li = 0; li < cs->nlights; li++)
             pass[li] = 0;
-    } else if (!far) {
-        vec3_to_d(p, pd);
+    } else {
+        vec3_to_d(p, pd);         /* read by the shadow rays (!far) */
     }
     for (li = 0; lit && li < cs->nlights; li++) {
         vec3 l;
