@@ -51,6 +51,14 @@ static void csg_set_box(csg_node *nd, const csg_bound *b)
     }
 }
 
+/* Marks child kid when its box is exactly parent's (a difference's left
+ * operand always; an intersection's operand that lies within the other). */
+static void csg_mark_same(const csg_node *parent, csg_node *kid)
+{
+    kid->same_box = kid->bounded && !memcmp(kid->lo, parent->lo, sizeof kid->lo)
+                    && !memcmp(kid->hi, parent->hi, sizeof kid->hi);
+}
+
 /* Appends a compiled node; its bound follows from the children. Returns the
  * node index or -1 (error recorded). */
 static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
@@ -133,8 +141,16 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
         nd->bc = x->prims[pi].bc;
         nd->br = x->prims[pi].br;
     }
-    if (b->bounded)
+    if (b->bounded) {
         csg_set_box(nd, b);
+        /* a child with this very box needs no test of its own where it is
+         * asked for the parameters the parent was: the left operand of
+         * every operator, both operands of a union (csg_eval_in) */
+        if (op != CSG_LEAF)
+            csg_mark_same(nd, &x->nodes[l]);
+        if (op == CSG_UNION)
+            csg_mark_same(nd, &x->nodes[r]);
+    }
     return x->n++;
 }
 
@@ -399,21 +415,20 @@ typedef struct csg_query {
 } csg_query;
 
 /* The bounds test of node nd for parameters in [lo, hi]: 1 when the ray
- * misses them. Else 0, *tc the parameter closest to a leaf's bounding
+ * misses them. Else 0 and *tc the parameter closest to a leaf's bounding
  * sphere centre (what its primitive test continues from; 0 for other
- * nodes) and *tin a lower bound of the parameter where the ray enters the
- * bounds (lo for an unbounded node): the key of nearest-first traversal.
- * The box is tested first, in binary64 (culling only); a leaf's sphere
- * then in the mode's arithmetic, for tc. */
-VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, num *tc, double *tin)
+ * nodes). The box is tested first, in binary64 (culling only), unless the
+ * parent's test over the same parameters stands for it (alike and
+ * nd->same_box); a leaf's sphere then in the mode's arithmetic, for tc. */
+VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, int alike, num *tc)
 {
+    int box = !(alike && nd->same_box);
+    double tin;
     *tc = NUM_ZERO;
-    if (!nd->bounded) {
-        *tin = num_to_d(lo);
+    if (!nd->bounded || (!box && nd->op != CSG_LEAF))
         return 0;
-    }
     q->st->bound_tests++;
-    if (bbox_miss(nd->lo, nd->hi, &q->r->b, num_to_d(lo), num_to_d(hi), tin)
+    if ((box && bbox_miss(nd->lo, nd->hi, &q->r->b, num_to_d(lo), num_to_d(hi), &tin))
         || (nd->op == CSG_LEAF && vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, tc))) {
         q->st->pruned++;
         return 1;
@@ -421,15 +436,17 @@ VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, nu
     return 0;
 }
 
-static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out);
+static int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out);
 
 /* Span list of compiled node ni along the ray whose bounds test passed with
  * closest parameter tc, placed at the arena top on entry (nothing is left
  * allocated when it returns 0). Only parameters in [lo, hi] can matter to
  * the caller, so subtrees whose bounds lie outside are skipped; the right
  * operand of a difference or intersection only matters where the left one
- * has spans, which narrows [lo, hi] further. */
-static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, span **out)
+ * has spans, which narrows [lo, hi] further. tested: ni's box passed over
+ * [lo, hi] itself (not only over a wider range), so that children with
+ * the same box need not test it again. */
+static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, int tested, span **out)
 {
     const csg_node *nd = &q->c->nodes[ni];
     size_t mark = arena_mark(q->ar);
@@ -449,7 +466,7 @@ static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, span **out)
         *out = dst;
         return 1;
     }
-    nl = csg_eval(q, nd->left, lo, hi, &l);
+    nl = csg_eval(q, nd->left, lo, hi, tested, &l);
     if (nl == 0 && nd->op != CSG_UNION) {
         q->st->pruned++;          /* the right operand cannot matter */
         return 0;
@@ -458,7 +475,7 @@ static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, span **out)
         rlo = num_max(lo, l[0].a.t);
         rhi = num_min(hi, l[nl - 1].b.t);
     }
-    nr = csg_eval(q, nd->right, rlo, rhi, &r);
+    nr = csg_eval(q, nd->right, rlo, rhi, tested && nd->op == CSG_UNION, &r);
     if (nr == 0) {
         if (nd->op == CSG_INTER) {
             arena_release(q->ar, mark);
@@ -481,19 +498,25 @@ static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, span **out)
     if (n == 0)
         return 0;
     dst = arena_alloc(q->ar, (size_t)n * sizeof *dst);   /* at mark: dst <= tmp */
-    memmove(dst, tmp, (size_t)n * sizeof *dst);
+    if (n <= 2) {                 /* most merges: forward copies, no call */
+        dst[0] = tmp[0];
+        if (n == 2)
+            dst[1] = tmp[1];
+    } else {
+        memmove(dst, tmp, (size_t)n * sizeof *dst);
+    }
     *out = dst;
     return n;
 }
 
-/* csg_eval_in after node ni's own bounds test. */
-static int csg_eval(csg_query *q, int ni, num lo, num hi, span **out)
+/* csg_eval_in after node ni's own bounds test; alike: asked for its
+ * parent's parameters. */
+static int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out)
 {
     num tc;
-    double tin;
-    if (csg_bounds_miss(q, &q->c->nodes[ni], lo, hi, &tc, &tin))
+    if (csg_bounds_miss(q, &q->c->nodes[ni], lo, hi, alike, &tc))
         return 0;
-    return csg_eval_in(q, ni, lo, hi, tc, out);
+    return csg_eval_in(q, ni, lo, hi, tc, 1, out);
 }
 
 /* The first surface crossing of one object's span list s[0..n-1] with
@@ -523,8 +546,9 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
 /* The nearest hit below q->tmax of object k (objects[k], a CSG subtree),
  * whose box the ray meets: a hit found replaces *best (see csg_intersect
  * for ties) and becomes the far end. An object of one primitive first
- * tests its bounding sphere, which gives the primitive test its start. */
-static void csg_object(csg_query *q, int k, csg_hit *best, int *found)
+ * tests its bounding sphere, which gives the primitive test its start.
+ * tested: the object's box passed over [0, q->tmax] as it is now. */
+static void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *found)
 {
     int ni = q->c->objects[k];
     const csg_node *nd = &q->c->nodes[ni];
@@ -543,7 +567,7 @@ static void csg_object(csg_query *q, int k, csg_hit *best, int *found)
     } else {
         size_t mark = arena_mark(q->ar);
         span *s = NULL;
-        int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, &s);
+        int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, tested, &s);
         hit = n > 0 && csg_first(s, n, q->tmax, &h);
         arena_release(q->ar, mark);
     }
@@ -570,9 +594,9 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
     const bvh_node *nodes = c->objtree.nodes;
     size_t n = 0;
     double tin[2];
-    int k = c->objtree.root;
+    int k = c->objtree.root, fresh = 1;   /* k's box passed over [0, q->tmax] */
     for (k = c->nbounded; k < c->nobjects; k++) {
-        csg_object(q, k, best, found);
+        csg_object(q, k, 0, best, found);
         if (q->any && *found)
             return 1;
     }
@@ -597,15 +621,17 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
                 todo[n].kid = nd->kid[!first];
                 todo[n++].tin = tin[!first];
                 k = nd->kid[first];
+                fresh = 1;
                 continue;
             }
             q->st->pruned += 1 + (miss == 3);
             if (miss != 3) {
                 k = nd->kid[miss == 1];
+                fresh = 1;
                 continue;
             }
         } else {
-            csg_object(q, ~k, best, found);
+            csg_object(q, ~k, fresh, best, found);
             if (q->any && *found)
                 return 1;
         }
@@ -615,6 +641,7 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
             n--;
         } while (todo[n].tin > q->tmax_d);
         k = todo[n].kid;
+        fresh = 0;                /* tested over a far end since shrunk */
     }
 }
 

@@ -39,6 +39,8 @@ typedef struct csg_node {
     int left, right;         /* operator operands (compiled node indices) */
     int prim;                /* leaf: primitive index */
     int bounded;
+    int same_box;            /* the box is its parent's, whose test over the
+                                same parameters stands for its own */
     double lo[3], hi[3];     /* bounding box (world), padded by CSG_BOX_PAD */
     vec3 bc;                 /* leaf: the primitive's bounding sphere (world) */
     num br;
