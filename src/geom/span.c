@@ -30,50 +30,60 @@ static inline int span_op(int op, int ina, int inb)
     }
 }
 
-/* Parameter of the next boundary of list l at cursor i with state in. */
-static inline num span_next_t(const span *l, int i, int in)
+/* A list's cursor is the number p of its ends consumed (0 .. 2n): even,
+ * the next end is the entry of span p/2; odd, its exit, and the sweep is
+ * inside that span. */
+static inline const span_end *span_end_at(const span *l, int p)
 {
-    return in ? l[i].b.t : l[i].a.t;
+    return p & 1 ? &l[p >> 1].b : &l[p >> 1].a;
 }
 
-/* Consumes every boundary of list l at parameters up to lim, updating the
- * cursor and state; returns the last consumed end (NULL if none). A span of
- * l shorter than the window is entered and left in one step: it vanishes. */
-static inline const span_end *span_take(const span *l, int n, int *i, int *in, num lim)
+/* Consumes every end of list l (n spans) at parameters up to lim, moving
+ * the cursor *p; returns the last consumed end (NULL if none). A span of l
+ * shorter than the window is entered and left in one step: it vanishes. */
+static inline const span_end *span_take(const span *l, int n, int *p, num lim)
 {
     const span_end *e = NULL;
-    while (*i < n && span_next_t(l, *i, *in) <= lim) {
-        if (*in) {
-            e = &l[*i].b;
-            *in = 0;
-            (*i)++;
-        } else {
-            e = &l[*i].a;
-            *in = 1;
+    int k = *p;
+    /* the first two steps written out: all a list of one span can take,
+     * which the compiler then sees (span_merge's one-against-one sweep) */
+    if (k < 2 * n && span_end_at(l, k)->t <= lim) {
+        e = span_end_at(l, k++);
+        if (k < 2 * n && span_end_at(l, k)->t <= lim) {
+            e = span_end_at(l, k++);
+            while (k < 2 * n && span_end_at(l, k)->t <= lim)
+                e = span_end_at(l, k++);
         }
     }
+    *p = k;
     return e;
 }
 
-int NS(span_merge)(int op, const span *a, int na, const span *b, int nb, span *out)
+/* The sweep, inlined twice by span_merge: once for one span against one
+ * (two convex operands, most merges), where the list lengths are constants
+ * and each take is at most two steps. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int span_sweep(int op, const span *a, int na, const span *b, int nb, span *out)
 {
-    int i = 0, j = 0, ina = 0, inb = 0, inr = 0, n = 0;
-    while (i < na || j < nb) {
+    int pa = 0, pb = 0, inr = 0, n = 0;
+    while (pa < 2 * na || pb < 2 * nb) {
         num t, lim;
         const span_end *ea, *eb, *e;
         int now;
-        if (i >= na)
-            t = span_next_t(b, j, inb);
-        else if (j >= nb)
-            t = span_next_t(a, i, ina);
+        if (pa >= 2 * na)
+            t = span_end_at(b, pb)->t;
+        else if (pb >= 2 * nb)
+            t = span_end_at(a, pa)->t;
         else
-            t = num_min(span_next_t(a, i, ina), span_next_t(b, j, inb));
+            t = num_min(span_end_at(a, pa)->t, span_end_at(b, pb)->t);
         /* boundaries of the two lists closer than the error bound are one
          * boundary (regularised CSG: no slivers thinner than the bound) */
         lim = num_add(t, span_eps(t));
-        ea = span_take(a, na, &i, &ina, lim);
-        eb = span_take(b, nb, &j, &inb, lim);
-        now = span_op(op, ina, inb);
+        ea = span_take(a, na, &pa, lim);
+        eb = span_take(b, nb, &pb, lim);
+        now = span_op(op, pa & 1, pb & 1);
         if (now == inr)
             continue;
         /* Coincident boundaries: keep the lower primitive id (deterministic,
@@ -89,4 +99,11 @@ int NS(span_merge)(int op, const span *a, int na, const span *b, int nb, span *o
         inr = now;
     }
     return n;
+}
+
+int NS(span_merge)(int op, const span *a, int na, const span *b, int nb, span *out)
+{
+    if (na == 1 && nb == 1)
+        return span_sweep(op, a, 1, b, 1, out);
+    return span_sweep(op, a, na, b, nb, out);
 }
