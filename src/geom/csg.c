@@ -318,10 +318,35 @@ static int csg_compile_node(csg_ctx *x, int sn, int depth)
     return res;
 }
 
+/* Records in hull the primitives that contain compiled node ni's solid:
+ * an intersection lies in both operands, a difference in its left one;
+ * a union in neither alone. */
+static void csg_hull(const csg_node *nodes, int ni, int hull[CSG_HULL])
+{
+    const csg_node *nd = &nodes[ni];
+    int k;
+    for (;;) {
+        for (k = 0; k < CSG_HULL && hull[k] >= 0; k++)
+            ;
+        if (k == CSG_HULL)
+            return;               /* full: the rest goes unrecorded */
+        if (nd->op == CSG_LEAF) {
+            hull[k] = nd->prim;
+            return;
+        }
+        if (nd->op == CSG_UNION)
+            return;
+        if (nd->op == CSG_INTER)
+            csg_hull(nodes, nd->right, hull);
+        nd = &nodes[nd->left];
+    }
+}
+
 int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
 {
     csg_ctx x;
-    int *obj = NULL, nb = 0, nu = 0;
+    int *obj = NULL, nb = 0, nu = 0, k;
+    int (*hull)[CSG_HULL] = NULL;
     double (*lo)[3] = NULL, (*hi)[3] = NULL;
     size_t cap, i, peak = 0;
     memset(&x, 0, sizeof x);
@@ -338,9 +363,10 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     x.cap = (int)cap;
     x.nodes = mem_calloc(cap, sizeof *x.nodes);
     obj = mem_calloc(sc->nroots + 1, sizeof *obj);
+    hull = mem_calloc(sc->nroots + 1, sizeof *hull);
     lo = mem_calloc(sc->nroots + 1, sizeof *lo);
     hi = mem_calloc(sc->nroots + 1, sizeof *hi);
-    if (!x.nodes || !obj || !lo || !hi) {
+    if (!x.nodes || !obj || !hull || !lo || !hi) {
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
     }
@@ -366,9 +392,14 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
     }
+    for (k = 0; k < nb + nu; k++) {
+        memset(hull[k], -1, sizeof hull[k]);
+        csg_hull(x.nodes, obj[k], hull[k]);
+    }
     out->nodes = x.nodes;
     out->nnodes = x.n;
     out->objects = obj;
+    out->hull = hull;
     out->nobjects = nb + nu;
     out->nbounded = nb;
     out->peak_spans = peak;
@@ -380,6 +411,7 @@ fail:
     mem_free(x.nodes);
     mem_free(x.bd);
     mem_free(obj);
+    mem_free(hull);
     mem_free(lo);
     mem_free(hi);
     return err->status ? err->status : DIAG_IO;
@@ -389,6 +421,7 @@ void NS(csg_free)(csg *c)
 {
     mem_free(c->nodes);
     mem_free(c->objects);
+    mem_free(c->hull);
     bvh_free(&c->objtree);
     memset(c, 0, sizeof *c);
 }
@@ -543,6 +576,34 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
     return 0;
 }
 
+/* The first crossing (0 < t <= q->tmax) of object k, rooted at the
+ * operator node ni, into *h: 1, or 0 when there is none. tested: as for
+ * csg_object. Out of line, so that csg_object (every query's floor and
+ * one-primitive objects) stays small enough to inline. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int csg_object_tree(csg_query *q, int k, int ni, int tested, csg_hit *h)
+{
+    const int *hull = q->c->hull[k];
+    int leaves = q->r->excl_enter ? -1 : q->r->excl_prim;   /* from its origin */
+    size_t mark;
+    span *s = NULL;
+    int n, hit;
+    /* A ray that leaves a convex primitive holding the whole object is
+     * outside it for every t > 0: its span list would be empty (that
+     * primitive's test gives none, and the intersections and differences
+     * above it then give none), so it is not built. */
+    if (leaves >= 0 && (hull[0] == leaves || hull[1] == leaves || hull[2] == leaves
+                        || hull[3] == leaves))
+        return 0;
+    mark = arena_mark(q->ar);
+    n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, NUM_ZERO, tested, &s);
+    hit = n > 0 && csg_first(s, n, q->tmax, h);
+    arena_release(q->ar, mark);
+    return hit;
+}
+
 /* The nearest hit below q->tmax of object k (objects[k], a CSG subtree),
  * whose box the ray meets: a hit found replaces *best (see csg_intersect
  * for ties) and becomes the far end. An object of one primitive first
@@ -565,11 +626,7 @@ static void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *foun
         hit = NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
               && csg_first(&s, 1, q->tmax, &h);
     } else {
-        size_t mark = arena_mark(q->ar);
-        span *s = NULL;
-        int n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tc, tested, &s);
-        hit = n > 0 && csg_first(s, n, q->tmax, &h);
-        arena_release(q->ar, mark);
+        hit = csg_object_tree(q, k, ni, tested, &h);
     }
     if (hit && (!*found || h.t < best->t
                 || (h.t == best->t && (h.entering > best->entering

@@ -46,11 +46,18 @@ typedef struct csg_node {
     num br;
 } csg_node;
 
+/* Primitives recorded per object that contain it (csg->hull). */
+#define CSG_HULL 4
+
 typedef struct csg {
     csg_node *nodes;
     int nnodes;
     int *objects;            /* each object's compiled root: the bounded ones
                                 (the hierarchy's items) first */
+    int (*hull)[CSG_HULL];   /* per object (as objects[]): up to CSG_HULL
+                                primitives that contain the whole object
+                                (reached from its root through intersections
+                                and left operands of differences), -1 after */
     int nobjects, nbounded;
     bvh objtree;             /* over objects[0 .. nbounded - 1] */
     size_t peak_spans;       /* span storage one query needs at most */

@@ -183,11 +183,71 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
     }
 }
 
+/* The names of the primitives recorded in hull (up to CSG_HULL), sorted
+ * and joined: "A,B". */
+static void cscene_test_hull_names(const scene *sc, const int *hull, char *out, size_t cap)
+{
+    const char *names[CSG_HULL];
+    int n = 0, i, j;
+    for (i = 0; i < CSG_HULL && hull[i] >= 0; i++)
+        names[n++] = sc->prims[hull[i]].name;
+    for (i = 1; i < n; i++)
+        for (j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
+            const char *t = names[j];
+            names[j] = names[j - 1];
+            names[j - 1] = t;
+        }
+    out[0] = 0;
+    for (i = 0; i < n; i++)
+        snprintf(out + strlen(out), cap - strlen(out), "%s%s", i ? "," : "", names[i]);
+}
+
+/* The primitives csg_build records as holding a whole object (the ones a
+ * ray leaving them from its origin cannot find the object behind): both
+ * operands of an intersection, a difference's left operand, none of a
+ * union's; at most CSG_HULL of a long intersection, all of them from it. */
+static void test_cscene_object_hull(void **state)
+{
+    static const char deck[] =
+        "EYE 9 -9 7\nLOOKAT 0 0 0\nLIGHT 0 0 20\n"
+        "BLOCK A 2 2 2 TRANSLATE -1 -1 -1\nSPHERE B 1.3\nCYLINDER C 0.4 3 TRANSLATE 0 0 -1.5\n"
+        "SPHERE D 0.3 TRANSLATE 5 0 0\nSPHERE E 0.3 TRANSLATE 5 1 0\n"
+        "SPHERE F 1 TRANSLATE -5 0 0\nSPHERE G 1 TRANSLATE -5 0.1 0\nSPHERE H 1 TRANSLATE -5 0.2 0\n"
+        "SPHERE J 1 TRANSLATE -5 0.3 0\nSPHERE K 1 TRANSLATE -5 0.4 0\nSPHERE L 1 TRANSLATE -5 0.5 0\n"
+        "INTER I A B\nDIFF P I C\nUNION U D E\nINTER M F G H J K L\nUNION N C P\n"
+        "OBJECT P\nOBJECT U\nOBJECT M\nOBJECT N\n";
+    static const char *const want[4] = {"A,B", "", NULL, ""};
+    scene *sc = tt_parse(deck);
+    cscene *cs = NULL;
+    diag err;
+    int k;
+    (void)state;
+    assert_non_null(sc);
+    diag_init(&err);
+    assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
+    assert_int_equal(cs->tree.nobjects, 4);
+    for (k = 0; k < 4; k++) {
+        char got[64];
+        cscene_test_hull_names(sc, cs->tree.hull[k], got, sizeof got);
+        if (want[k]) {
+            assert_string_equal(got, want[k]);
+        } else {
+            int i;
+            assert_int_equal((int)strlen(got), 4 * 2 - 1);   /* four names */
+            for (i = 0; i < 7; i += 2)
+                assert_non_null(strchr("FGHJKL", got[i]));
+        }
+    }
+    f64_cscene_free(cs);
+    scene_free(sc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cscene_box_from_extreme_corners),
         cmocka_unit_test(test_cscene_bounding_radius_from_all_corners),
+        cmocka_unit_test(test_cscene_object_hull),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
