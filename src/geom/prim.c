@@ -430,15 +430,19 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
     }
     mem_free(sort);
     for (i = 0; i < np; i++) {
-        double *q = prims[pr[i].prim].pl_d[pr[i].k];
+        double *q = prims[pr[i].prim].pl_d[pr[i].k], w[4];
         for (j = i; j-- > 0 && pr[i].key - pr[j].key <= PRIM_SAME_TOL;) {
             const double *r = prims[pr[j].prim].pl_d[pr[j].k];
             int s;
             if (pr[j].prim == pr[i].prim || !(s = prim_plane_same(q, r)))
                 continue;
             for (k = 0; k < 4; k++)
-                q[k] = s * r[k];
-            prim_round_plane(&prims[pr[i].prim], pr[i].k);
+                w[k] = s * r[k];
+            if (memcmp(q, w, sizeof w)) {   /* else already that plane, bit
+                                               for bit: nothing to round */
+                memcpy(q, w, sizeof w);
+                prim_round_plane(&prims[pr[i].prim], pr[i].k);
+            }
             break;
         }
     }
