@@ -171,10 +171,15 @@ $(BUILD)/bench/minimal: bench/peers/minimal.c
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(CFLAGS) -o $@ $< -lm
 
+# The timer of every run of the two races (microseconds of CPU).
+$(BUILD)/bench/cputime: bench/peers/cputime.c
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) -o $@ $<
+
 .PHONY: bench-peers
-bench-peers: deps all $(BUILD)/bench/minimal
-	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal
+bench-peers: deps all $(BUILD)/bench/minimal $(BUILD)/bench/cputime
+	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal $(BUILD)/bench/cputime
 
 .PHONY: bench-grow
-bench-grow: deps-bench all
-	@sh bench/peers/grow.sh $(BIN)
+bench-grow: deps-bench all $(BUILD)/bench/cputime
+	@sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime

@@ -7,8 +7,9 @@
 # primitives). One thread, whole process, medians of N alternated runs
 # (GROW_RUNS, default 3); printed: CPU seconds and each tool's cost over its
 # own cost at one object. The scenes are written here, both from the one
-# list of placements. Usage: sh bench/peers/grow.sh [MAPRT]
+# list of placements. Usage: sh bench/peers/grow.sh [MAPRT [CPUTIME]]
 bin=${1:-build/maprt}
+cputime=${2:-build/bench/cputime}
 runs=${GROW_RUNS:-3}
 size=${GROW_SIZE:-512x384}
 w=${size%x*}; h=${size#*x}
@@ -17,6 +18,7 @@ tmp=$(mktemp -d "${TMPDIR:-/tmp}/maprt-grow-XXXXXX") || exit 3
 trap 'rm -rf "$tmp"' EXIT INT TERM
 command -v povray >/dev/null 2>&1 || { echo "bench-grow: povray (Debian povray) is not installed" >&2; exit 3; }
 . "$dir/lib.sh"
+need_timer
 
 # scenes N: $tmp/gN.scene and $tmp/gN.pov
 scenes() {

@@ -12,7 +12,9 @@
  * Each rendered object (scene root) is a solid of its own: the bounded
  * ones are the items of a hierarchy of boxes (util/bvh.h) walked nearest
  * first, and the nearest surface of any object wins instead of a span
- * merge.
+ * merge. A ray that leaves, from its origin, a primitive that holds its
+ * whole object (the object's hull) cannot meet that object again and does
+ * not classify it.
  * Modal: compiled per numeric mode. */
 #ifndef GEOM_CSG_H
 #define GEOM_CSG_H
