@@ -59,9 +59,10 @@ static inline const span_end *span_take(const span *l, int n, int *p, num lim)
     return e;
 }
 
-/* The sweep, inlined twice by span_merge: once for one span against one
- * (two convex operands, most merges), where the list lengths are constants
- * and each take is at most two steps. */
+/* The sweep, inlined by span_merge for any lengths and, for one span
+ * against one (two convex operands, most merges), once per operator:
+ * there the lengths and the operator are constants, each take is at most
+ * two steps and the membership a fixed expression. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
@@ -103,7 +104,12 @@ static inline int span_sweep(int op, const span *a, int na, const span *b, int n
 
 int NS(span_merge)(int op, const span *a, int na, const span *b, int nb, span *out)
 {
-    if (na == 1 && nb == 1)
-        return span_sweep(op, a, 1, b, 1, out);
+    if (na == 1 && nb == 1) {     /* the operator a constant too */
+        if (op == CSG_UNION)
+            return span_sweep(CSG_UNION, a, 1, b, 1, out);
+        if (op == CSG_INTER)
+            return span_sweep(CSG_INTER, a, 1, b, 1, out);
+        return span_sweep(CSG_DIFF, a, 1, b, 1, out);
+    }
     return span_sweep(op, a, na, b, nb, out);
 }
