@@ -469,36 +469,24 @@ VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, in
     return 0;
 }
 
-static int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out);
+static int csg_eval_in(csg_query *q, int ni, num lo, num hi, int tested, span **out);
+VEC_HOT int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out);
 
-/* Span list of compiled node ni along the ray whose bounds test passed with
- * closest parameter tc, placed at the arena top on entry (nothing is left
- * allocated when it returns 0). Only parameters in [lo, hi] can matter to
+/* Span list of the operator node ni along the ray, whose bounds test
+ * passed, placed at the arena top on entry (nothing is left allocated
+ * when it returns 0). Only parameters in [lo, hi] can matter to
  * the caller, so subtrees whose bounds lie outside are skipped; the right
  * operand of a difference or intersection only matters where the left one
  * has spans, which narrows [lo, hi] further. tested: ni's box passed over
  * [lo, hi] itself (not only over a wider range), so that children with
  * the same box need not test it again. */
-static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, int tested, span **out)
+static int csg_eval_in(csg_query *q, int ni, num lo, num hi, int tested, span **out)
 {
     const csg_node *nd = &q->c->nodes[ni];
     size_t mark = arena_mark(q->ar);
     span *l = NULL, *r = NULL, *tmp, *dst;
     int nl, nr, n;
     num rlo = lo, rhi = hi;
-    if (nd->op == CSG_LEAF) {
-        span s;
-        q->st->prim_tests++;
-        if (!NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s))
-            return 0;
-        if (!(dst = arena_alloc(q->ar, sizeof s))) {
-            q->st->arena_full++;
-            return 0;
-        }
-        *dst = s;
-        *out = dst;
-        return 1;
-    }
     nl = csg_eval(q, nd->left, lo, hi, tested, &l);
     if (nl == 0 && nd->op != CSG_UNION) {
         q->st->pruned++;          /* the right operand cannot matter */
@@ -542,14 +530,28 @@ static int csg_eval_in(csg_query *q, int ni, num lo, num hi, num tc, int tested,
     return n;
 }
 
-/* csg_eval_in after node ni's own bounds test; alike: asked for its
- * parent's parameters. */
-static int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out)
+/* The span list of node ni after its own bounds test (see csg_eval_in);
+ * alike: asked for its parent's parameters. A leaf's one span is found
+ * here, inline in its parent's classification: no call per leaf. */
+VEC_HOT int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out)
 {
+    const csg_node *nd = &q->c->nodes[ni];
+    span s, *dst;
     num tc;
-    if (csg_bounds_miss(q, &q->c->nodes[ni], lo, hi, alike, &tc))
+    if (csg_bounds_miss(q, nd, lo, hi, alike, &tc))
         return 0;
-    return csg_eval_in(q, ni, lo, hi, tc, 1, out);
+    if (nd->op != CSG_LEAF)
+        return csg_eval_in(q, ni, lo, hi, 1, out);
+    q->st->prim_tests++;
+    if (!NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s))
+        return 0;
+    if (!(dst = arena_alloc(q->ar, sizeof s))) {
+        q->st->arena_full++;
+        return 0;
+    }
+    *dst = s;
+    *out = dst;
+    return 1;
 }
 
 /* The first surface crossing of one object's span list s[0..n-1] with
@@ -598,7 +600,7 @@ static int csg_object_tree(csg_query *q, int k, int ni, int tested, csg_hit *h)
                         || hull[3] == leaves))
         return 0;
     mark = arena_mark(q->ar);
-    n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, NUM_ZERO, tested, &s);
+    n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tested, &s);
     hit = n > 0 && csg_first(s, n, q->tmax, h);
     arena_release(q->ar, mark);
     return hit;
