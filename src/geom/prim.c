@@ -212,6 +212,10 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     /* planar faces as world planes in double, rounded once (prim_share may
      * replace them by a coincident plane of another primitive) */
     p.nplanes = ncp;
+    /* prim_round_plane also forms the next plane's code from this one:
+     * until that plane is rounded in its turn, let it read zeros */
+    if (ncp)
+        memset(p.pl, 0, (size_t)ncp * sizeof *p.pl);
     for (i = 0; i < ncp; i++) {
         double n[3], pt[3], len;
         dmath_m3_tmul_v(p.ainv_d, cp[i].n, n);
