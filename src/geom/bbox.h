@@ -80,6 +80,31 @@ static inline int bbox_miss(const double lo[3], const double hi[3], const bbox_r
 #endif
 }
 
+/* A ray prepared for bbox_miss2, once per walk of the object hierarchy:
+ * each axis's origin and reciprocal in both lanes of a register where SSE2
+ * is there, held in a local the compiler can keep in registers. */
+typedef struct bbox_ray2 {
+#if defined(__SSE2__)
+    __m128d o[3], rc[3];
+#else
+    double o[3], rcp[3];
+#endif
+} bbox_ray2;
+
+static inline void bbox_ray2_init(bbox_ray2 *p, const bbox_ray *r)
+{
+    int a;
+    for (a = 0; a < 3; a++) {
+#if defined(__SSE2__)
+        p->o[a] = _mm_set1_pd(r->o[a]);
+        p->rc[a] = _mm_set1_pd(r->rcp[a]);
+#else
+        p->o[a] = r->o[a];
+        p->rcp[a] = r->rcp[a];
+#endif
+    }
+}
+
 /* The test of bbox_miss for two boxes side by side (lo[axis][box]) from
  * parameter 0 to tmax: bit j of the result set when the ray misses box j,
  * else tin[j] its entry parameter. One node of the object hierarchy
@@ -88,16 +113,15 @@ static inline int bbox_miss(const double lo[3], const double hi[3], const bbox_r
  * (GCC 12 at -O2 neither pairs the scalar lanes nor avoids branches in
  * their minima). No lane can hold a NaN: the reciprocals are finite and
  * not zero, the differences finite or infinite. */
-static inline int bbox_miss2(const double lo[3][2], const double hi[3][2], const bbox_ray *r,
+static inline int bbox_miss2(const double lo[3][2], const double hi[3][2], const bbox_ray2 *r,
                              double tmax, double tin[2])
 {
 #if defined(__SSE2__)
     __m128d t0 = _mm_setzero_pd(), t1 = _mm_set1_pd(tmax);
     int a;
     for (a = 0; a < 3; a++) {
-        __m128d o = _mm_set1_pd(r->o[a]), rc = _mm_set1_pd(r->rcp[a]);
-        __m128d u = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(lo[a]), o), rc);
-        __m128d v = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(hi[a]), o), rc);
+        __m128d u = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(lo[a]), r->o[a]), r->rc[a]);
+        __m128d v = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(hi[a]), r->o[a]), r->rc[a]);
         t0 = _mm_max_pd(t0, _mm_min_pd(u, v));
         t1 = _mm_min_pd(t1, _mm_max_pd(u, v));
     }

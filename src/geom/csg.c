@@ -654,6 +654,7 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
     size_t n = 0;
     double tin[2];
     int k = c->objtree.root, fresh = 1;   /* k's box passed over [0, q->tmax] */
+    bbox_ray2 rb;
     for (k = c->nbounded; k < c->nobjects; k++) {
         csg_object(q, k, 0, best, found);
         if (q->any && *found)
@@ -669,11 +670,13 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
             q->st->pruned++;
             return 0;
         }
+    } else {
+        bbox_ray2_init(&rb, &q->r->b);
     }
     for (;;) {
         if (k >= 0) {
             const bvh_node *nd = &nodes[k];
-            int miss = bbox_miss2(nd->lo, nd->hi, &q->r->b, q->tmax_d, tin);
+            int miss = bbox_miss2(nd->lo, nd->hi, &rb, q->tmax_d, tin);
             q->st->bound_tests += 2;
             if (!miss) {
                 int first = tin[1] < tin[0];
