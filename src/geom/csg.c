@@ -436,6 +436,12 @@ size_t NS(csg_arena_bytes)(const csg *c)
 
 /* ---- classification ------------------------------------------------ */
 
+/* Pending subtrees a query keeps on its own stack: a hierarchy less deep
+ * than this needs no arena for them. bvh.h keeps the depth below
+ * BVH_SAH_DEPTH + log2(n) + 1, so every hierarchy of up to 2^15 objects
+ * qualifies; deeper ones take the arena as before. */
+#define CSG_TODO_LOCAL 64
+
 typedef struct csg_query {
     const csg *c;
     const prim *prims;
@@ -713,7 +719,8 @@ static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num
     csg_query q;
     int found = 0;
     size_t mark;
-    csg_todo *todo;
+    csg_todo *todo, local[CSG_TODO_LOCAL];   /* the pending subtrees of most
+                                                 hierarchies: no arena */
     if (c->nobjects == 0)
         return 0;
     q.c = c;
@@ -725,7 +732,9 @@ static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num
     q.ar = ar;
     q.st = st;
     mark = arena_mark(ar);
-    if (!(todo = arena_alloc(ar, (size_t)(c->objtree.depth + 1) * sizeof *todo))) {
+    if (c->objtree.depth < CSG_TODO_LOCAL) {
+        todo = local;
+    } else if (!(todo = arena_alloc(ar, (size_t)(c->objtree.depth + 1) * sizeof *todo))) {
         st->arena_full++;
         return 0;
     }
