@@ -436,12 +436,6 @@ size_t NS(csg_arena_bytes)(const csg *c)
 
 /* ---- classification ------------------------------------------------ */
 
-/* Pending subtrees a query keeps on its own stack: a hierarchy less deep
- * than this needs no arena for them. bvh.h keeps the depth below
- * BVH_SAH_DEPTH + log2(n) + 1, so every hierarchy of up to 2^15 objects
- * qualifies; deeper ones take the arena as before. */
-#define CSG_TODO_LOCAL 64
-
 typedef struct csg_query {
     const csg *c;
     const prim *prims;

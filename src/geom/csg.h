@@ -51,6 +51,12 @@ typedef struct csg_node {
 /* Primitives recorded per object that contain it (csg->hull). */
 #define CSG_HULL 4
 
+/* Pending subtrees a query keeps on its own stack: a hierarchy less deep
+ * than this needs no arena for them. bvh.h keeps the depth below
+ * BVH_SAH_DEPTH + log2(n) + 1, so every hierarchy of up to 2^15 objects
+ * qualifies; a deeper one keeps them in the query's arena. */
+#define CSG_TODO_LOCAL 64
+
 typedef struct csg {
     csg_node *nodes;
     int nnodes;

@@ -155,6 +155,17 @@ static void probe_unbox(void *v)
             }
 }
 
+static int probe_deepen(void *v)
+{
+    probe_cs *p = v;
+    csg *t = &p->cs->tree;
+    int depth = t->objtree.depth;
+    if (depth < CSG_TODO_LOCAL)
+        t->objtree.depth = CSG_TODO_LOCAL;
+    arena_free(&p->ar);                  /* room for the deeper stack */
+    return arena_init(&p->ar, NS(csg_arena_bytes)(t)) ? -1 : depth;
+}
+
 const probe_ops NS(probe_ops) = {
     .name = NUM_NAME,
     .compile = probe_compile,
@@ -164,4 +175,5 @@ const probe_ops NS(probe_ops) = {
     .respawn = probe_respawn,
     .refract = probe_refract,
     .unbox = probe_unbox,
+    .deepen = probe_deepen,
 };

@@ -37,6 +37,11 @@ typedef struct probe_ops {
      * the bounding spheres and the primitives decide what a ray meets: for
      * tests that the boxes (binary64 culling) never change a hit. */
     void (*unbox)(void *cs);
+    /* Marks the object hierarchy at least CSG_TODO_LOCAL deep, so that
+     * queries keep their pending subtrees in the arena, as they do for
+     * hierarchies that deep (csg.c): for tests that both stacks agree.
+     * Returns the hierarchy's real depth, or -1 when memory runs out. */
+    int (*deepen)(void *cs);
 } probe_ops;
 
 extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops,

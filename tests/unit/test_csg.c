@@ -3,8 +3,9 @@
  * block-minus-cylinder case pixel-exact in q16 and f64 (head-on render and
  * oblique rays), normals flipped where a difference exposes the subtracted
  * solid, random trees against a brute-force point classification,
- * sublinear cost for a slab minus N cylinders, malformed trees, and
- * bounding boxes that never change a hit. */
+ * sublinear cost for a slab minus N cylinders, malformed trees,
+ * bounding boxes that never change a hit, and the pending subtrees of a
+ * deep object hierarchy kept in the arena as on the query's own stack. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -530,6 +531,87 @@ static void test_csg_boxes_never_change_a_hit(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* 48 random objects (one solid or two combined) in every mode: a query
+ * keeps the subtrees it has still to visit on its own stack when the
+ * object hierarchy is less than CSG_TODO_LOCAL deep, else in its arena.
+ * No deck small enough for a test makes a hierarchy that deep, so the
+ * second compile is marked that deep (probe deepen) and must give the
+ * same nearest hits, and the same hits of rays spawned from them, bit for
+ * bit. */
+static void test_csg_deep_hierarchy_stack_in_arena(void **state)
+{
+    static const char *const opname[3] = {"UNION", "INTER", "DIFF"};
+    uint64_t s = test_seed("test_csg_deep_hierarchy_stack_in_arena");
+    long rays = 0, hits = 0, respawned = 0, bad = 0;
+    int m, n, i, k;
+    (void)state;
+    for (n = 0; n < 2; n++) {
+        char deck[16384], *p = deck;
+        scene *sc;
+        p += sprintf(p, VIEW);
+        for (i = 0; i < 48; i++) {
+            int two = test_rand(&s) % 2;
+            for (k = 0; k <= two; k++) {
+                char nm[16], solid[64];
+                snprintf(nm, sizeof nm, "P%d%c", i, 'A' + k);
+                snprintf(solid, sizeof solid, csg_solids[test_rand(&s) % 4], nm);
+                p += sprintf(p, "%s -\n  ROTATE AXIS %.6f %.6f %.6f %.4f -\n"
+                             "  SCALE %.5f %.5f %.5f TRANSLATE %.5f %.5f %.5f\n", solid,
+                             test_uniform(&s, -1, 1), test_uniform(&s, -1, 1), test_uniform(&s, 0.1, 1),
+                             test_uniform(&s, 0, 360), test_uniform(&s, 0.2, 0.8), test_uniform(&s, 0.2, 0.8),
+                             test_uniform(&s, 0.2, 0.8), test_uniform(&s, -5, 5), test_uniform(&s, -5, 5),
+                             test_uniform(&s, -5, 5));
+            }
+            if (two)
+                p += sprintf(p, "%s O%d P%dA P%dB\nOBJECT O%d\n", opname[test_rand(&s) % 3], i, i, i, i);
+            else
+                p += sprintf(p, "OBJECT P%dA\n", i);
+        }
+        if (n % 2)
+            p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -6\nOBJECT FLOOR\n");
+        sc = tt_parse(deck);
+        assert_non_null(sc);
+        for (m = 0; m < TT_MODES; m++) {
+            const probe_ops *ops = tt_mode(m);
+            void *own, *deep;
+            diag err;
+            diag_init(&err);
+            assert_int_equal(ops->compile(sc, &own, &err), 0);
+            assert_int_equal(ops->compile(sc, &deep, &err), 0);
+            /* 48 objects: at least 6 levels, so subtrees wait on the stack */
+            assert_true(ops->deepen(deep) >= 6);
+            for (k = 0; k < 300; k++) {
+                double o[3], d[3], d2[3];
+                probe_hit a, b, a2, b2;
+                int ha, hb;
+                csg_random_ray(&s, o, d);
+                tt_random_dir(&s, d2);
+                ha = ops->hit(own, o, d, &a);
+                hb = ops->hit(deep, o, d, &b);
+                rays++;
+                hits += hb;
+                if (ha != hb || (ha && (a.t != b.t || a.prim != b.prim || a.face != b.face
+                                        || a.entering != b.entering))) {
+                    bad++;
+                    continue;
+                }
+                ha = ops->respawn(own, o, d, d2, &a, &a2);
+                hb = ops->respawn(deep, o, d, d2, &b, &b2);
+                respawned += hb > 0;
+                if (ha != hb || (ha > 0 && (a2.t != b2.t || a2.prim != b2.prim || a2.face != b2.face
+                                            || a2.entering != b2.entering)))
+                    bad++;
+            }
+            ops->free(own);
+            ops->free(deep);
+        }
+        scene_free(sc);
+    }
+    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", rays, hits, respawned, bad);
+    assert_true(hits > rays / 4 && respawned > rays / 10);
+    assert_int_equal(bad, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -540,6 +622,7 @@ int main(void)
         cmocka_unit_test(test_csg_slab_cost_sublinear),
         cmocka_unit_test(test_csg_rejects_malformed_tree),
         cmocka_unit_test(test_csg_boxes_never_change_a_hit),
+        cmocka_unit_test(test_csg_deep_hierarchy_stack_in_arena),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
