@@ -64,9 +64,7 @@ int main(int argc, char **argv)
             int sphere = ts < tp;
             unsigned char *q = px + 3 * ((size_t)y * w + x);
             t = sphere ? ts : tp;
-            /* maprt ignores hits beyond 4096 normalised units: the scene's
-             * 9-unit extent maps to 32, so 1152 deck units here */
-            if (t > 1152) {
+            if (t == TMAX) {
                 c = mk(0.2, 0.3, 0.5);
             } else {
                 p = add(eye, mul(d, t));
