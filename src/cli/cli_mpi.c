@@ -454,6 +454,7 @@ int cli_mpi_render(const scene *sc, const render_ops *ops, const render_opts *o,
     int status;
     if (!cli_mpi_on || cli_mpi_n < 2)
         return render_scene(sc, ops, o, fb, st, err);
+    opt.skip_pid = 0;                 /* the bands carry their PIDs to rank 0 */
     if (!opt.width || !opt.height) {
         opt.width = sc->view.width;
         opt.height = sc->view.height;

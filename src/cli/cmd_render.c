@@ -309,6 +309,7 @@ int cmd_render(int argc, char **argv)
         o.progress_ctx = &bar;
     }
     o.ids = out_ids || part_ids;
+    o.skip_pid = !dl_path && !part_path;   /* only those two read PIDs */
     if (cli_mpi_render(sc, ops, &o, &fb, &st, share, &err)) {
         quiet = cli_mpi_rank() != 0;  /* the ranks agreed; rank 0 says why */
         goto done;

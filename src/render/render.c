@@ -195,9 +195,10 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     total.time_compile_s = omp_get_wtime() - t0;
     if ((status = image_alloc(&out.img, opt.width, opt.height, 3, "render", err)) != 0)
         goto done;
-    out.pid = mem_calloc((size_t)opt.width * (size_t)opt.height, sizeof *out.pid);
+    if (!opt.skip_pid)
+        out.pid = mem_calloc((size_t)opt.width * (size_t)opt.height, sizeof *out.pid);
     tcs = mem_calloc((size_t)nthreads, sizeof *tcs);
-    if (!out.pid || !tcs) {
+    if ((!out.pid && !opt.skip_pid) || !tcs) {
         status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory for the framebuffer");
         goto done;
     }

@@ -57,6 +57,10 @@ typedef struct render_opts {
      * outside it are left 0 in the framebuffer (pid 0 too). */
     int region[4];
     int ids;                  /* also fill render_fb.ids */
+    /* Leave render_fb.pid NULL: no output reads it (a picture file only).
+     * The array is 4 bytes a pixel, more than the picture's 3, and writing
+     * it faults in its pages (docs/performance.md, run N). */
+    int skip_pid;
     /* Called (serialised) after each finished tile; may be NULL (and then
      * no tile costs are measured). */
     void (*progress)(void *ctx, const render_progress *p);
@@ -65,7 +69,8 @@ typedef struct render_opts {
 
 typedef struct render_fb {
     image img;                /* RGB8, top row first */
-    int32_t *pid;             /* width*height primitive ids, -1 = background */
+    int32_t *pid;             /* width*height primitive ids, -1 = background
+                                 (NULL with render_opts.skip_pid) */
     idmap ids;                /* with render_opts.ids: primitive, face, region
                                  and distance of the centre sample's hit */
 } render_fb;

@@ -159,7 +159,8 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                 }
                 for (k = 0; k < 3; k++)
                     px[k] = render_ops_byte(sum[k] * rss);
-                fb->pid[at] = pid;
+                if (fb->pid)
+                    fb->pid[at] = pid;
             }
         }
     }

@@ -102,6 +102,8 @@ static void test_render_unlit_attribute_skips_shadow_rays(void **state)
     }
 }
 
+/* fig1 at 3x3 samples on one thread and two: the same counts, picture and
+ * PIDs; and with render_opts.skip_pid, no PIDs and the same picture. */
 static void test_render_counts_and_threads(void **state)
 {
     scene *sc = render_load("scenes/fig1.scene");
@@ -125,6 +127,13 @@ static void test_render_counts_and_threads(void **state)
         assert_int_equal(a.pid[i], b.pid[i]);
         assert_true(a.pid[i] >= -1 && a.pid[i] < (int)sc->nprims);
     }
+    render_fb_free(&b);
+    /* without PIDs: none allocated, the same picture and counts */
+    o.skip_pid = 1;
+    assert_int_equal(render_scene(sc, &q16_render_ops, &o, &b, &sb, &err), 0);
+    assert_null(b.pid);
+    assert_int_equal(tt_image_over(&a.img, &b.img, 0), 0);
+    assert_true(sa.rays_shadow == sb.rays_shadow && sa.rays_reflected == sb.rays_reflected);
     render_fb_free(&a);
     render_fb_free(&b);
     scene_free(sc);
