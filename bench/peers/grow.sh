@@ -6,7 +6,8 @@
 # and lights: n = 1, 3, 10, 32, 100 (1 to 10,000 objects, 5 to 50,000
 # primitives). One thread, whole process, medians of N alternated runs
 # (GROW_RUNS, default 3); printed: CPU seconds and each tool's cost over its
-# own cost at one object. The scenes are written here, both from the one
+# own cost at one object, by the medians and (last three columns) by the
+# minima, the runs a shared machine disturbed least. The scenes are written here, both from the one
 # list of placements. Usage: sh bench/peers/grow.sh [MAPRT [CPUTIME]]
 bin=${1:-build/maprt}
 cputime=${2:-build/bench/cputime}
@@ -36,7 +37,7 @@ scenes() {
     echo "object { Floor }"; } > "$tmp/g$n.pov"
 }
 
-echo "objects,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_growth,f64_growth,pov_growth,pixels_over_8"
+echo "objects,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_growth,f64_growth,pov_growth,pixels_over_8,q16_growth_min,f64_growth_min,pov_growth_min"
 for n in 1 3 10 32 100; do
   scenes "$n"
   povray "+I$tmp/g$n.pov" "+L$dir" "+O$tmp/g.ppm" "+W$w" "+H$h" +WT1 +FP -D "File_Gamma=1.0" Display=off >/dev/null 2>&1 \
@@ -51,6 +52,7 @@ for n in 1 3 10 32 100; do
     i=$((i + 1))
   done
   q=$(med "q$n" 1); f=$(med "f$n" 1); p=$(med "p$n" 1)
-  [ "$n" = 1 ] && { q1=$q; f1=$f; p1=$p; }
-  echo "$((n * n)),$q,$f,$p,$(ratio "$q" "$q1"),$(ratio "$f" "$f1"),$(ratio "$p" "$p1"),$over"
+  ql=$(least "q$n" 1); fl=$(least "f$n" 1); pl=$(least "p$n" 1)
+  [ "$n" = 1 ] && { q1=$q; f1=$f; p1=$p; ql1=$ql; fl1=$fl; pl1=$pl; }
+  echo "$((n * n)),$q,$f,$p,$(ratio "$q" "$q1"),$(ratio "$f" "$f1"),$(ratio "$p" "$p1"),$over,$(ratio "$ql" "$ql1"),$(ratio "$fl" "$fl1"),$(ratio "$pl" "$pl1")"
 done
