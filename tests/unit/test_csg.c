@@ -447,6 +447,70 @@ static void test_csg_rejects_malformed_tree(void **state)
     scene_free(sc);
 }
 
+/* Appends n random objects to a deck at p: each one solid or (two times
+ * in three) two combined by a random operator, under a random rotation, a
+ * non-uniform scale in [0.2, smax] and a translation in [-spread, spread]
+ * on each axis. Returns the deck's new end. */
+static char *csg_random_objects(char *p, uint64_t *s, int n, double smax, double spread)
+{
+    static const char *const opname[3] = {"UNION", "INTER", "DIFF"};
+    int i, k;
+    for (i = 0; i < n; i++) {
+        int two = test_rand(s) % 3 != 0;
+        for (k = 0; k <= two; k++) {
+            char nm[16], solid[64];
+            snprintf(nm, sizeof nm, "P%d%c", i, 'A' + k);
+            snprintf(solid, sizeof solid, csg_solids[test_rand(s) % 4], nm);
+            p += sprintf(p, "%s -\n  ROTATE AXIS %.6f %.6f %.6f %.4f -\n"
+                         "  SCALE %.5f %.5f %.5f TRANSLATE %.5f %.5f %.5f\n", solid,
+                         test_uniform(s, -1, 1), test_uniform(s, -1, 1), test_uniform(s, 0.1, 1),
+                         test_uniform(s, 0, 360), test_uniform(s, 0.2, smax), test_uniform(s, 0.2, smax),
+                         test_uniform(s, 0.2, smax), test_uniform(s, -spread, spread),
+                         test_uniform(s, -spread, spread), test_uniform(s, -spread, spread));
+        }
+        if (two)
+            p += sprintf(p, "%s O%d P%dA P%dB\nOBJECT O%d\n", opname[test_rand(s) % 3], i, i, i, i);
+        else
+            p += sprintf(p, "OBJECT P%dA\n", i);
+    }
+    return p;
+}
+
+/* Two compiles a and b of one scene in one mode, asked the same questions:
+ * the nearest hit of nrays random rays (every fourth from 400 units away
+ * when far), and the nearest hit of a ray spawned from that hit in a
+ * random direction. Adds to n[0] the rays, n[1] b's hits, n[2] b's hits
+ * of spawned rays, n[3] the rays where a and b answer differently. */
+static void csg_same_hits(const probe_ops *ops, void *a, void *b, uint64_t *s, int nrays, int far, long n[4])
+{
+    int i, k;
+    for (k = 0; k < nrays; k++) {
+        double o[3], d[3], d2[3];
+        probe_hit ha, hb, ha2, hb2;
+        int ra, rb;
+        csg_random_ray(s, o, d);
+        if (far && k % 4 == 0)             /* a far origin: coarse float points */
+            for (i = 0; i < 3; i++)
+                o[i] -= 400 * d[i];
+        tt_random_dir(s, d2);
+        ra = ops->hit(a, o, d, &ha);
+        rb = ops->hit(b, o, d, &hb);
+        n[0]++;
+        n[1] += rb;
+        if (ra != rb || (ra && (ha.t != hb.t || ha.prim != hb.prim || ha.face != hb.face
+                                || ha.entering != hb.entering))) {
+            n[3]++;
+            continue;
+        }
+        ra = ops->respawn(a, o, d, d2, &ha, &ha2);
+        rb = ops->respawn(b, o, d, d2, &hb, &hb2);
+        n[2] += rb > 0;
+        if (ra != rb || (ra > 0 && (ha2.t != hb2.t || ha2.prim != hb2.prim || ha2.face != hb2.face
+                                    || ha2.entering != hb2.entering)))
+            n[3]++;
+    }
+}
+
 /* Random objects (one solid, or two combined by a random operator, each
  * placed by a random rotation, non-uniform scale and translation, half the
  * scenes on a floor) and random rays, a quarter of them from 400 units
@@ -457,34 +521,16 @@ static void test_csg_rejects_malformed_tree(void **state)
  * claim that they only cull. */
 static void test_csg_boxes_never_change_a_hit(void **state)
 {
-    static const char *const opname[3] = {"UNION", "INTER", "DIFF"};
     uint64_t s = test_seed("test_csg_boxes_never_change_a_hit");
-    long rays = 0, hits = 0, respawned = 0, bad = 0;
-    int m, n, i, k;
+    long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
+    int m, k;
     (void)state;
-    for (n = 0; n < 8; n++) {
+    for (k = 0; k < 8; k++) {
         char deck[8192], *p = deck;
         scene *sc;
         p += sprintf(p, VIEW);
-        for (i = 0; i < 6; i++) {
-            int two = test_rand(&s) % 3 != 0;
-            for (k = 0; k <= two; k++) {
-                char nm[16], solid[64];
-                snprintf(nm, sizeof nm, "P%d%c", i, 'A' + k);
-                snprintf(solid, sizeof solid, csg_solids[test_rand(&s) % 4], nm);
-                p += sprintf(p, "%s -\n  ROTATE AXIS %.6f %.6f %.6f %.4f -\n"
-                             "  SCALE %.5f %.5f %.5f TRANSLATE %.5f %.5f %.5f\n", solid,
-                             test_uniform(&s, -1, 1), test_uniform(&s, -1, 1), test_uniform(&s, 0.1, 1),
-                             test_uniform(&s, 0, 360), test_uniform(&s, 0.2, 2.5), test_uniform(&s, 0.2, 2.5),
-                             test_uniform(&s, 0.2, 2.5), test_uniform(&s, -4, 4), test_uniform(&s, -4, 4),
-                             test_uniform(&s, -4, 4));
-            }
-            if (two)
-                p += sprintf(p, "%s O%d P%dA P%dB\nOBJECT O%d\n", opname[test_rand(&s) % 3], i, i, i, i);
-            else
-                p += sprintf(p, "OBJECT P%dA\n", i);
-        }
-        if (n % 2)
+        p = csg_random_objects(p, &s, 6, 2.5, 4);
+        if (k % 2)
             p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -3\nOBJECT FLOOR\n");
         sc = tt_parse(deck);
         assert_non_null(sc);
@@ -496,78 +542,36 @@ static void test_csg_boxes_never_change_a_hit(void **state)
             assert_int_equal(ops->compile(sc, &boxed, &err), 0);
             assert_int_equal(ops->compile(sc, &unboxed, &err), 0);
             ops->unbox(unboxed);
-            for (k = 0; k < 250; k++) {
-                double o[3], d[3], d2[3];
-                probe_hit a, b, a2, b2;
-                int ha, hb;
-                csg_random_ray(&s, o, d);
-                if (k % 4 == 0)                /* a far origin: coarse float points */
-                    for (i = 0; i < 3; i++)
-                        o[i] -= 400 * d[i];
-                tt_random_dir(&s, d2);
-                ha = ops->hit(boxed, o, d, &a);
-                hb = ops->hit(unboxed, o, d, &b);
-                rays++;
-                hits += hb;
-                if (ha != hb || (ha && (a.t != b.t || a.prim != b.prim || a.face != b.face
-                                        || a.entering != b.entering))) {
-                    bad++;
-                    continue;
-                }
-                ha = ops->respawn(boxed, o, d, d2, &a, &a2);
-                hb = ops->respawn(unboxed, o, d, d2, &b, &b2);
-                respawned += hb > 0;
-                if (ha != hb || (ha > 0 && (a2.t != b2.t || a2.prim != b2.prim || a2.face != b2.face
-                                            || a2.entering != b2.entering)))
-                    bad++;
-            }
+            csg_same_hits(ops, boxed, unboxed, &s, 250, 1, n);
             ops->free(boxed);
             ops->free(unboxed);
         }
         scene_free(sc);
     }
-    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", rays, hits, respawned, bad);
-    assert_true(hits > rays / 4 && respawned > rays / 10);
-    assert_int_equal(bad, 0);
+    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", n[0], n[1], n[2], n[3]);
+    assert_true(n[1] > n[0] / 4 && n[2] > n[0] / 10);
+    assert_int_equal(n[3], 0);
 }
 
-/* 48 random objects (one solid or two combined) in every mode: a query
- * keeps the subtrees it has still to visit on its own stack when the
- * object hierarchy is less than CSG_TODO_LOCAL deep, else in its arena.
- * No deck small enough for a test makes a hierarchy that deep, so the
- * second compile is marked that deep (probe deepen) and must give the
- * same nearest hits, and the same hits of rays spawned from them, bit for
- * bit. */
+/* 48 random objects (as above) in every mode: a query keeps the subtrees
+ * it has still to visit on its own stack when the object hierarchy is
+ * less than CSG_TODO_LOCAL deep, else in its arena. No deck small enough
+ * for a test makes a hierarchy that deep, so the second compile is marked
+ * that deep (probe deepen) and must give the same nearest hits, and the
+ * same hits of rays spawned from them, bit for bit. */
 static void test_csg_deep_hierarchy_stack_in_arena(void **state)
 {
-    static const char *const opname[3] = {"UNION", "INTER", "DIFF"};
     uint64_t s = test_seed("test_csg_deep_hierarchy_stack_in_arena");
-    long rays = 0, hits = 0, respawned = 0, bad = 0;
-    int m, n, i, k;
+    long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
+    int m, k;
     (void)state;
-    for (n = 0; n < 2; n++) {
-        char deck[16384], *p = deck;
+    for (k = 0; k < 2; k++) {
+        static char deck[24576];
+        char *p = deck;
         scene *sc;
         p += sprintf(p, VIEW);
-        for (i = 0; i < 48; i++) {
-            int two = test_rand(&s) % 2;
-            for (k = 0; k <= two; k++) {
-                char nm[16], solid[64];
-                snprintf(nm, sizeof nm, "P%d%c", i, 'A' + k);
-                snprintf(solid, sizeof solid, csg_solids[test_rand(&s) % 4], nm);
-                p += sprintf(p, "%s -\n  ROTATE AXIS %.6f %.6f %.6f %.4f -\n"
-                             "  SCALE %.5f %.5f %.5f TRANSLATE %.5f %.5f %.5f\n", solid,
-                             test_uniform(&s, -1, 1), test_uniform(&s, -1, 1), test_uniform(&s, 0.1, 1),
-                             test_uniform(&s, 0, 360), test_uniform(&s, 0.2, 0.8), test_uniform(&s, 0.2, 0.8),
-                             test_uniform(&s, 0.2, 0.8), test_uniform(&s, -5, 5), test_uniform(&s, -5, 5),
-                             test_uniform(&s, -5, 5));
-            }
-            if (two)
-                p += sprintf(p, "%s O%d P%dA P%dB\nOBJECT O%d\n", opname[test_rand(&s) % 3], i, i, i, i);
-            else
-                p += sprintf(p, "OBJECT P%dA\n", i);
-        }
-        if (n % 2)
+        p = csg_random_objects(p, &s, 48, 0.8, 5);
+        if (k % 2)
             p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -6\nOBJECT FLOOR\n");
         sc = tt_parse(deck);
         assert_non_null(sc);
@@ -580,36 +584,15 @@ static void test_csg_deep_hierarchy_stack_in_arena(void **state)
             assert_int_equal(ops->compile(sc, &deep, &err), 0);
             /* 48 objects: at least 6 levels, so subtrees wait on the stack */
             assert_true(ops->deepen(deep) >= 6);
-            for (k = 0; k < 300; k++) {
-                double o[3], d[3], d2[3];
-                probe_hit a, b, a2, b2;
-                int ha, hb;
-                csg_random_ray(&s, o, d);
-                tt_random_dir(&s, d2);
-                ha = ops->hit(own, o, d, &a);
-                hb = ops->hit(deep, o, d, &b);
-                rays++;
-                hits += hb;
-                if (ha != hb || (ha && (a.t != b.t || a.prim != b.prim || a.face != b.face
-                                        || a.entering != b.entering))) {
-                    bad++;
-                    continue;
-                }
-                ha = ops->respawn(own, o, d, d2, &a, &a2);
-                hb = ops->respawn(deep, o, d, d2, &b, &b2);
-                respawned += hb > 0;
-                if (ha != hb || (ha > 0 && (a2.t != b2.t || a2.prim != b2.prim || a2.face != b2.face
-                                            || a2.entering != b2.entering)))
-                    bad++;
-            }
+            csg_same_hits(ops, own, deep, &s, 300, 0, n);
             ops->free(own);
             ops->free(deep);
         }
         scene_free(sc);
     }
-    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", rays, hits, respawned, bad);
-    assert_true(hits > rays / 4 && respawned > rays / 10);
-    assert_int_equal(bad, 0);
+    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", n[0], n[1], n[2], n[3]);
+    assert_true(n[1] > n[0] / 4 && n[2] > n[0] / 10);
+    assert_int_equal(n[3], 0);
 }
 
 int main(void)
