@@ -511,6 +511,31 @@ static void csg_same_hits(const probe_ops *ops, void *a, void *b, uint64_t *s, i
     }
 }
 
+/* Compiles sc twice in every mode, alters the second compile (alter) and
+ * asks both the questions of csg_same_hits, adding to n[0..3]. */
+static void csg_altered_hits(const scene *sc, void (*alter)(const probe_ops *ops, void *cs), uint64_t *s,
+                             int nrays, int far, long n[4])
+{
+    int m;
+    for (m = 0; m < TT_MODES; m++) {
+        const probe_ops *ops = tt_mode(m);
+        void *a, *b;
+        diag err;
+        diag_init(&err);
+        assert_int_equal(ops->compile(sc, &a, &err), 0);
+        assert_int_equal(ops->compile(sc, &b, &err), 0);
+        alter(ops, b);
+        csg_same_hits(ops, a, b, s, nrays, far, n);
+        ops->free(a);
+        ops->free(b);
+    }
+}
+
+static void csg_unbox(const probe_ops *ops, void *cs) { ops->unbox(cs); }
+
+/* 48 objects give at least 6 levels, so subtrees wait on the stack. */
+static void csg_deepen(const probe_ops *ops, void *cs) { assert_true(ops->deepen(cs) >= 6); }
+
 /* Random objects (one solid, or two combined by a random operator, each
  * placed by a random rotation, non-uniform scale and translation, half the
  * scenes on a floor) and random rays, a quarter of them from 400 units
@@ -523,7 +548,7 @@ static void test_csg_boxes_never_change_a_hit(void **state)
 {
     uint64_t s = test_seed("test_csg_boxes_never_change_a_hit");
     long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
-    int m, k;
+    int k;
     (void)state;
     for (k = 0; k < 8; k++) {
         char deck[8192], *p = deck;
@@ -531,21 +556,10 @@ static void test_csg_boxes_never_change_a_hit(void **state)
         p += sprintf(p, VIEW);
         p = csg_random_objects(p, &s, 6, 2.5, 4);
         if (k % 2)
-            p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -3\nOBJECT FLOOR\n");
+            sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -3\nOBJECT FLOOR\n");
         sc = tt_parse(deck);
         assert_non_null(sc);
-        for (m = 0; m < TT_MODES; m++) {
-            const probe_ops *ops = tt_mode(m);
-            void *boxed, *unboxed;
-            diag err;
-            diag_init(&err);
-            assert_int_equal(ops->compile(sc, &boxed, &err), 0);
-            assert_int_equal(ops->compile(sc, &unboxed, &err), 0);
-            ops->unbox(unboxed);
-            csg_same_hits(ops, boxed, unboxed, &s, 250, 1, n);
-            ops->free(boxed);
-            ops->free(unboxed);
-        }
+        csg_altered_hits(sc, csg_unbox, &s, 250, 1, n);
         scene_free(sc);
     }
     print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", n[0], n[1], n[2], n[3]);
@@ -561,33 +575,21 @@ static void test_csg_boxes_never_change_a_hit(void **state)
  * same hits of rays spawned from them, bit for bit. */
 static void test_csg_deep_hierarchy_stack_in_arena(void **state)
 {
+    static char deck[24576];
     uint64_t s = test_seed("test_csg_deep_hierarchy_stack_in_arena");
     long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
-    int m, k;
+    int k;
     (void)state;
     for (k = 0; k < 2; k++) {
-        static char deck[24576];
         char *p = deck;
         scene *sc;
         p += sprintf(p, VIEW);
         p = csg_random_objects(p, &s, 48, 0.8, 5);
         if (k % 2)
-            p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -6\nOBJECT FLOOR\n");
+            sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -6\nOBJECT FLOOR\n");
         sc = tt_parse(deck);
         assert_non_null(sc);
-        for (m = 0; m < TT_MODES; m++) {
-            const probe_ops *ops = tt_mode(m);
-            void *own, *deep;
-            diag err;
-            diag_init(&err);
-            assert_int_equal(ops->compile(sc, &own, &err), 0);
-            assert_int_equal(ops->compile(sc, &deep, &err), 0);
-            /* 48 objects: at least 6 levels, so subtrees wait on the stack */
-            assert_true(ops->deepen(deep) >= 6);
-            csg_same_hits(ops, own, deep, &s, 300, 0, n);
-            ops->free(own);
-            ops->free(deep);
-        }
+        csg_altered_hits(sc, csg_deepen, &s, 300, 0, n);
         scene_free(sc);
     }
     print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", n[0], n[1], n[2], n[3]);
