@@ -531,6 +531,32 @@ static void csg_altered_hits(const scene *sc, void (*alter)(const probe_ops *ops
     }
 }
 
+/* A deck of n random objects (csg_random_objects) written into deck
+ * (size bytes), on a floor at z = floor_z when floor is set; parsed. */
+static scene *csg_random_scene(char *deck, size_t size, uint64_t *s, int n, double smax, double spread,
+                               int floor, double floor_z)
+{
+    char *p = deck;
+    scene *sc;
+    p += sprintf(p, VIEW);
+    p = csg_random_objects(p, s, n, smax, spread);
+    if (floor)
+        p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 %g\nOBJECT FLOOR\n", floor_z);
+    assert_true((size_t)(p - deck) < size);
+    sc = tt_parse(deck);
+    assert_non_null(sc);
+    return sc;
+}
+
+/* The counts of csg_same_hits: printed, enough hits to mean something
+ * (a quarter of the rays, a tenth spawning a hit), and none differing. */
+static void csg_assert_same(const long n[4])
+{
+    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", n[0], n[1], n[2], n[3]);
+    assert_true(n[1] > n[0] / 4 && n[2] > n[0] / 10);
+    assert_int_equal(n[3], 0);
+}
+
 static void csg_unbox(const probe_ops *ops, void *cs) { ops->unbox(cs); }
 
 /* 48 objects give at least 6 levels, so subtrees wait on the stack. */
@@ -551,20 +577,12 @@ static void test_csg_boxes_never_change_a_hit(void **state)
     int k;
     (void)state;
     for (k = 0; k < 8; k++) {
-        char deck[8192], *p = deck;
-        scene *sc;
-        p += sprintf(p, VIEW);
-        p = csg_random_objects(p, &s, 6, 2.5, 4);
-        if (k % 2)
-            sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -3\nOBJECT FLOOR\n");
-        sc = tt_parse(deck);
-        assert_non_null(sc);
+        char deck[8192];
+        scene *sc = csg_random_scene(deck, sizeof deck, &s, 6, 2.5, 4, k % 2, -3);
         csg_altered_hits(sc, csg_unbox, &s, 250, 1, n);
         scene_free(sc);
     }
-    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", n[0], n[1], n[2], n[3]);
-    assert_true(n[1] > n[0] / 4 && n[2] > n[0] / 10);
-    assert_int_equal(n[3], 0);
+    csg_assert_same(n);
 }
 
 /* 48 random objects (as above) in every mode: a query keeps the subtrees
@@ -581,20 +599,11 @@ static void test_csg_deep_hierarchy_stack_in_arena(void **state)
     int k;
     (void)state;
     for (k = 0; k < 2; k++) {
-        char *p = deck;
-        scene *sc;
-        p += sprintf(p, VIEW);
-        p = csg_random_objects(p, &s, 48, 0.8, 5);
-        if (k % 2)
-            sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -6\nOBJECT FLOOR\n");
-        sc = tt_parse(deck);
-        assert_non_null(sc);
+        scene *sc = csg_random_scene(deck, sizeof deck, &s, 48, 0.8, 5, k % 2, -6);
         csg_altered_hits(sc, csg_deepen, &s, 300, 0, n);
         scene_free(sc);
     }
-    print_message("# %ld rays, %ld hits, %ld spawned rays hit, %ld differ\n", n[0], n[1], n[2], n[3]);
-    assert_true(n[1] > n[0] / 4 && n[2] > n[0] / 10);
-    assert_int_equal(n[3], 0);
+    csg_assert_same(n);
 }
 
 int main(void)
