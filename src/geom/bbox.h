@@ -28,14 +28,20 @@ typedef struct bbox_ray {
 
 #define BBOX_RCP_ZERO 1e300
 
+/* The reciprocal of direction component d. Tiny components (binary64 can
+ * hold them) count as zero: their reciprocals would overflow. */
+static inline double bbox_rcp(double d)
+{
+    double r = 1 / d, z = d < 0 ? -BBOX_RCP_ZERO : BBOX_RCP_ZERO;
+    return (d > 1e-290) | (d < -1e-290) ? r : z;
+}
+
 static inline void bbox_ray_init(bbox_ray *b, const double o[3], const double d[3])
 {
     int i;
     for (i = 0; i < 3; i++) {
         b->o[i] = o[i];
-        /* tiny components (binary64 can hold them) count as zero: their
-         * reciprocals would overflow */
-        b->rcp[i] = d[i] > 1e-290 || d[i] < -1e-290 ? 1 / d[i] : d[i] < 0 ? -BBOX_RCP_ZERO : BBOX_RCP_ZERO;
+        b->rcp[i] = bbox_rcp(d[i]);
     }
 }
 

@@ -12,6 +12,9 @@
  *                                saturates and counts overflows, see fx.h)
  *   num_from_d(double) num_to_d(num) num_from_i(int)   conversions
  *   NUM_IS_FIXED                 1 for q16/q32, 0 for f32/f64/hfp32/hfp64
+ *   NUM_IS_NATIVE                1 for f32/f64 (a num is the machine's own
+ *                                binary float: a conversion from double is
+ *                                one instruction, which a loop can vectorise)
  *   NUM_NAME                     "q16" | "q32" | "f32" | "f64" | "hfp32" | "hfp64"
  *   NS(name)                     mode-prefixed symbol: NS(trace) -> q16_trace
  * Mode-independent code reaches modal code only through per-mode ops tables

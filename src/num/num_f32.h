@@ -7,6 +7,7 @@
 typedef float num;
 #define NUM_NAME "f32"
 #define NUM_IS_FIXED 0
+#define NUM_IS_NATIVE 1
 #define NUM_ZERO 0.0f
 #define NUM_ONE  1.0f
 #define NUM_HALF 0.5f

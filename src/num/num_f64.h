@@ -7,6 +7,7 @@
 typedef double num;
 #define NUM_NAME "f64"
 #define NUM_IS_FIXED 0
+#define NUM_IS_NATIVE 1
 #define NUM_ZERO 0.0
 #define NUM_ONE  1.0
 #define NUM_HALF 0.5

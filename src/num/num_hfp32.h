@@ -13,6 +13,7 @@
 typedef int32_t num;
 #define NUM_NAME "hfp32"
 #define NUM_IS_FIXED 0
+#define NUM_IS_NATIVE 0
 #define NUM_ZERO ((num)0)
 #define NUM_ONE  ((num)0x41100000)     /* 0.1 x 16^1 */
 #define NUM_HALF ((num)0x40800000)     /* 0.8 x 16^0 */

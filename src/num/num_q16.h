@@ -6,6 +6,7 @@
 typedef fx16 num;
 #define NUM_NAME "q16"
 #define NUM_IS_FIXED 1
+#define NUM_IS_NATIVE 0
 #define NUM_ZERO ((num)0)
 #define NUM_ONE  FX16_ONE
 #define NUM_HALF ((num)32768)

@@ -6,6 +6,7 @@
 typedef fx32 num;
 #define NUM_NAME "q32"
 #define NUM_IS_FIXED 1
+#define NUM_IS_NATIVE 0
 #define NUM_ZERO ((num)0)
 #define NUM_ONE  FX32_ONE
 #define NUM_HALF ((num)1 << 31)

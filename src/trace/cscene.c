@@ -3,6 +3,7 @@
 #include "util/dmath.h"
 #include "model/scene_map.h"
 #include "util/mem.h"
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -270,51 +271,93 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
     return 0;
 }
 
-int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray *r, double *t0)
+void NS(cscene_primary_batch)(const cscene *cs, cscene_batch *b, int n, double after)
 {
-    const double margin = 1;
-    double t = HUGE_VAL, o[3], n2;
-    vec3 org;
+    const double margin = 1, r2 = cs->bound_r * cs->bound_r;
     size_t k;
-    int i;
+    double norm2[CSCENE_BATCH];
+    int m;
+    /* the loops run over lanes, branch-free within, so that they vectorise;
+     * a lane's arithmetic is the same operations in the same order as one
+     * ray's would be */
+    for (m = 0; m < n; m++) {
+        double x = b->d[0][m], y = b->d[1][m], z = b->d[2][m], l = sqrt(x * x + y * y + z * z);
+        b->u[0][m] = x / l;
+        b->u[1][m] = y / l;
+        b->u[2][m] = z / l;
+        b->st[m] = l > 0 && l <= DBL_MAX ? CSCENE_RAY : CSCENE_BAD;
+    }
     if (!cs->advance) {
-        t = after > 0 ? HUGE_VAL : margin;
-    } else {
-        if (cs->bound_r > 0 && after <= 0) {
-            double tc = -dmath_dot3(cs->eye, u), r2 = cs->bound_r * cs->bound_r;
-            double h2 = r2 - (cs->eye2 - tc * tc);
-            if (cs->eye2 <= r2)
-                t = 0;                       /* the eye is inside the sphere */
-            else if (h2 >= 0 && tc > 0)
-                t = tc - sqrt(h2);
+        for (m = 0; m < n; m++)
+            b->t0[m] = after > 0 ? HUGE_VAL : margin;
+    } else if (cs->bound_r > 0 && after <= 0 && cs->eye2 <= r2) {
+        for (m = 0; m < n; m++)
+            b->t0[m] = 0;                    /* the eye is inside the sphere */
+    } else if (cs->bound_r > 0 && after <= 0) {
+        for (m = 0; m < n; m++) {
+            double tc = -(cs->eye[0] * b->u[0][m] + cs->eye[1] * b->u[1][m] + cs->eye[2] * b->u[2][m]);
+            double h2 = r2 - (cs->eye2 - tc * tc), t = tc - sqrt(h2);
+            b->t0[m] = (h2 >= 0) & (tc > 0) ? t : HUGE_VAL;
         }
-        for (k = 0; k < cs->nplanes; k++) {
-            double den = dmath_dot3(cs->planes[k], u), th;
-            if (den == 0)
-                continue;
-            th = cs->plane_gap[k] / den;
-            if (th > after && th < t)
-                t = th;
+    } else {
+        for (m = 0; m < n; m++)
+            b->t0[m] = HUGE_VAL;
+    }
+    for (k = 0; cs->advance && k < cs->nplanes; k++) {
+        const double *pl = cs->planes[k], gap = cs->plane_gap[k];
+        for (m = 0; m < n; m++) {
+            double den = pl[0] * b->u[0][m] + pl[1] * b->u[1][m] + pl[2] * b->u[2][m], th = gap / den;
+            b->t0[m] = (den != 0) & (th > after) & (th < b->t0[m]) ? th : b->t0[m];
         }
     }
-    if (t == HUGE_VAL)
-        return 0;
-    t = t - margin > after ? t - margin : after;
-    *t0 = t;
-    if (t == 0 && cs->eye_ok) {
-        org = cs->eye_n;
-    } else {
+    for (m = 0; m < n; m++)
+        b->st[m] = b->st[m] == CSCENE_BAD ? CSCENE_BAD : b->t0[m] == HUGE_VAL ? CSCENE_NONE : CSCENE_RAY;
+    for (m = 0; m < n; m++) {
+        double t = b->t0[m], x, y, z, n2;
+        t = t - margin > after ? t - margin : after;
+        x = cs->eye[0] + t * b->u[0][m];
+        y = cs->eye[1] + t * b->u[1][m];
+        z = cs->eye[2] + t * b->u[2][m];
+        n2 = x * x + y * y + z * z;
+        b->t0[m] = t;
+        b->o[0][m] = x;
+        b->o[1][m] = y;
+        b->o[2][m] = z;
+        norm2[m] = n2;
+    }
+    /* a start at the eye is in range (eye_ok); elsewhere only one that may
+     * lie beyond the range takes a square root */
+    for (m = 0; m < n; m++)
+        if (norm2[m] >= cs->orig_in2 && b->st[m] == CSCENE_RAY && !(b->t0[m] == 0 && cs->eye_ok)
+            && sqrt(norm2[m]) > cs->orig_max)
+            b->st[m] = CSCENE_CUT;
+#if NUM_IS_NATIVE
+    {   /* the box test's reciprocals of the direction as the ray holds it
+         * (num, converted back to binary64); other modes convert in
+         * cscene_primary_ray, once */
+        int i;
         for (i = 0; i < 3; i++)
-            o[i] = cs->eye[i] + t * u[i];
-        n2 = dmath_norm2_3(o);
-        if (n2 >= cs->orig_in2 && sqrt(n2) > cs->orig_max)
-            return -1;
-        org = vec3_from_d(o);
+            for (m = 0; m < n; m++)
+                b->rcp[i][m] = bbox_rcp(num_to_d(num_from_d(b->u[i][m])));
     }
+#endif
+}
+
+void NS(cscene_primary_ray)(const cscene *cs, const cscene_batch *b, int k, prim_ray *r)
+{
+    double d[3];
+    int i;
     /* u is a unit vector in double: rounding each component keeps it unit
      * to the mode's resolution, as a normalisation in num would */
-    prim_ray_set(r, org, vec3_from_d(u), -1, 0);
-    return 1;
+    r->d = vec3_make(num_from_d(b->u[0][k]), num_from_d(b->u[1][k]), num_from_d(b->u[2][k]));
+    r->o = b->t0[k] == 0 && cs->eye_ok ? cs->eye_n
+           : vec3_make(num_from_d(b->o[0][k]), num_from_d(b->o[1][k]), num_from_d(b->o[2][k]));
+    vec3_to_d(r->o, r->b.o);
+    vec3_to_d(r->d, d);
+    for (i = 0; i < 3; i++)
+        r->b.rcp[i] = NUM_IS_NATIVE ? b->rcp[i][k] : bbox_rcp(d[i]);
+    r->excl_prim = -1;
+    r->excl_enter = 0;
 }
 
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)

@@ -87,14 +87,34 @@ static inline const cscene_face *cscene_face_at(const cscene *cs, int pi, int fa
  * memory runs out. */
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err);
 void NS(cscene_free)(cscene *cs);
-/* The primary ray from the eye along unit direction u (normalised world,
- * double), started at the first parameter t >= after where a surface can
- * lie (the bounding sphere or a half-space plane, less a margin), so that
- * far eyes and narrow lenses keep the accuracy of double. 1 and *r, or 0
- * when nothing remains to be hit beyond `after`; *t0 gets the start (the
- * next call's `after` when the ray found nothing). -1: the start lies
- * beyond the mode's range (the hit could not be represented). */
-int NS(cscene_primary)(const cscene *cs, const double *u, double after, prim_ray *r, double *t0);
+/* Primary rays are set up CSCENE_BATCH at a time, each array indexed by
+ * lane: stored so (structure of arrays), the compiler forms two lanes per
+ * instruction, square roots and divisions included, and the long chains
+ * of one ray's set-up overlap with the next one's. */
+#define CSCENE_BATCH 32
+enum { CSCENE_BAD = -2, CSCENE_CUT = -1, CSCENE_NONE = 0, CSCENE_RAY = 1 };
+typedef struct cscene_batch {
+    double d[3][CSCENE_BATCH];     /* in: direction from the eye, any length */
+    double u[3][CSCENE_BATCH];     /* d made unit (d / |d|, in double) */
+    double t0[CSCENE_BATCH];       /* where the ray starts */
+    double o[3][CSCENE_BATCH];     /* that point, eye + t0 u */
+    double rcp[3][CSCENE_BATCH];   /* the box test's reciprocals of the
+                                      direction (bbox_ray) */
+    signed char st[CSCENE_BATCH];  /* CSCENE_RAY: a ray; CSCENE_NONE:
+                                      nothing remains to be hit; CSCENE_CUT:
+                                      the start lies beyond the mode's range
+                                      (the hit could not be represented);
+                                      CSCENE_BAD: d is zero or not finite */
+} cscene_batch;
+
+/* Sets up the primary rays of lanes 0..n-1 of b (n <= CSCENE_BATCH) from
+ * their directions d: each is started at the first parameter t >= after
+ * where a surface can lie (the bounding sphere or a half-space plane, less
+ * a margin), so that far eyes and narrow lenses keep the accuracy of
+ * double. A ray that found nothing is set up again from its t0 onwards. */
+void NS(cscene_primary_batch)(const cscene *cs, cscene_batch *b, int n, double after);
+/* The ray of lane k of b, whose status is CSCENE_RAY. */
+void NS(cscene_primary_ray)(const cscene *cs, const cscene_batch *b, int k, prim_ray *r);
 /* Maps a deck point to the normalised world (double). */
 void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world);
 #endif

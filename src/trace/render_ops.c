@@ -1,7 +1,6 @@
 /* render_ops — this numeric mode's entry points for the render driver
  * (render.h): compile, per-thread contexts, and one tile of primary rays. */
 #include "trace/trace.h"
-#include "util/dmath.h"
 #include "util/mem.h"
 #include <math.h>
 #include <string.h>
@@ -72,30 +71,39 @@ static int render_ops_region(const void *vcs, void *vtc, int prim, int face, dou
     return (int)(NS(trace_attribute)(cs, vtc, prim, face, &sf) - cs->sc->attrs);
 }
 
-/* One sample: the primary ray along dd (not normalised), its colour added
- * to sum; *p gets the primitive it sees (-1: none), *r and *t0 its last
- * ray and start. */
-static void render_ops_sample(const cscene *cs, trace_ctx *tc, const double *dd, double *sum, int *p,
-                              prim_ray *r, double *t0)
+/* One sample: the primary ray of lane m of b, its colour added to sum;
+ * *p gets the primitive it sees (-1: none), *r and *t0 its last ray and
+ * start. A ray that finds nothing is started again beyond the next
+ * half-space plane (one lane set up on its own). */
+static void render_ops_sample(const cscene *cs, trace_ctx *tc, const cscene_batch *b, int m, double *sum,
+                              int *p, prim_ray *r, double *t0)
 {
-    double u[3], rgb[3], after = 0;
-    size_t tries;
-    int k, st1;
+    double rgb[3];
+    size_t tries = 0;
+    int k, st1 = b->st[m];
+    cscene_batch one;
     *p = -1;
-    if (dmath_unit3(dd, u))
+    if (st1 == CSCENE_BAD)
         return;
     tc->rs.rays_primary++;
     for (k = 0; k < 3; k++)
         rgb[k] = cs->sc->background[k];
-    /* started where a surface can first lie; when nothing is hit in range,
-     * again from the next half-space plane */
-    for (tries = 0; tries <= cs->nplanes && *p < 0; tries++) {
-        if ((st1 = NS(cscene_primary)(cs, u, after, r, t0)) <= 0) {
-            tc->rs.range_cut += st1 < 0;
+    for (;;) {
+        if (st1 <= 0) {
+            tc->rs.range_cut += st1 == CSCENE_CUT;
             break;
         }
+        NS(cscene_primary_ray)(cs, b, m, r);
+        *t0 = b->t0[m];
         NS(trace_ray)(cs, tc, r, 0, 1.0, rgb, p);
-        after = *t0 + GEOM_TMAX - 2;
+        if (*p >= 0 || ++tries > cs->nplanes)
+            break;
+        for (k = 0; k < 3; k++)
+            one.d[k][0] = b->d[k][m];
+        NS(cscene_primary_batch)(cs, &one, 1, *t0 + GEOM_TMAX - 2);
+        b = &one;
+        m = 0;
+        st1 = one.st[0];
     }
     for (k = 0; k < 3; k++)
         sum[k] += rgb[k];
@@ -103,10 +111,12 @@ static void render_ops_sample(const cscene *cs, trace_ctx *tc, const double *dd,
 
 /* Pixel centres at (x + (i+1/2)/aa, y + (j+1/2)/aa); the PID is the one seen
  * by the sample nearest the pixel centre. Directions are set up in double,
- * the ray's start too (cscene_primary), and the direction is normalised in
- * num. A direction fwd + sx right + sy up is summed left to right, so its
- * column part fwd + sx right is formed once per sample column of a strip of
- * at most RENDER_TILE pixels and sy once per sample row. */
+ * the ray's start too (cscene_primary_batch), and the direction is
+ * normalised there. A direction fwd + sx right + sy up is summed left to
+ * right, so its column part fwd + sx right is formed once per sample column
+ * of a strip of at most RENDER_TILE pixels and sy once per sample row. The
+ * samples of one row of the strip, pixel by pixel and within a pixel row
+ * by row, are set up CSCENE_BATCH at a time, then traced in that order. */
 static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                             int x0, int y0, int x1, int y1, render_fb *fb, render_stats *st)
 {
@@ -116,6 +126,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     double rss = 1.0 / (o->aa * o->aa);
     double col[RENDER_TILE * RENDER_MAX_AA][3], sy[RENDER_MAX_AA], up[3];
     int xs, xe, x, y, i, j, k, aa = o->aa, mid = aa / 2;
+    cscene_batch b;
     tc->rs = (render_stats){0};
     tc->gs = (geom_stats){0};
     memcpy(up, cs->up, sizeof up);
@@ -129,38 +140,56 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                     c[k] = cs->fwd[k] + sx * cs->right[k];
             }
         for (y = y0; y < y1; y++) {
+            /* (x, j, i): the next sample to set up; (xt, jt, it) to trace */
+            int xt = xs, jt = 0, it = 0, pid = -1;
+            double sum[3] = {0, 0, 0};
             for (j = 0; j < aa; j++)
                 sy[j] = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
-            for (x = xs; x < xe; x++) {
-                size_t at = (size_t)y * (size_t)o->width + (size_t)x;
-                double sum[3] = {0, 0, 0};
-                int pid = -1;
-                unsigned char *px = fb->img.px + 3 * at;
-                tc->rays_left = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)(aa * aa);
-                /* samples (i, j) in one loop: a nest of two costs the
-                 * pixel a second loop set-up */
-                for (i = j = 0; j < aa;) {
+            x = xs;
+            i = j = 0;
+            while (xt < xe) {
+                int n, m;
+                for (n = 0; n < CSCENE_BATCH && x < xe; n++) {
                     const double *c = col[(x - xs) * aa + i];
-                    double dd[3], t0 = 0;
+                    for (k = 0; k < 3; k++)
+                        b.d[k][n] = c[k] + sy[j] * up[k];
+                    if (++i == aa) {
+                        i = 0;
+                        if (++j == aa) {
+                            j = 0;
+                            x++;
+                        }
+                    }
+                }
+                NS(cscene_primary_batch)(cs, &b, n, 0);
+                for (m = 0; m < n; m++) {
+                    size_t at = (size_t)y * (size_t)o->width + (size_t)xt;
+                    double t0 = 0;
                     prim_ray r;
                     int p;
-                    for (k = 0; k < 3; k++)
-                        dd[k] = c[k] + sy[j] * up[k];
-                    render_ops_sample(cs, tc, dd, sum, &p, &r, &t0);
-                    if (i == mid && j == mid) {
+                    if (it == 0 && jt == 0)
+                        tc->rays_left = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)(aa * aa);
+                    render_ops_sample(cs, tc, &b, m, sum, &p, &r, &t0);
+                    if (it == mid && jt == mid) {
                         pid = p;
                         if (fb->ids.px && p >= 0)
                             render_ops_ids(cs, tc, &r, t0, &fb->ids.px[at]);
                     }
-                    if (++i == aa) {
-                        i = 0;
-                        j++;
+                    if (++it < aa)
+                        continue;
+                    it = 0;
+                    if (++jt < aa)
+                        continue;
+                    jt = 0;
+                    for (k = 0; k < 3; k++) {
+                        fb->img.px[3 * at + k] = render_ops_byte(sum[k] * rss);
+                        sum[k] = 0;
                     }
+                    if (fb->pid)
+                        fb->pid[at] = pid;
+                    pid = -1;
+                    xt++;
                 }
-                for (k = 0; k < 3; k++)
-                    px[k] = render_ops_byte(sum[k] * rss);
-                if (fb->pid)
-                    fb->pid[at] = pid;
             }
         }
     }

@@ -1,8 +1,8 @@
 /* test_cscene — what the scene compiler measures in double from each
  * primitive's corners, against all eight formed one by one, bit for bit:
  * the box the normalisation is taken from (src/trace/cscene.c) and the
- * bounding sphere's radius (src/geom/prim.c). Checked in the f64 build;
- * both are double in every mode. */
+ * bounding sphere's radius (src/geom/prim.c); and where primary rays
+ * start. Checked in the f64 build; all of it is double in every mode. */
 #define NUM_MODE f64
 #define NUM_MODE_f64
 #include <stdarg.h>
@@ -242,12 +242,170 @@ static void test_cscene_object_hull(void **state)
     scene_free(sc);
 }
 
+
+/* A deck of one to four spheres and blocks at random places and turns, and
+ * up to two half-spaces at random tilts, seen from a random eye, sometimes
+ * among the primitives. */
+static scene *cscene_test_view_deck(uint64_t *seed, char *text, size_t size)
+{
+    int n = 1 + (int)(test_rand(seed) % 4), h = (int)(test_rand(seed) % 3), i;
+    double r = test_rand(seed) % 4 ? 40 : 3;
+    size_t len = (size_t)snprintf(text, size, "EYE %.3f %.3f %.3f\nLOOKAT 0 0 0\nLIGHT 6 -4 9\n",
+                                  test_uniform(seed, -r, r), test_uniform(seed, -r, r), test_uniform(seed, -r, r));
+    for (i = 0; i < n + h; i++) {
+        if (i >= n)
+            len += (size_t)snprintf(text + len, size - len, "HALFSPACE P%d ROTATE AXIS %.3f %.3f 1 %.3f -\n"
+                                    " TRANSLATE 0 0 %.3f\n", i, test_uniform(seed, -1, 1),
+                                    test_uniform(seed, -1, 1), test_uniform(seed, -180, 180),
+                                    test_uniform(seed, -6, -1));
+        else if (test_rand(seed) % 2)
+            len += (size_t)snprintf(text + len, size - len, "SPHERE P%d %.3f -\n TRANSLATE %.3f %.3f %.3f\n", i,
+                                    test_uniform(seed, 0.2, 2), test_uniform(seed, -4, 4),
+                                    test_uniform(seed, -4, 4), test_uniform(seed, -4, 4));
+        else
+            len += (size_t)snprintf(text + len, size - len, "BLOCK P%d %.3f %.3f %.3f -\n ROTATE AXIS %.3f %.3f 1"
+                                    " %.3f -\n TRANSLATE %.3f %.3f %.3f\n", i, test_uniform(seed, 0.2, 3),
+                                    test_uniform(seed, 0.2, 3), test_uniform(seed, 0.2, 3),
+                                    test_uniform(seed, -1, 1), test_uniform(seed, -1, 1),
+                                    test_uniform(seed, -180, 180), test_uniform(seed, -4, 4),
+                                    test_uniform(seed, -4, 4), test_uniform(seed, -4, 4));
+    }
+    for (i = 0; i < n + h; i++)
+        len += (size_t)snprintf(text + len, size - len, "OBJECT P%d\n", i);
+    assert_true(len < size);
+    return tt_parse(text);
+}
+
+/* Lane m of a and lane k of b hold the same set-up, bit for bit. */
+static int cscene_test_same_lane(const cscene_batch *a, int m, const cscene_batch *b, int k)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (memcmp(&a->u[i][m], &b->u[i][k], sizeof(double)) || memcmp(&a->o[i][m], &b->o[i][k], sizeof(double))
+            || memcmp(&a->rcp[i][m], &b->rcp[i][k], sizeof(double)))
+            return 0;
+    return a->st[m] == b->st[k] && !memcmp(&a->t0[m], &b->t0[k], sizeof(double));
+}
+
+/* The nearest hit along (o, d): 1 and *h, or 0. */
+static int cscene_test_hit(const cscene *cs, arena *ar, const double *o, const double *d, csg_hit *h)
+{
+    prim_ray r;
+    geom_stats gs;
+    memset(&gs, 0, sizeof gs);
+    prim_ray_set(&r, vec3_from_d(o), vec3_from_d(d), -1, 0);
+    return f64_csg_intersect(&cs->tree, cs->prims, &r, num_from_i(GEOM_TBIG), ar, &gs, h);
+}
+
+/* Primary rays set up in batches (cscene_primary_batch), for 3,000 random
+ * decks and views and 8 batches of 1 to CSCENE_BATCH directions each (some
+ * zero, infinite or NaN): every lane is what a batch of that one direction
+ * gives, bit for bit, wherever it lies in the batch (the vectorised loops
+ * and their scalar ends agree); a direction that is zero or not finite is
+ * refused and every other made unit; the start is eye + t0 u with t0 >= 0;
+ * and nothing is skipped: the ray from the start meets the surface the ray
+ * from the eye meets first (the same primitive and face, at the parameter
+ * less t0; a hit farther than GEOM_TBIG / 2 from the eye, which a ray from
+ * the eye cannot see, is only counted), and a ray given no start meets
+ * nothing. Started again beyond
+ * its start (after > 0), a lane starts no sooner. */
+static void test_cscene_primary_batch_skips_nothing(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_primary_batch_skips_nothing");
+    long rays = 0, hits = 0, far = 0, none = 0, bad = 0;
+    int deck;
+    (void)state;
+    for (deck = 0; deck < 3000; deck++) {
+        char text[2048];
+        scene *sc = cscene_test_view_deck(&seed, text, sizeof text);
+        cscene *cs = NULL;
+        arena ar;
+        diag err;
+        int b;
+        assert_non_null(sc);
+        diag_init(&err);
+        assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
+        assert_int_equal(arena_init(&ar, f64_csg_arena_bytes(&cs->tree)), 0);
+        for (b = 0; b < 8; b++) {
+            cscene_batch all, one;
+            int n = 1 + (int)(test_rand(&seed) % CSCENE_BATCH), m, i;
+            for (m = 0; m < n; m++) {
+                uint64_t kind = test_rand(&seed) % 32;
+                double len = pow(10, test_uniform(&seed, -3, 3));
+                for (i = 0; i < 3; i++)   /* mostly towards the scene */
+                    all.d[i][m] = (test_uniform(&seed, -0.6, 0.6) - cs->eye[i] / (1 + dmath_len3(cs->eye))) * len;
+                if (kind == 0)
+                    all.d[0][m] = all.d[1][m] = all.d[2][m] = 0;
+                else if (kind == 1)
+                    all.d[(int)(test_rand(&seed) % 3)][m] = HUGE_VAL;
+                else if (kind == 2)
+                    all.d[(int)(test_rand(&seed) % 3)][m] = NAN;
+            }
+            f64_cscene_primary_batch(cs, &all, n, 0);
+            for (m = 0; m < n; m++) {
+                double d[3], o[3], u[3], l;
+                csg_hit he = {0}, hs = {0};
+                int from_eye, from_start;
+                for (i = 0; i < 3; i++)
+                    one.d[i][0] = d[i] = all.d[i][m];
+                f64_cscene_primary_batch(cs, &one, 1, 0);
+                if (!cscene_test_same_lane(&all, m, &one, 0))
+                    fail_msg("deck %d batch %d: lane %d of %d differs from its batch of one\n%s", deck, b, m, n, text);
+                l = dmath_len3(d);
+                if (!(l > 0 && isfinite(l))) {
+                    assert_int_equal(all.st[m], CSCENE_BAD);
+                    bad++;
+                    continue;
+                }
+                assert_true(all.st[m] == CSCENE_RAY || all.st[m] == CSCENE_NONE);
+                for (i = 0; i < 3; i++)
+                    u[i] = all.u[i][m];
+                assert_true(fabs(dmath_len3(u) - 1) < 1e-15);
+                from_eye = cscene_test_hit(cs, &ar, cs->eye, u, &he);
+                if (all.st[m] == CSCENE_NONE) {
+                    if (from_eye)
+                        fail_msg("deck %d: a ray given no start meets primitive %d at %.17g\n%s", deck,
+                                 he.prim, num_to_d(he.t), text);
+                    none++;
+                    continue;
+                }
+                rays++;
+                assert_true(all.t0[m] >= 0);
+                for (i = 0; i < 3; i++) {
+                    o[i] = cs->eye[i] + all.t0[m] * u[i];
+                    assert_memory_equal(&o[i], &all.o[i][m], sizeof o[i]);
+                }
+                from_start = cscene_test_hit(cs, &ar, o, u, &hs);
+                if (!from_eye && from_start && all.t0[m] + num_to_d(hs.t) > GEOM_TBIG / 2) {
+                    far++;                /* beyond what a ray from the eye sees */
+                    continue;
+                }
+                if (from_eye != from_start || (from_eye && (he.prim != hs.prim || he.face != hs.face
+                    || fabs(all.t0[m] + num_to_d(hs.t) - num_to_d(he.t)) > 1e-9 * (1 + num_to_d(he.t)))))
+                    fail_msg("deck %d: from the eye %d (primitive %d face %d t %.17g), from t0 %.17g %d "
+                             "(primitive %d face %d t %.17g)\n%s", deck, from_eye, he.prim, he.face,
+                             num_to_d(he.t), all.t0[m], from_start, hs.prim, hs.face, num_to_d(hs.t), text);
+                hits += from_eye;
+                f64_cscene_primary_batch(cs, &one, 1, all.t0[m] + 2);
+                assert_true(one.st[0] != CSCENE_RAY || one.t0[0] >= all.t0[m] + 2);
+            }
+        }
+        arena_free(&ar);
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+    printf("primary batch: %ld rays started (%ld hit near, %ld far), %ld given no start, %ld refused\n",
+           rays, hits, far, none, bad);
+    assert_true(hits > 10000 && none > 1000 && bad > 1000);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cscene_box_from_extreme_corners),
         cmocka_unit_test(test_cscene_bounding_radius_from_all_corners),
         cmocka_unit_test(test_cscene_object_hull),
+        cmocka_unit_test(test_cscene_primary_batch_skips_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
