@@ -32,8 +32,7 @@ typedef struct bbox_ray {
  * hold them) count as zero: their reciprocals would overflow. */
 static inline double bbox_rcp(double d)
 {
-    double r = 1 / d, z = d < 0 ? -BBOX_RCP_ZERO : BBOX_RCP_ZERO;
-    return (d > 1e-290) | (d < -1e-290) ? r : z;
+    return d > 1e-290 || d < -1e-290 ? 1 / d : d < 0 ? -BBOX_RCP_ZERO : BBOX_RCP_ZERO;
 }
 
 static inline void bbox_ray_init(bbox_ray *b, const double o[3], const double d[3])
