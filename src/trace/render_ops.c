@@ -44,6 +44,20 @@ static unsigned char render_ops_byte(double c)
     return (unsigned char)(c * 255 + 0.5);
 }
 
+/* Pixel at gets the mean sum * rss of its samples (sum is cleared for the
+ * next) and the PID pid. */
+static void render_ops_pixel(render_fb *fb, size_t at, double *sum, double rss, int pid)
+{
+    unsigned char *px = fb->img.px + 3 * at;
+    int k;
+    for (k = 0; k < 3; k++) {
+        px[k] = render_ops_byte(sum[k] * rss);
+        sum[k] = 0;
+    }
+    if (fb->pid)
+        fb->pid[at] = pid;
+}
+
 /* The identity of primary ray r's hit (started t0 from the eye): its
  * primitive, face, region and distance in deck units. */
 static void render_ops_ids(const cscene *cs, trace_ctx *tc, const prim_ray *r, double t0, idmap_px *out)
@@ -181,12 +195,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                     if (++jt < aa)
                         continue;
                     jt = 0;
-                    for (k = 0; k < 3; k++) {
-                        fb->img.px[3 * at + k] = render_ops_byte(sum[k] * rss);
-                        sum[k] = 0;
-                    }
-                    if (fb->pid)
-                        fb->pid[at] = pid;
+                    render_ops_pixel(fb, at, sum, rss, pid);
                     pid = -1;
                     xt++;
                 }
