@@ -88,7 +88,7 @@ static const prim_cplane prim_cap_planes[2] = {
 static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, PRIM_FACE_HALFSPACE_PLANE}};
 
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
-                     double (*pl_d)[4], prim *out, const char *file, diag *err)
+                     double (*pl_d)[4], prim_frame *fr, prim *out, const char *file, diag *err)
 {
     prim p;
     double c[3] = {1, 1, 1}, cc[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
@@ -107,6 +107,8 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     p.kind = sp->kind;
     p.pl = pl;
     p.pl_d = pl_d;
+    p.fr = fr;
+    memset(fr, 0, sizeof *fr);
     p.id = id;
     p.attr = sp->attr;
     p.bounded = 1;
@@ -161,32 +163,32 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     /* canonical -> normalised world: A = scale * M3 * diag(c), org likewise */
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
-            p.a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
-            frob += p.a_d[3 * i + j] * p.a_d[3 * i + j];
+            p.fr->a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
+            frob += p.fr->a_d[3 * i + j] * p.fr->a_d[3 * i + j];
         }
-        p.org_d[i] = nm->scale * m[4 * i + 3] + nm->off[i];
+        p.fr->org_d[i] = nm->scale * m[4 * i + 3] + nm->off[i];
     }
-    if (dmath_m3_inverse(p.a_d, p.ainv_d))
+    if (dmath_m3_inverse(p.fr->a_d, p.fr->ainv_d))
         return prim_fail(err, file, sp, "transform is singular");
     frob = 0;
     for (i = 0; i < 9; i++)
-        frob += p.ainv_d[i] * p.ainv_d[i];
+        frob += p.fr->ainv_d[i] * p.fr->ainv_d[i];
     frob = sqrt(frob);
     for (i = 0; i < 9; i++)
-        p.minv_s.m[i] = num_from_d(p.ainv_d[i] / frob);
+        p.minv_s.m[i] = num_from_d(p.fr->ainv_d[i] / frob);
     p.fast = prim_cols(&p.minv_s) << 24;
     p.smin = num_from_d(1.0 / frob);
     p.inv_smin = num_from_d(frob);
-    p.org = vec3_from_d(p.org_d);
+    p.org = vec3_from_d(p.fr->org_d);
     if (p.bounded && (p.smin == NUM_ZERO || num_to_d(p.inv_smin) < frob * (1 - 1e-3)))
         return prim_fail(err, file, sp, "too small for the numeric range");
 
     /* bounding sphere */
-    dmath_m3_mul_v(p.a_d, cc, bc);
+    dmath_m3_mul_v(p.fr->a_d, cc, bc);
     for (i = 0; i < 3; i++)
-        bc[i] += p.org_d[i];
+        bc[i] += p.fr->org_d[i];
     if (sp->kind == PRIM_SPHERE) {
-        r = dmath_m3_spectral_norm(p.a_d);
+        r = dmath_m3_spectral_norm(p.fr->a_d);
     } else if (p.bounded) {
         int k;
         /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
@@ -195,7 +197,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
             double corner[3], w[3], len;
             for (i = 0; i < 3; i++)
                 corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
-            dmath_m3_mul_v(p.a_d, corner, w);
+            dmath_m3_mul_v(p.fr->a_d, corner, w);
             len = dmath_len3(w);
             if (len > r)
                 r = len;
@@ -218,13 +220,13 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
         memset(p.pl, 0, (size_t)ncp * sizeof *p.pl);
     for (i = 0; i < ncp; i++) {
         double n[3], pt[3], len;
-        dmath_m3_tmul_v(p.ainv_d, cp[i].n, n);
+        dmath_m3_tmul_v(p.fr->ainv_d, cp[i].n, n);
         len = dmath_len3(n);
         for (j = 0; j < 3; j++)
             n[j] /= len;
-        dmath_m3_mul_v(p.a_d, cp[i].p, pt);
+        dmath_m3_mul_v(p.fr->a_d, cp[i].p, pt);
         for (j = 0; j < 3; j++)
-            pt[j] += p.org_d[j];
+            pt[j] += p.fr->org_d[j];
         memcpy(p.pl_d[i], n, sizeof n);
         p.pl_d[i][3] = dmath_dot3(n, pt);
         p.pl[i].face = cp[i].face;
@@ -239,7 +241,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
  * than stored: only the CSG compile needs it. */
 void NS(prim_box)(const prim *p, double lo_out[3], double hi_out[3])
 {
-    const double *a = p->a_d;
+    const double *a = p->fr->a_d;
     int i, k, kind = p->kind;
     if (!p->bounded) {
         memset(lo_out, 0, 3 * sizeof *lo_out);
@@ -267,8 +269,8 @@ void NS(prim_box)(const prim *p, double lo_out[3], double hi_out[3])
             if (a[3 * i + 2] - rb * h < lo) lo = a[3 * i + 2] - rb * h;
             if (a[3 * i + 2] + rb * h > hi) hi = a[3 * i + 2] + rb * h;
         }
-        lo_out[i] = p->org_d[i] + lo;
-        hi_out[i] = p->org_d[i] + hi;
+        lo_out[i] = p->fr->org_d[i] + lo;
+        hi_out[i] = p->fr->org_d[i] + hi;
     }
 }
 
@@ -305,10 +307,10 @@ static int prim_same_solid(const prim *a, const prim *b)
         for (j = 0; j < 3; j++) {
             s[3 * i + j] = 0;
             for (k = 0; k < 3; k++)
-                s[3 * i + j] += a->ainv_d[3 * i + k] * b->a_d[3 * k + j];
+                s[3 * i + j] += a->fr->ainv_d[3 * i + k] * b->fr->a_d[3 * k + j];
         }
-    dmath_sub3(b->org_d, a->org_d, w);
-    dmath_m3_mul_v(a->ainv_d, w, t);
+    dmath_sub3(b->fr->org_d, a->fr->org_d, w);
+    dmath_m3_mul_v(a->fr->ainv_d, w, t);
     for (i = 0; i < 3; i++)                 /* s orthogonal: s s^T = I */
         for (j = 0; j < 3; j++) {
             double dot = s[3 * i] * s[3 * j] + s[3 * i + 1] * s[3 * j + 1] + s[3 * i + 2] * s[3 * j + 2];
@@ -361,8 +363,8 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
         if (!a->bounded || a->kind == PRIM_BLOCK)
             continue;
         for (k = 0; k < 3; k++) {
-            const double *row = a->a_d + 3 * k;
-            key += w[k] * (a->org_d[k] + row[2] * cz);
+            const double *row = a->fr->a_d + 3 * k;
+            key += w[k] * (a->fr->org_d[k] + row[2] * cz);
             win += w[k] * sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
         }
         sk[m].key = key;
@@ -727,8 +729,8 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         return;
     }
     for (i = 0; i < 3; i++)
-        w[i] -= p->org_d[i];
-    dmath_m3_mul_v(p->ainv_d, w, l);
+        w[i] -= p->fr->org_d[i];
+    dmath_m3_mul_v(p->fr->ainv_d, w, l);
     /* the sphere's normal alone needs no angle */
     if (need_uv || p->kind != PRIM_SPHERE) {
         rho = sqrt(l[0] * l[0] + l[1] * l[1]);
@@ -793,14 +795,14 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     if (need_uv) {
         out->u = prim_clamp01(u);
         out->v = prim_clamp01(v);
-        dmath_m3_mul_v(p->a_d, du, out->dpdu);
-        dmath_m3_mul_v(p->a_d, dv, out->dpdv);
+        dmath_m3_mul_v(p->fr->a_d, du, out->dpdu);
+        dmath_m3_mul_v(p->fr->a_d, dv, out->dpdv);
     }
     if ((fn = prim_flat_normal(p, face)) != NULL) {
         for (i = 0; i < 3; i++)
             out->n[i] = fn[i];
     } else {
-        dmath_m3_tmul_v(p->ainv_d, nl, out->n);
+        dmath_m3_tmul_v(p->fr->ainv_d, nl, out->n);
         len = dmath_len3(out->n);
         if (len > 0)
             for (i = 0; i < 3; i++)

@@ -55,6 +55,13 @@ typedef struct prim_plane {
     int face;
 } prim_plane;
 
+/* A primitive's placement in binary64: world_from_canonical (linear part
+ * a_d, its inverse ainv_d, origin org_d), read by surface evaluation and
+ * the compile, kept apart from what every intersection reads. */
+typedef struct prim_frame {
+    double a_d[9], ainv_d[9], org_d[3];
+} prim_frame;
+
 typedef struct prim {
     int kind, id, attr;
     int bounded;       /* 0 for the half-space */
@@ -71,8 +78,8 @@ typedef struct prim {
     unsigned fast;     /* exact shortcuts: bits 3k..3k+2 how pl[k]'s dot
                           products are formed (k < 6), bits 24..31 minv_s's
                           nonzero column per row (prim_cols) */
-    /* double copies for surface evaluation */
-    double a_d[9], ainv_d[9], org_d[3];
+    prim_frame *fr;    /* the placement in double, for surface evaluation
+                          (storage the caller provides, as for pl) */
     double (*pl_d)[4]; /* planes in double (n, d), in pl's order (storage
                           as pl); n is also the face's shading normal */
 } prim;
@@ -103,12 +110,12 @@ static inline int prim_face_plane(int kind, int face)
 }
 
 /* Compiles scene primitive sp (index id) under the normalisation nm, its
- * planes into pl and pl_d (prim_nplanes(sp->kind) entries each, kept by
- * out). 0 on success; DIAG_INPUT (located at sp->loc in file) for bad
+ * planes into pl and pl_d (prim_nplanes(sp->kind) entries each) and its
+ * placement into fr, all kept by out. 0 on success; DIAG_INPUT (located at sp->loc in file) for bad
  * dimensions, non-finite or singular transforms, or a primitive outside
  * the range. */
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
-                     double (*pl_d)[4], prim *out, const char *file, diag *err);
+                     double (*pl_d)[4], prim_frame *fr, prim *out, const char *file, diag *err);
 
 /* Gives coincident geometry of the compiled primitives one representation
  * (docs/numerics.md, "Coincident surfaces"): every plane equal within

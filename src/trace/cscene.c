@@ -237,8 +237,8 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
              * more than rounding (dmath_m3_frobenius): a primitive it keeps
              * 1e-9 under the limit needs no eigenvalues */
             if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK
-                && dmath_m3_frobenius(p->a_d) * dmath_m3_frobenius(p->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
-                && (aspect = dmath_m3_spectral_norm(p->a_d) * dmath_m3_spectral_norm(p->ainv_d))
+                && dmath_m3_frobenius(p->fr->a_d) * dmath_m3_frobenius(p->fr->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
+                && (aspect = dmath_m3_spectral_norm(p->fr->a_d) * dmath_m3_spectral_norm(p->fr->ainv_d))
                        > CSCENE_ASPECT_MAX)
                 return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                                "primitive '%s': aspect ratio %.3g is beyond the %s limit of %g "
@@ -411,7 +411,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         cs->prims = mem_calloc(sc->nprims, sizeof *cs->prims);
         cs->prim_pl = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl);
         cs->prim_pl_d = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
-        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d) {
+        cs->prim_fr = mem_calloc(sc->nprims, sizeof *cs->prim_fr);
+        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
         }
@@ -424,7 +425,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
                              "primitive '%s': attribute index out of range", sp->name);
             goto fail;
         }
-        if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl,
+        if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl, cs->prim_fr + i,
                                        &cs->prims[i], cscene_file(sc), err)))
             goto fail;
         npl += (size_t)prim_nplanes(sp->kind);
@@ -497,6 +498,7 @@ void NS(cscene_free)(cscene *cs)
     mem_free(cs->prims);
     mem_free(cs->prim_pl);
     mem_free(cs->prim_pl_d);
+    mem_free(cs->prim_fr);
     mem_free(cs->lights);
     mem_free(cs);
 }

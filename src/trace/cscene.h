@@ -39,6 +39,7 @@ typedef struct cscene {
      * many as each has: a sphere none, a block six */
     prim_plane *prim_pl;
     double (*prim_pl_d)[4];
+    prim_frame *prim_fr;
     csg tree;
     cscene_light *lights;
     size_t nlights;

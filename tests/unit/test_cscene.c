@@ -161,17 +161,18 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
             prim p;
             prim_plane pl[6];
             double pl_d[6][4];
+            prim_frame fr;
             int i, k;
             if (sp->kind == PRIM_SPHERE)
                 continue;
             if (sp->kind == PRIM_BLOCK)
                 lo[0] = lo[1] = 0, cc[0] = cc[1] = 0.5;
-            assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &p, "test", &err), 0);
+            assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &fr, &p, "test", &err), 0);
             for (k = 0; k < 8; k++) {
                 double corner[3], w[3], len;
                 for (i = 0; i < 3; i++)
                     corner[i] = ((k >> i) & 1 ? 1 : lo[i]) - cc[i];
-                dmath_m3_mul_v(p.a_d, corner, w);
+                dmath_m3_mul_v(p.fr->a_d, corner, w);
                 len = dmath_len3(w);
                 if (len > r)
                     r = len;
