@@ -139,7 +139,8 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
     double aspect = (double)o->width / o->height;
     double rss = 1.0 / (o->aa * o->aa);
     double col[RENDER_TILE * RENDER_MAX_AA][3], sy[RENDER_MAX_AA], up[3];
-    int xs, xe, x, y, i, j, k, aa = o->aa, mid = aa / 2;
+    int xs, xe, x, y, i, j, k, aa = o->aa, per = aa * aa, centre = aa / 2 * (aa + 1);
+    unsigned long rays_per_pixel = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)per;
     cscene_batch b;
     tc->rs = (render_stats){0};
     tc->gs = (geom_stats){0};
@@ -154,8 +155,9 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                     c[k] = cs->fwd[k] + sx * cs->right[k];
             }
         for (y = y0; y < y1; y++) {
-            /* (x, j, i): the next sample to set up; (xt, jt, it) to trace */
-            int xt = xs, jt = 0, it = 0, pid = -1;
+            /* (x, j, i): the next sample to set up; xt and s (the sample in
+             * its pixel, row by row) the next to trace */
+            int xt = xs, s = 0, pid = -1;
             double sum[3] = {0, 0, 0};
             for (j = 0; j < aa; j++)
                 sy[j] = (1 - 2 * (y + (j + 0.5) / aa) / o->height) * cs->tan_half;
@@ -163,7 +165,10 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
             i = j = 0;
             while (xt < xe) {
                 int n, m;
-                for (n = 0; n < CSCENE_BATCH && x < xe; n++) {
+                for (n = 0; aa == 1 && n < CSCENE_BATCH && x < xe; n++, x++)
+                    for (k = 0; k < 3; k++)
+                        b.d[k][n] = col[x - xs][k] + sy[0] * up[k];
+                for (; n < CSCENE_BATCH && x < xe; n++) {
                     const double *c = col[(x - xs) * aa + i];
                     for (k = 0; k < 3; k++)
                         b.d[k][n] = c[k] + sy[j] * up[k];
@@ -181,20 +186,17 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
                     double t0 = 0;
                     prim_ray r;
                     int p;
-                    if (it == 0 && jt == 0)
-                        tc->rays_left = (unsigned long)RENDER_MAX_RAYS_PER_SAMPLE * (unsigned long)(aa * aa);
+                    if (s == 0)
+                        tc->rays_left = rays_per_pixel;
                     render_ops_sample(cs, tc, &b, m, sum, &p, &r, &t0);
-                    if (it == mid && jt == mid) {
+                    if (s == centre) {
                         pid = p;
                         if (fb->ids.px && p >= 0)
                             render_ops_ids(cs, tc, &r, t0, &fb->ids.px[at]);
                     }
-                    if (++it < aa)
+                    if (++s < per)
                         continue;
-                    it = 0;
-                    if (++jt < aa)
-                        continue;
-                    jt = 0;
+                    s = 0;
                     render_ops_pixel(fb, at, sum, rss, pid);
                     pid = -1;
                     xt++;
