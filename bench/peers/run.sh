@@ -9,8 +9,9 @@
 # CPU seconds (user + sys) and wall seconds are printed, then the ratios
 # (maprt time / peer time: below 1 means maprt is faster), last the
 # ratios of the CPU minima (the runs a shared machine disturbed least).
-# Then the whole process on 1 and 2 threads (fig1 1024x1024, q16) and its
-# peak RSS. Exit status 1 when the minimal tracer's picture is not
+# Then the whole process on 1 and 2 threads (fig1 1024x1024, q16), beside
+# what the host's two cores give two processes that share nothing (two
+# minimal tracers at once against one), and its peak RSS. Exit status 1 when the minimal tracer's picture is not
 # maprt's (every figure is printed all the same), 3 when a command fails.
 # Usage: sh bench/peers/run.sh [MAPRT [MINIMAL [CPUTIME]]]
 bin=${1:-build/maprt}
@@ -79,9 +80,14 @@ while [ "$i" -lt "$runs" ]; do
   run t1 "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 --threads 1
   run t2 "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 --threads 2
   run f1 "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 --threads 1 --numeric f64
+  # what the host gives two processes that share nothing: two minimal
+  # tracers at once against one (no path reaches the shell's text)
+  run h1 "$minimal" "$tmp/h1.ppm" 2048 1536
+  run h2 sh -c '"$1" "$2" 2048 1536 & "$1" "$3" 2048 1536; wait' sh "$minimal" "$tmp/h1.ppm" "$tmp/h2.ppm"
   i=$((i + 1))
 done
 echo "1 thread wall_s=$(med t1 2) cpu_s=$(med t1 1); 2 threads wall_s=$(med t2 2) cpu_s=$(med t2 1); speed-up $(ratio "$(med t1 2)" "$(med t2 2)") (of the wall minima $(ratio "$(least t1 2)" "$(least t2 2)"))"
+echo "the host's two cores: two minimal tracers at once do $(ratio "$(awk -v a="$(med h1 2)" 'BEGIN { print 2 * a }')" "$(med h2 2)")x the work of one in the same wall time (of the wall minima $(ratio "$(awk -v a="$(least h1 2)" 'BEGIN { print 2 * a }')" "$(least h2 2)"))"
 echo "q16/f64 (fig1) cpu=$(ratio "$(med t1 1)" "$(med f1 1)")"
 /usr/bin/time -f "%M" -o "$tmp/rss" "$bin" render scenes/fig1.scene -o "$tmp/o.png" --size 1024x1024 >/dev/null 2>&1
 echo "peak RSS fig1 1024x1024: $(awk '{ printf "%.1f MiB", $1 / 1024 }' "$tmp/rss")"
