@@ -112,6 +112,17 @@ static scene *cscene_test_deck(uint64_t *seed, char *text, size_t size)
     return tt_parse(text);
 }
 
+/* sc compiled in f64; fails the test unless it parses and compiles. */
+static cscene *cscene_test_compile(scene *sc)
+{
+    cscene *cs = NULL;
+    diag err;
+    assert_non_null(sc);
+    diag_init(&err);
+    assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
+    return cs;
+}
+
 /* 6,000 random decks: the compiled normalisation equals the one from all
  * eight corners. */
 static void test_cscene_box_from_extreme_corners(void **state)
@@ -122,12 +133,8 @@ static void test_cscene_box_from_extreme_corners(void **state)
     for (deck = 0; deck < 6000; deck++) {
         char text[2048];
         scene *sc = cscene_test_deck(&seed, text, sizeof text);
-        cscene *cs = NULL;
+        cscene *cs = cscene_test_compile(sc);
         geom_norm want;
-        diag err;
-        assert_non_null(sc);
-        diag_init(&err);
-        assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
         cscene_test_norm(sc, &want);
         if (memcmp(&cs->nm, &want, sizeof want))
             fail_msg("deck %d: scale %.17g off %.17g %.17g %.17g, all corners give %.17g %.17g "
@@ -149,12 +156,10 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
     for (deck = 0; deck < 6000; deck++) {
         char text[2048];
         scene *sc = cscene_test_deck(&seed, text, sizeof text);
-        cscene *cs = NULL;
+        cscene *cs = cscene_test_compile(sc);
         diag err;
         size_t n;
-        assert_non_null(sc);
         diag_init(&err);
-        assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
         for (n = 0; n < sc->nprims; n++) {
             const scene_prim *sp = &sc->prims[n];
             double lo[3] = {-1, -1, 0}, cc[3] = {0, 0, 0.5}, r = 0;
@@ -298,6 +303,103 @@ static int cscene_test_hit(const cscene *cs, arena *ar, const double *o, const d
     return f64_csg_intersect(&cs->tree, cs->prims, &r, num_from_i(GEOM_TBIG), ar, &gs, h);
 }
 
+/* What the lanes of test_cscene_primary_batch_skips_nothing came to. */
+typedef struct cscene_test_counts { long rays, hits, far, none, bad; } cscene_test_counts;
+
+/* Directions for 1 to CSCENE_BATCH lanes of b, mostly towards the scene
+ * from cs's eye, at lengths from 10^-3 to 10^3; 1 in 32 zero, 1 in 32 with
+ * an infinite and 1 in 32 with a NaN component. Returns their number. */
+static int cscene_test_directions(const cscene *cs, uint64_t *seed, cscene_batch *b)
+{
+    int n = 1 + (int)(test_rand(seed) % CSCENE_BATCH), m, i;
+    for (m = 0; m < n; m++) {
+        uint64_t kind = test_rand(seed) % 32;
+        double len = pow(10, test_uniform(seed, -3, 3));
+        for (i = 0; i < 3; i++)
+            b->d[i][m] = (test_uniform(seed, -0.6, 0.6) - cs->eye[i] / (1 + dmath_len3(cs->eye))) * len;
+        if (kind == 0)
+            b->d[0][m] = b->d[1][m] = b->d[2][m] = 0;
+        else if (kind == 1)
+            b->d[(int)(test_rand(seed) % 3)][m] = HUGE_VAL;
+        else if (kind == 2)
+            b->d[(int)(test_rand(seed) % 3)][m] = NAN;
+    }
+    return n;
+}
+
+/* Checks lane m of all, set up from after = 0 (see the test below); text
+ * names the deck in a failure. */
+static void cscene_test_lane(const cscene *cs, arena *ar, const cscene_batch *all, int m, const char *text,
+                             cscene_test_counts *c)
+{
+    cscene_batch one;
+    double o[3], u[3], l;
+    csg_hit he = {0}, hs = {0};
+    int from_eye, from_start, i;
+    for (i = 0; i < 3; i++)
+        one.d[i][0] = all->d[i][m];
+    f64_cscene_primary_batch(cs, &one, 1, 0);
+    if (!cscene_test_same_lane(all, m, &one, 0))
+        fail_msg("lane %d differs from its batch of one\n%s", m, text);
+    l = sqrt(one.d[0][0] * one.d[0][0] + one.d[1][0] * one.d[1][0] + one.d[2][0] * one.d[2][0]);
+    if (!(l > 0 && isfinite(l))) {
+        assert_int_equal(all->st[m], CSCENE_BAD);
+        c->bad++;
+        return;
+    }
+    assert_true(all->st[m] == CSCENE_RAY || all->st[m] == CSCENE_NONE);
+    for (i = 0; i < 3; i++)
+        u[i] = all->u[i][m];
+    assert_true(fabs(dmath_len3(u) - 1) < 1e-15);
+    from_eye = cscene_test_hit(cs, ar, cs->eye, u, &he);
+    if (all->st[m] == CSCENE_NONE) {
+        if (from_eye)
+            fail_msg("a ray given no start meets primitive %d at %.17g\n%s", he.prim, num_to_d(he.t), text);
+        c->none++;
+        return;
+    }
+    c->rays++;
+    assert_true(all->t0[m] >= 0);
+    for (i = 0; i < 3; i++) {
+        o[i] = cs->eye[i] + all->t0[m] * u[i];
+        assert_memory_equal(&o[i], &all->o[i][m], sizeof o[i]);
+    }
+    from_start = cscene_test_hit(cs, ar, o, u, &hs);
+    if (!from_eye && from_start && all->t0[m] + num_to_d(hs.t) > GEOM_TBIG / 2) {
+        c->far++;                 /* beyond what a ray from the eye sees */
+        return;
+    }
+    if (from_eye != from_start || (from_eye && (he.prim != hs.prim || he.face != hs.face
+        || fabs(all->t0[m] + num_to_d(hs.t) - num_to_d(he.t)) > 1e-9 * (1 + num_to_d(he.t)))))
+        fail_msg("from the eye %d (primitive %d face %d t %.17g), from t0 %.17g %d (primitive %d face %d "
+                 "t %.17g)\n%s", from_eye, he.prim, he.face, num_to_d(he.t), all->t0[m], from_start, hs.prim,
+                 hs.face, num_to_d(hs.t), text);
+    c->hits += from_eye;
+    f64_cscene_primary_batch(cs, &one, 1, all->t0[m] + 2);
+    assert_true(one.st[0] != CSCENE_RAY || one.t0[0] >= all->t0[m] + 2);
+}
+
+/* One random deck and view, and 8 batches of directions from its eye. */
+static void cscene_test_view(uint64_t *seed, cscene_test_counts *c)
+{
+    char text[2048];
+    scene *sc = cscene_test_view_deck(seed, text, sizeof text);
+    cscene *cs = cscene_test_compile(sc);
+    arena ar;
+    int b, m, n;
+    assert_int_equal(arena_init(&ar, f64_csg_arena_bytes(&cs->tree)), 0);
+    for (b = 0; b < 8; b++) {
+        cscene_batch all;
+        n = cscene_test_directions(cs, seed, &all);
+        f64_cscene_primary_batch(cs, &all, n, 0);
+        for (m = 0; m < n; m++)
+            cscene_test_lane(cs, &ar, &all, m, text, c);
+    }
+    arena_free(&ar);
+    f64_cscene_free(cs);
+    scene_free(sc);
+}
+
 /* Primary rays set up in batches (cscene_primary_batch), for 3,000 random
  * decks and views and 8 batches of 1 to CSCENE_BATCH directions each (some
  * zero, infinite or NaN): every lane is what a batch of that one direction
@@ -308,96 +410,19 @@ static int cscene_test_hit(const cscene *cs, arena *ar, const double *o, const d
  * from the eye meets first (the same primitive and face, at the parameter
  * less t0; a hit farther than GEOM_TBIG / 2 from the eye, which a ray from
  * the eye cannot see, is only counted), and a ray given no start meets
- * nothing. Started again beyond
- * its start (after > 0), a lane starts no sooner. */
+ * nothing. Started again beyond its start (after > 0), a lane starts no
+ * sooner. */
 static void test_cscene_primary_batch_skips_nothing(void **state)
 {
     uint64_t seed = test_seed("test_cscene_primary_batch_skips_nothing");
-    long rays = 0, hits = 0, far = 0, none = 0, bad = 0;
+    cscene_test_counts c = {0, 0, 0, 0, 0};
     int deck;
     (void)state;
-    for (deck = 0; deck < 3000; deck++) {
-        char text[2048];
-        scene *sc = cscene_test_view_deck(&seed, text, sizeof text);
-        cscene *cs = NULL;
-        arena ar;
-        diag err;
-        int b;
-        assert_non_null(sc);
-        diag_init(&err);
-        assert_int_equal(f64_cscene_compile(sc, &cs, &err), 0);
-        assert_int_equal(arena_init(&ar, f64_csg_arena_bytes(&cs->tree)), 0);
-        for (b = 0; b < 8; b++) {
-            cscene_batch all, one;
-            int n = 1 + (int)(test_rand(&seed) % CSCENE_BATCH), m, i;
-            for (m = 0; m < n; m++) {
-                uint64_t kind = test_rand(&seed) % 32;
-                double len = pow(10, test_uniform(&seed, -3, 3));
-                for (i = 0; i < 3; i++)   /* mostly towards the scene */
-                    all.d[i][m] = (test_uniform(&seed, -0.6, 0.6) - cs->eye[i] / (1 + dmath_len3(cs->eye))) * len;
-                if (kind == 0)
-                    all.d[0][m] = all.d[1][m] = all.d[2][m] = 0;
-                else if (kind == 1)
-                    all.d[(int)(test_rand(&seed) % 3)][m] = HUGE_VAL;
-                else if (kind == 2)
-                    all.d[(int)(test_rand(&seed) % 3)][m] = NAN;
-            }
-            f64_cscene_primary_batch(cs, &all, n, 0);
-            for (m = 0; m < n; m++) {
-                double d[3], o[3], u[3], l;
-                csg_hit he = {0}, hs = {0};
-                int from_eye, from_start;
-                for (i = 0; i < 3; i++)
-                    one.d[i][0] = d[i] = all.d[i][m];
-                f64_cscene_primary_batch(cs, &one, 1, 0);
-                if (!cscene_test_same_lane(&all, m, &one, 0))
-                    fail_msg("deck %d batch %d: lane %d of %d differs from its batch of one\n%s", deck, b, m, n, text);
-                l = dmath_len3(d);
-                if (!(l > 0 && isfinite(l))) {
-                    assert_int_equal(all.st[m], CSCENE_BAD);
-                    bad++;
-                    continue;
-                }
-                assert_true(all.st[m] == CSCENE_RAY || all.st[m] == CSCENE_NONE);
-                for (i = 0; i < 3; i++)
-                    u[i] = all.u[i][m];
-                assert_true(fabs(dmath_len3(u) - 1) < 1e-15);
-                from_eye = cscene_test_hit(cs, &ar, cs->eye, u, &he);
-                if (all.st[m] == CSCENE_NONE) {
-                    if (from_eye)
-                        fail_msg("deck %d: a ray given no start meets primitive %d at %.17g\n%s", deck,
-                                 he.prim, num_to_d(he.t), text);
-                    none++;
-                    continue;
-                }
-                rays++;
-                assert_true(all.t0[m] >= 0);
-                for (i = 0; i < 3; i++) {
-                    o[i] = cs->eye[i] + all.t0[m] * u[i];
-                    assert_memory_equal(&o[i], &all.o[i][m], sizeof o[i]);
-                }
-                from_start = cscene_test_hit(cs, &ar, o, u, &hs);
-                if (!from_eye && from_start && all.t0[m] + num_to_d(hs.t) > GEOM_TBIG / 2) {
-                    far++;                /* beyond what a ray from the eye sees */
-                    continue;
-                }
-                if (from_eye != from_start || (from_eye && (he.prim != hs.prim || he.face != hs.face
-                    || fabs(all.t0[m] + num_to_d(hs.t) - num_to_d(he.t)) > 1e-9 * (1 + num_to_d(he.t)))))
-                    fail_msg("deck %d: from the eye %d (primitive %d face %d t %.17g), from t0 %.17g %d "
-                             "(primitive %d face %d t %.17g)\n%s", deck, from_eye, he.prim, he.face,
-                             num_to_d(he.t), all.t0[m], from_start, hs.prim, hs.face, num_to_d(hs.t), text);
-                hits += from_eye;
-                f64_cscene_primary_batch(cs, &one, 1, all.t0[m] + 2);
-                assert_true(one.st[0] != CSCENE_RAY || one.t0[0] >= all.t0[m] + 2);
-            }
-        }
-        arena_free(&ar);
-        f64_cscene_free(cs);
-        scene_free(sc);
-    }
+    for (deck = 0; deck < 3000; deck++)
+        cscene_test_view(&seed, &c);
     printf("primary batch: %ld rays started (%ld hit near, %ld far), %ld given no start, %ld refused\n",
-           rays, hits, far, none, bad);
-    assert_true(hits > 10000 && none > 1000 && bad > 1000);
+           c.rays, c.hits, c.far, c.none, c.bad);
+    assert_true(c.hits > 10000 && c.none > 1000 && c.bad > 1000);
 }
 
 int main(void)
