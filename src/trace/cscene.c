@@ -297,7 +297,7 @@ void NS(cscene_primary_batch)(const cscene *cs, cscene_batch *b, int n, double a
         for (m = 0; m < n; m++) {
             double tc = -(cs->eye[0] * b->u[0][m] + cs->eye[1] * b->u[1][m] + cs->eye[2] * b->u[2][m]);
             double h2 = r2 - (cs->eye2 - tc * tc), t = tc - sqrt(h2);
-            b->t0[m] = (h2 >= 0) & (tc > 0) ? t : HUGE_VAL;
+            b->t0[m] = ((h2 >= 0) & (tc > 0)) ? t : HUGE_VAL;
         }
     } else {
         for (m = 0; m < n; m++)
@@ -307,7 +307,7 @@ void NS(cscene_primary_batch)(const cscene *cs, cscene_batch *b, int n, double a
         const double *pl = cs->planes[k], gap = cs->plane_gap[k];
         for (m = 0; m < n; m++) {
             double den = pl[0] * b->u[0][m] + pl[1] * b->u[1][m] + pl[2] * b->u[2][m], th = gap / den;
-            b->t0[m] = (den != 0) & (th > after) & (th < b->t0[m]) ? th : b->t0[m];
+            b->t0[m] = ((den != 0) & (th > after) & (th < b->t0[m])) ? th : b->t0[m];
         }
     }
     for (m = 0; m < n; m++)
