@@ -111,9 +111,9 @@ static inline int prim_face_plane(int kind, int face)
 
 /* Compiles scene primitive sp (index id) under the normalisation nm, its
  * planes into pl and pl_d (prim_nplanes(sp->kind) entries each) and its
- * placement into fr, all kept by out. 0 on success; DIAG_INPUT (located at sp->loc in file) for bad
- * dimensions, non-finite or singular transforms, or a primitive outside
- * the range. */
+ * placement into fr, all kept by out. 0 on success; DIAG_INPUT (located at
+ * sp->loc in file) for bad dimensions, non-finite or singular transforms,
+ * or a primitive outside the range. */
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
                      double (*pl_d)[4], prim_frame *fr, prim *out, const char *file, diag *err);
 

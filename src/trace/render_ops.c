@@ -165,6 +165,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
             i = j = 0;
             while (xt < xe) {
                 int n, m;
+                /* one sample a pixel needs no counters */
                 for (n = 0; aa == 1 && n < CSCENE_BATCH && x < xe; n++, x++)
                     for (k = 0; k < 3; k++)
                         b.d[k][n] = col[x - xs][k] + sy[0] * up[k];
