@@ -49,6 +49,55 @@ static void test_fx_edges(void **state)
     assert_int_equal(fx32_div(FX32_ONE, 3 * FX32_ONE), fx32_from_double(1.0 / 3));
 }
 
+/* fx_shr_round(v, k) = v / 2^k rounded to nearest, ties away from zero,
+ * for every k it allows (1..62) on random v within its bound, exact ties
+ * (2m + 1) 2^(k-1) and their neighbours, and the bound's ends; long
+ * double holds every such v and v / 2^k exactly. fx16_sat and fx16_abs:
+ * the value and one counted overflow exactly outside [FX16_MIN, FX16_MAX]. */
+static void test_fx_shr_round_sat_abs(void **state)
+{
+    uint64_t s = test_seed("test_fx_shr_round_sat_abs");
+    int k, i, d;
+    (void)state;
+    for (k = 1; k <= 62; k++) {
+        int64_t lim = INT64_MAX - ((int64_t)1 << (k - 1));      /* |v| <= lim */
+        for (i = 0; i < 20000; i++) {
+            int64_t v;
+            if (i < 4) {
+                v = i == 0 ? lim : i == 1 ? -lim : i == 2 ? 0 : (i == 3 ? 1 : -1);
+            } else if (i % 2) {   /* a tie, or one either side of it */
+                int64_t m = (int64_t)(test_rand(&s) >> (1 + test_rand(&s) % 63)) >> k;
+                v = (2 * m + 1) * ((int64_t)1 << (k - 1)) + (int64_t)(test_rand(&s) % 3) - 1;
+                if (test_rand(&s) & 1)
+                    v = -v;
+            } else {
+                v = (int64_t)(test_rand(&s) >> (1 + test_rand(&s) % 63));
+                if (test_rand(&s) & 1)
+                    v = -v;
+            }
+            if (v > lim || v < -lim)
+                continue;
+            if ((long double)fx_shr_round(v, k) != ref_round(ldexpl((long double)v, -k)))
+                fail_msg("fx_shr_round(%lld, %d) = %lld", (long long)v, k, (long long)fx_shr_round(v, k));
+        }
+    }
+    for (i = 0; i < 200000; i++) {
+        int64_t v = i < 64 ? ((int64_t)1 << 31) + (i % 8) - 4 : (int64_t)(test_rand(&s) >> (1 + test_rand(&s) % 63));
+        for (d = 0; d < 2; d++, v = -v) {
+            unsigned long before = fx_overflows;
+            int over = v > FX16_MAX || v < FX16_MIN;
+            fx16 got = fx16_sat(v);
+            assert_int_equal(got, over ? (v > 0 ? FX16_MAX : FX16_MIN) : v);
+            assert_true(fx_overflows == before + (unsigned long)over);
+            if (!over) {
+                before = fx_overflows;
+                assert_int_equal(fx16_abs((fx16)v), got == FX16_MIN ? FX16_MAX : got < 0 ? -got : got);
+                assert_true(fx_overflows == before + (unsigned long)(got == FX16_MIN));
+            }
+        }
+    }
+}
+
 static void test_fx_div_sqrt_match_long_double(void **state)
 {
     uint64_t s = test_seed("test_fx_div_sqrt_match_long_double");
@@ -354,6 +403,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fx_mul_matches_long_double),
         cmocka_unit_test(test_fx_edges),
+        cmocka_unit_test(test_fx_shr_round_sat_abs),
         cmocka_unit_test(test_fx_div_sqrt_match_long_double),
         cmocka_unit_test(test_fx_sqrt_exhaustive_low_and_near_squares),
         cmocka_unit_test(test_fx32_matches_long_double),
