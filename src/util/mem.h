@@ -21,11 +21,18 @@ char *mem_strdup(const char *s);
 int mem_grow(void **p, size_t *cap, size_t need, size_t elem);
 
 /* Blocks of MEM_HUGE_MIN bytes or more are advised for transparent huge
- * pages where Linux offers them (mem.c says why): mem_huge_range gives the
- * range advised for a block of size bytes at address p, the 2 MiB-aligned
- * interior, as 1 and *start, *len; 0 when there is none. */
+ * pages where Linux offers them (mem.c says why). mem_huge_size gives the
+ * bytes asked of malloc for a block of size bytes: for a large block, the
+ * next size that with MEM_HUGE_SLACK bytes of header fills a whole number
+ * of 2 MiB pages. mem_huge_range gives the range advised for a block of
+ * size bytes at address p, as 1 and *start, *len (0 when there is none):
+ * the 2 MiB pages the block covers, a page counted when the block starts
+ * less than MEM_HUGE_SLACK bytes past its start or ends less than that
+ * before its end. */
 #define MEM_HUGE_PAGE ((uintptr_t)2 << 20)
 #define MEM_HUGE_MIN ((size_t)2 << 20)
+#define MEM_HUGE_SLACK ((uintptr_t)32)
+size_t mem_huge_size(size_t size);
 int mem_huge_range(uintptr_t p, size_t size, uintptr_t *start, size_t *len);
 
 /* Test hook: allocations succeed n more times, then fail; n < 0 disables.

@@ -51,8 +51,9 @@ static void test_util_mem_fail_and_overflow(void **state)
     assert_null(mem_calloc((size_t)-1, 16));
 }
 
-/* The range advised for huge pages is the 2 MiB-aligned interior of a
- * block of at least MEM_HUGE_MIN bytes. On Linux with transparent huge
+/* A block of at least MEM_HUGE_MIN bytes is asked of malloc padded to
+ * whole 2 MiB pages, and the pages it covers are advised for huge pages
+ * (mem.h). On Linux with transparent huge
  * pages offered on request ("[madvise]" or "[always]" in
  * /sys/kernel/mm/transparent_hugepage/enabled), a block of 8 MiB from
  * mem_alloc lies in a mapping whose VmFlags (proc(5), smaps) carry "hg",
@@ -65,15 +66,27 @@ static void test_util_mem_huge_pages(void **state)
     FILE *f;
     char line[512];
     (void)state;
+    /* a large block is asked for so that with MEM_HUGE_SLACK bytes it
+     * fills whole 2 MiB pages; a small one as it is */
+    assert_true(mem_huge_size(MEM_HUGE_MIN - 1) == MEM_HUGE_MIN - 1);
+    assert_true(mem_huge_size(MEM_HUGE_MIN) == 2 * M - MEM_HUGE_SLACK);
+    assert_true(mem_huge_size(2 * M - MEM_HUGE_SLACK) == 2 * M - MEM_HUGE_SLACK);
+    assert_true(mem_huge_size(2 * M - MEM_HUGE_SLACK + 1) == 3 * M - MEM_HUGE_SLACK);
+    assert_true(mem_huge_size(SIZE_MAX - 8) == SIZE_MAX - 8);
+    /* the pages the block covers, its first and last counted when it
+     * reaches them within MEM_HUGE_SLACK bytes (the allocator's header) */
     assert_int_equal(mem_huge_range(3 * M, 2 * M, &a, &n), 1);
     assert_true(a == 3 * M && n == 2 * M);
+    assert_int_equal(mem_huge_range(3 * M + 16, 4 * M - 32, &a, &n), 1);   /* a whole mapping */
+    assert_true(a == 3 * M && n == 4 * M);
     assert_int_equal(mem_huge_range(3 * M + 16, 4 * M, &a, &n), 1);
-    assert_true(a == 4 * M && n == 3 * M);
-    assert_int_equal(mem_huge_range(3 * M + 16, 2 * M, &a, &n), 1);
+    assert_true(a == 3 * M && n == 4 * M);
+    assert_int_equal(mem_huge_range(3 * M + MEM_HUGE_SLACK, 2 * M, &a, &n), 1);
     assert_true(a == 4 * M && n == M);
-    assert_int_equal(mem_huge_range(3 * M + 16, M + 32, &a, &n), 0);   /* no aligned 2 MiB inside */
+    assert_int_equal(mem_huge_range(3 * M + 64, M + 32, &a, &n), 0);   /* no whole page */
     assert_int_equal(mem_huge_range(3 * M, MEM_HUGE_MIN - 1, &a, &n), 0);
     assert_int_equal(mem_huge_range(UINTPTR_MAX - M, 4 * M, &a, &n), 0);
+    assert_int_equal(mem_huge_range(M, SIZE_MAX - M, &a, &n), 0);
     f = fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
     if (!f || !fgets(line, sizeof line, f) || (!strstr(line, "[madvise]") && !strstr(line, "[always]"))) {
         if (f)
