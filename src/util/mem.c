@@ -4,6 +4,7 @@
 #endif
 #include "util/mem.h"
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #if defined(__linux__)
@@ -74,13 +75,45 @@ int mem_huge_range(uintptr_t p, size_t size, uintptr_t *start, size_t *len)
     return 1;
 }
 
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+#define MEM_MADV_COLLAPSE 25   /* Linux 6.1's MADV_COLLAPSE, which glibc 2.36 does not name */
+
+/* 1 when the system offers huge pages on advice ("[always]" or
+ * "[madvise]" in /sys/kernel/mm/transparent_hugepage/enabled), read once. */
+static int mem_thp_offered(void)
+{
+    static int offered = -1;
+    int v;
+#pragma omp critical(mem_hook)
+    {
+        if (offered < 0) {
+            FILE *f = fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
+            char line[128];
+            offered = f && fgets(line, sizeof line, f) && (strstr(line, "[always]") || strstr(line, "[madvise]"));
+            if (f)
+                fclose(f);
+        }
+        v = offered;
+    }
+    return v;
+}
+#endif
+
+/* The block's first 2 MiB hold malloc's header, written before the advice
+ * and so faulted as a 4 KiB page: later faults there would map 4 KiB
+ * pages too. Where the system offers huge pages, MADV_COLLAPSE makes that
+ * stretch one huge page at once (the block's start is always written
+ * first); a kernel without it refuses, which changes nothing. */
 static void *mem_huge(void *p, size_t size)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     uintptr_t a;
     size_t n;
-    if (p && mem_huge_range((uintptr_t)p, size, &a, &n))
+    if (p && mem_huge_range((uintptr_t)p, size, &a, &n)) {
         (void)madvise((void *)a, n, MADV_HUGEPAGE);
+        if (a < (uintptr_t)p && mem_thp_offered())
+            (void)madvise((void *)a, MEM_HUGE_PAGE, MEM_MADV_COLLAPSE);
+    }
 #else
     (void)size;
 #endif
