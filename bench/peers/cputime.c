@@ -1,6 +1,7 @@
-/* cputime — runs a command and appends "cpu wall" (seconds, microsecond
- * resolution) to a file: user + system time of the command (wait4's
- * rusage, the child alone) and its wall time. /usr/bin/time prints CPU in
+/* cputime — runs a command and appends "cpu wall user system" (seconds,
+ * microsecond resolution) to a file: user + system time of the command
+ * (wait4's rusage, the child alone), its wall time, and the user and
+ * system times apart. /usr/bin/time prints CPU in
  * 10 ms steps, a sixth of a 0.06 s render; the bench/peers scripts time
  * each run through this instead (built by make bench-peers).
  *   usage: cputime OUT CMD [ARG...]; exit: the command's status, 127 when
@@ -51,9 +52,12 @@ int main(int argc, char **argv)
         perror(argv[1]);
         return 2;
     }
-    fprintf(out, "%.6f %.6f\n",
-            ru.ru_utime.tv_sec + ru.ru_stime.tv_sec + (ru.ru_utime.tv_usec + ru.ru_stime.tv_usec) / 1e6,
-            (t1.tv_sec - t0.tv_sec) + (t1.tv_nsec - t0.tv_nsec) / 1e9);
+    {
+        double user = ru.ru_utime.tv_sec + ru.ru_utime.tv_usec / 1e6;
+        double sys = ru.ru_stime.tv_sec + ru.ru_stime.tv_usec / 1e6;
+        fprintf(out, "%.6f %.6f %.6f %.6f\n", user + sys,
+                (t1.tv_sec - t0.tv_sec) + (t1.tv_nsec - t0.tv_nsec) / 1e9, user, sys);
+    }
     if (fclose(out)) {
         perror(argv[1]);
         return 2;

@@ -9,12 +9,41 @@
 # own cost at one object, by the medians and (last three columns) by the
 # minima, the runs a shared machine disturbed least. The scenes are written here, both from the one
 # list of placements. Usage: sh bench/peers/grow.sh [MAPRT [CPUTIME]]
+# sh bench/peers/grow.sh --deck N FILE writes the deck of the n x n grid
+# to FILE and does nothing else (for timing one size alone, tools/ab.sh).
+dir=$(dirname "$0")
+
+# place N: the grid's scale and translations, one object a line
+place() {
+  awk -v n="$1" 'BEGIN {
+    s = 9 / n; step = 27 / n
+    for (i = 0; i < n; i++) for (j = 0; j < n; j++)
+      printf "%.6f %.6f %.6f %.6f\n", s, -13.5 + step * (i + 0.5), -13.5 + step * (j + 0.5), s - 1
+  }'
+}
+# deck PLACEMENTS: the maprt deck of those placements on standard output
+deck() {
+  sed -n '/^EYE/,/^HALFSPACE/p' "$dir/csg81.scene"
+  awk '{ printf "OBJECT PART SCALE %s TRANSLATE %s %s %s\n", $1, $2, $3, $4 }' "$1"
+  echo "OBJECT GROUND"
+}
+
+if [ "${1:-}" = --deck ]; then
+  n=${2:?usage: grow.sh --deck N FILE}; out=${3:?usage: grow.sh --deck N FILE}
+  case $n in ''|*[!0-9]*|0) echo "bench-grow: N must be a positive count" >&2; exit 2 ;; esac
+  [ -e "$out" ] && [ "$out" -ef "$dir/csg81.scene" ] && { echo "bench-grow: $out is the deck read" >&2; exit 2; }
+  p=$(mktemp "${TMPDIR:-/tmp}/maprt-grow-XXXXXX") || exit 3
+  o=$(mktemp "$(dirname "$out")/.maprt-grow-XXXXXX") || { rm -f "$p"; exit 3; }
+  place "$n" > "$p" && deck "$p" > "$o" && mv -f "$o" "$out"; status=$?
+  rm -f "$p" "$o"
+  exit "$status"
+fi
+
 bin=${1:-build/maprt}
 cputime=${2:-build/bench/cputime}
 runs=${GROW_RUNS:-3}
 size=${GROW_SIZE:-512x384}
 w=${size%x*}; h=${size#*x}
-dir=$(dirname "$0")
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/maprt-grow-XXXXXX") || exit 3
 trap 'rm -rf "$tmp"' EXIT INT TERM
 command -v povray >/dev/null 2>&1 || { echo "bench-grow: povray (Debian povray) is not installed" >&2; exit 3; }
@@ -24,14 +53,8 @@ need_timer
 # scenes N: $tmp/gN.scene and $tmp/gN.pov
 scenes() {
   n=$1
-  awk -v n="$n" 'BEGIN {
-    s = 9 / n; step = 27 / n
-    for (i = 0; i < n; i++) for (j = 0; j < n; j++)
-      printf "%.6f %.6f %.6f %.6f\n", s, -13.5 + step * (i + 0.5), -13.5 + step * (j + 0.5), s - 1
-  }' > "$tmp/place"
-  { sed -n '/^EYE/,/^HALFSPACE/p' "$dir/csg81.scene"
-    awk '{ printf "OBJECT PART SCALE %s TRANSLATE %s %s %s\n", $1, $2, $3, $4 }' "$tmp/place"
-    echo "OBJECT GROUND"; } > "$tmp/g$n.scene"
+  place "$n" > "$tmp/place"
+  deck "$tmp/place" > "$tmp/g$n.scene"
   { sed -n '1,/^#include/p' "$dir/csg81.pov"
     awk '{ printf "object { Part scale %s translate <%s, %s, %s> }\n", $1, $2, $3, $4 }' "$tmp/place"
     echo "object { Floor }"; } > "$tmp/g$n.pov"
