@@ -1,0 +1,38 @@
+#!/bin/sh
+# The timing tools of the benchmarks: bench/peers/cputime records "cpu
+# wall user system" with cpu = user + system; tools/ab.sh alternates two
+# binaries and reports both and their ratio; bench/peers/grow.sh --deck N
+# writes bench-grow's n x n deck, which maprt reads, and refuses a bad N
+# and the deck it reads from. Exit 77 (skipped) without a C compiler.
+set -u
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "bench_tools.sh: $*" >&2; exit 1; }
+cc=${CC:-cc}
+command -v "$cc" >/dev/null 2>&1 || { echo "skipped: needs a C compiler ($cc)"; exit 77; }
+"$cc" -std=c99 -O2 -o "$tmp/cputime" bench/peers/cputime.c || fail "bench/peers/cputime.c did not build"
+
+"$tmp/cputime" "$tmp/t" sh -c 'i=0; while [ $i -lt 20000 ]; do i=$((i + 1)); done' || fail "cputime: the command failed"
+awk 'NF != 4 || $1 < 0 || $2 <= 0 || $1 - $3 - $4 > 2e-6 || $3 + $4 - $1 > 2e-6 { bad = 1 } END { exit bad || NR != 1 }' "$tmp/t" \
+  || fail "cputime's record is not cpu wall user system: $(cat "$tmp/t")"
+"$tmp/cputime" "$tmp/t" sh -c 'exit 3'; [ $? -eq 3 ] || fail "cputime does not pass on the command's status"
+
+sh bench/peers/grow.sh --deck 3 "$tmp/g3.scene" || fail "grow.sh --deck 3 failed"
+[ "$(grep -c '^OBJECT PART ' "$tmp/g3.scene")" -eq 9 ] || fail "the 3 x 3 deck does not hold 9 objects"
+$MAPRT render "$tmp/g3.scene" -o "$tmp/g3.png" --size 16x12 --threads 1 --quiet || fail "maprt does not read the 3 x 3 deck"
+cp bench/peers/csg81.scene "$tmp/csg81.before"
+sh bench/peers/grow.sh --deck 0 "$tmp/g0.scene" 2>/dev/null && fail "grow.sh --deck 0 succeeded"
+sh bench/peers/grow.sh --deck x "$tmp/gx.scene" 2>/dev/null && fail "grow.sh --deck x succeeded"
+sh bench/peers/grow.sh --deck 2 bench/peers/csg81.scene 2>/dev/null && fail "grow.sh --deck wrote over the deck it reads"
+cmp -s bench/peers/csg81.scene "$tmp/csg81.before" || fail "bench/peers/csg81.scene changed"
+[ -e "$tmp/g0.scene" ] || [ -e "$tmp/gx.scene" ] && fail "a refused --deck left a file"
+
+out=$(CPUTIME="$tmp/cputime" sh tools/ab.sh 2 $MAPRT $MAPRT render "$tmp/g3.scene" -o "$tmp/ab.png" --size 16x12 --threads 1 --quiet) \
+  || fail "tools/ab.sh failed"
+for w in "old: cpu median" "new: cpu median" "new/old: medians"; do
+  printf '%s\n' "$out" | grep -q "^$w" || fail "tools/ab.sh printed no '$w': $out"
+done
+err=$(CPUTIME="$tmp/cputime" sh tools/ab.sh x "$MAPRT" "$MAPRT" --version 2>&1 >/dev/null) \
+  && fail "tools/ab.sh took a count that is not one"
+printf '%s\n' "$err" | grep -q "N must be a count" || fail "tools/ab.sh on a bad count: $err"
+echo "ok: cputime's record, tools/ab.sh, grow.sh --deck"
