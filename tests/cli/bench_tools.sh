@@ -5,11 +5,11 @@
 # writes bench-grow's n x n deck, which maprt reads, and refuses a bad N
 # and the deck it reads from. Exit 77 (skipped) without a C compiler.
 set -u
+cc=${CC:-cc}
+command -v "$cc" >/dev/null 2>&1 || { echo "skipped: needs a C compiler ($cc)"; exit 77; }
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "bench_tools.sh: $*" >&2; exit 1; }
-cc=${CC:-cc}
-command -v "$cc" >/dev/null 2>&1 || { echo "skipped: needs a C compiler ($cc)"; exit 77; }
 "$cc" -std=c99 -O2 -o "$tmp/cputime" bench/peers/cputime.c || fail "bench/peers/cputime.c did not build"
 
 "$tmp/cputime" "$tmp/t" sh -c 'i=0; while [ $i -lt 20000 ]; do i=$((i + 1)); done' || fail "cputime: the command failed"
