@@ -22,7 +22,19 @@ MODAL_SRC   := $(foreach d,$(MODAL_DIRS),$(wildcard $(d)/*.c))
 COMMON_SRC  := $(filter-out src/cli/main.c $(MODAL_SRC),\
                  $(wildcard src/*/*.c vm_cms_shim/*.c display5080/*.c))
 COMMON_OBJ  := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
-MODAL_OBJ   := $(foreach m,$(MODES),$(MODAL_SRC:%.c=$(BUILD)/$(m)/%.o))
+# x86-64 with GCC 12 or later: each mode's tracer is compiled a second time
+# for x86-64-v3 (AVX2, BMI2, FMA: symbols q16_v3_..., objects in
+# BUILD/q16-v3), and render_ops_find takes it where the processor has that
+# level (__builtin_cpu_supports, which Clang 14 cannot ask). a*b+c must
+# stay two roundings, not one FMA: -std=c99 already keeps GCC from fusing
+# them, -ffp-contract=off says so where it matters (fused, the glass
+# scene's f32 picture changes). Both builds draw the same pictures, bit
+# for bit (tests/cli/isa.sh). `make ISA_V3=` builds the baseline alone.
+ISA_V3 ?= $(shell printf 'int main(void) { return !__builtin_cpu_supports("x86-64-v3"); }\n' \
+            | $(CC) -march=x86-64-v3 -x c - -fsyntax-only 2>/dev/null && echo yes)
+V3_CFLAGS   := -march=x86-64-v3 -ffp-contract=off
+MODE_DIRS   := $(MODES) $(if $(ISA_V3),$(MODES:%=%-v3))
+MODAL_OBJ   := $(foreach m,$(MODE_DIRS),$(MODAL_SRC:%.c=$(BUILD)/$(m)/%.o))
 LIB         := $(BUILD)/libmaprt.a
 BIN         := $(BUILD)/maprt
 
@@ -57,7 +69,7 @@ deps-demo deps-test deps-bench deps-fuzz:
 # Objects depend on the flags they are built with, so that a package found
 # later by pkg-config (e.g. OSMesa installed by `make deps`) rebuilds them.
 FLAGS_STAMP := $(BUILD)/flags.stamp
-FLAGS_NOW = $(CC) $(CPPFLAGS) $(ALL_CFLAGS) $(LDFLAGS) $(LIBS)
+FLAGS_NOW = $(CC) $(CPPFLAGS) $(ALL_CFLAGS) $(LDFLAGS) $(LIBS) $(if $(ISA_V3),$(V3_CFLAGS))
 .PHONY: FORCE
 FORCE:
 $(FLAGS_STAMP): FORCE
@@ -88,6 +100,14 @@ $(BUILD)/$(1)/%.o: %.c $(FLAGS_STAMP)
 	$$(CC) $$(CPPFLAGS) -DNUM_MODE=$(1) -DNUM_MODE_$(1) $$(ALL_CFLAGS) -c $$< -o $$@
 endef
 $(foreach m,$(MODES),$(eval $(call MODE_RULE,$(m))))
+
+define MODE_V3_RULE
+$(BUILD)/$(1)-v3/%.o: %.c $(FLAGS_STAMP)
+	@mkdir -p $$(@D)
+	$$(CC) $$(CPPFLAGS) -DNUM_MODE=$(1) -DNUM_MODE_$(1) -DNUM_ISA_V3 $$(ALL_CFLAGS) $(V3_CFLAGS) -c $$< -o $$@
+endef
+$(if $(ISA_V3),$(foreach m,$(MODES),$(eval $(call MODE_V3_RULE,$(m)))))
+$(BUILD)/obj/src/render/render.o: MODULE_CFLAGS += $(if $(ISA_V3),-DRENDER_ISA_V3)
 
 $(LIB): $(COMMON_OBJ) $(MODAL_OBJ)
 	@rm -f $@
@@ -165,11 +185,16 @@ print-libs:
 	@echo $(LIBS)
 
 # --- race against peers (POV-Ray 3.7 and a minimal hand-written tracer) ---
-# The minimal tracer is compiled with maprt's own CFLAGS: a ratio between
-# them then measures the programs, not the optimisation levels.
+# The minimal tracer is compiled with maprt's own CFLAGS, and as maprt's
+# tracer once more for x86-64-v3 (bench/peers/run.sh runs the one of the
+# same code as maprt's): a ratio between them then measures the programs,
+# not the optimisation levels.
 $(BUILD)/bench/minimal: bench/peers/minimal.c
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(CFLAGS) -o $@ $< -lm
+$(BUILD)/bench/minimal-v3: bench/peers/minimal.c
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) $(V3_CFLAGS) -o $@ $< -lm
 
 # The timer of every run of the two races (microseconds of CPU).
 $(BUILD)/bench/cputime: bench/peers/cputime.c
@@ -177,7 +202,7 @@ $(BUILD)/bench/cputime: bench/peers/cputime.c
 	$(CC) $(WARN) $(CFLAGS) -o $@ $<
 
 .PHONY: bench-peers
-bench-peers: deps all $(BUILD)/bench/minimal $(BUILD)/bench/cputime
+bench-peers: deps all $(BUILD)/bench/minimal $(if $(ISA_V3),$(BUILD)/bench/minimal-v3) $(BUILD)/bench/cputime
 	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal $(BUILD)/bench/cputime
 
 .PHONY: bench-grow

@@ -4,4 +4,4 @@
 # lane whose result is then not selected (no code here reads errno after
 # a math call or tests floating-point flags); the values are IEEE's
 # either way, so the pictures do not change (docs/performance.md).
-$(foreach m,$(MODES),$(BUILD)/$(m)/src/trace/cscene.o): MODULE_CFLAGS += -fno-math-errno -fno-trapping-math
+$(foreach m,$(MODE_DIRS),$(BUILD)/$(m)/src/trace/cscene.o): MODULE_CFLAGS += -fno-math-errno -fno-trapping-math

@@ -26,6 +26,14 @@ command -v povray >/dev/null 2>&1 || { echo "bench-peers: povray (Debian povray)
 
 . "$dir/lib.sh"
 need_timer
+# maprt runs its x86-64-v3 tracer where it can (render --isa): the minimal
+# tracer then runs its x86-64-v3 build beside it (MINIMAL-v3, the Makefile)
+isa=$("$bin" render bench/peers/sphere.scene -o "$tmp/isa.ppm" --size 8x6 --numeric f64 --stats 2>/dev/null |
+      sed -n 's/^isa=//p')
+if [ "$isa" = x86-64-v3 ]; then
+  [ -x "$minimal-v3" ] || { echo "bench-peers: maprt runs x86-64-v3 code and $minimal-v3 is not built" >&2; exit 3; }
+  minimal=$minimal-v3
+fi
 pov() { povray "+I$1" "+L$dir" "+O$2" "+W$3" "+H$4" +WT1 -D "File_Gamma=1.0" Display=off "$5"; }
 
 echo "scene,size,pixels_over_8,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_wall_s,f64_wall_s,pov_wall_s,q16/pov_cpu,f64/pov_cpu,q16/pov_wall,f64/pov_wall,q16/pov_cpu_min,f64/pov_cpu_min"
@@ -52,7 +60,7 @@ done
 # at 2048x1536: at 1024x768 the minimal tracer runs for a few
 # hundredths of a second, within the start-up's noise
 echo
-echo "sphere.scene at 2048x1536 against the minimal tracer (bench/peers/minimal.c):"
+echo "sphere.scene at 2048x1536 against the minimal tracer (bench/peers/minimal.c as $minimal; maprt's tracer: ${isa:-unknown}):"
 "$minimal" "$tmp/min.ppm" 2048 1536 || exit 3
 "$bin" render bench/peers/sphere.scene -o "$tmp/sphere2.png" --size 2048x1536 --numeric f64 --threads 1 || exit 3
 # the ratio below compares like with like only if the pictures are the same

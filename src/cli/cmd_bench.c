@@ -234,7 +234,7 @@ static int cmd_bench_modes(const char *s, const render_ops **ops, int *n)
     strcpy(buf, s);
     *n = 0;
     for (tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-        const render_ops *o = render_ops_find(tok);
+        const render_ops *o = render_ops_find(tok, RENDER_ISA_AUTO);
         if (!o)
             return cli_usage_error("bench", "--modes: '%s' is not q16, q32, f32, f64, hfp32 or hfp64",
                                    tok);

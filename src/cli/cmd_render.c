@@ -17,6 +17,7 @@
 #include "util/outfile.h"
 #include <omp.h>
 #include <string.h>
+#include <strings.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -64,6 +65,10 @@ static void cmd_render_help(FILE *f)
         "  --numeric MODE        arithmetic of the geometry: q16 (Q16.16 fixed point, the\n"
         "                        default), q32 (Q32.32), f32 or f64 (IEEE binary32/64),\n"
         "                        hfp32 or hfp64 (System/370 short/long hexadecimal)\n"
+        "  --isa auto|baseline   the tracer's machine code: auto (default) takes the\n"
+        "                        x86-64-v3 build (AVX2, BMI2, FMA) where the binary\n"
+        "                        holds it and the processor runs it, baseline the\n"
+        "                        other; the pictures are the same\n"
         "  --size WxH            image size in pixels, 1..%d each (default: the\n"
         "                        deck's SIZE; at most %d with --dl)\n"
         "  --threads N           threads for the render and the PNG encoder, 1..%d\n"
@@ -71,7 +76,7 @@ static void cmd_render_help(FILE *f)
         "  --aa N                N x N samples per pixel, 1..%d (default 1)\n"
         , SCENE_MAX_SIDE, DL_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA);
     fprintf(f,
-        "  --stats               print key=value lines to stdout: numeric rays.primary\n"
+        "  --stats               print key=value lines to stdout: numeric isa rays.primary\n"
         "                        rays.shadow rays.reflected rays.refracted pds.lookups\n"
         "                        fx.overflows tests.prim tests.bound csg.pruned\n"
         "                        skipped.uv (hits whose face needs no (u,v): no PDS,\n"
@@ -155,6 +160,7 @@ int cmd_render(int argc, char **argv)
     const char *outs[4];
     cli_mpi_share share[CLI_MPI_MAX_RANKS];
     const render_ops *ops = NULL;
+    render_isa isa = RENDER_ISA_AUTO;
     render_opts o;
     render_stats st;
     render_fb fb;
@@ -215,6 +221,15 @@ int cmd_render(int argc, char **argv)
             continue;
         } else if (!strcmp(a, "--numeric")) {
             if (!(mode = cli_value("render", argc, argv, &i))) status = CLI_USAGE;
+        } else if (!strcmp(a, "--isa")) {
+            if (!(v = cli_value("render", argc, argv, &i)))
+                status = CLI_USAGE;
+            else if (!strcasecmp(v, "auto"))
+                isa = RENDER_ISA_AUTO;
+            else if (!strcasecmp(v, "baseline"))
+                isa = RENDER_ISA_BASELINE;
+            else
+                status = cli_usage_error("render", "--isa: '%s' is not auto or baseline", v);
         } else if (!strcmp(a, "--size")) {
             if (!(v = cli_value("render", argc, argv, &i))
                 || cli_size("render", a, v, SCENE_MAX_SIDE, &o.width, &o.height))
@@ -259,7 +274,7 @@ int cmd_render(int argc, char **argv)
         status = cli_usage_error("render", "--stats writes to standard output, so it cannot go with -o -");
     if (!status && out_png && !strcmp(out_png, "-") && isatty(1))
         status = cli_usage_error("render", "-o -: standard output is a terminal; redirect it to a file or a pipe");
-    if (!status && !(ops = render_ops_find(mode)))
+    if (!status && !(ops = render_ops_find(mode, isa)))
         status = cli_usage_error("render", "--numeric: '%s' is not q16, q32, f32, f64, hfp32 or hfp64", mode);
     if (!status && !out_dl && (dlo.dither || wireframe || dlo.dac != 4))
         status = cli_usage_error("render", "--dac, --dither and --wireframe need --dl");
@@ -342,7 +357,7 @@ int cmd_render(int argc, char **argv)
     if (progress)
         cmd_render_summary(scene_name, &o, &fb, ops, &st, cpu0, out_png, out_dl);
     if (stats) {
-        printf("numeric=%s\n", ops->name);
+        printf("numeric=%s\nisa=%s\n", ops->name, ops->isa);
         render_stats_print(stdout, &st);
         if (cli_mpi_size() > 1)
             cli_mpi_print_shares(stdout, share, cli_mpi_size());

@@ -17,6 +17,9 @@
  *                                one instruction, which a loop can vectorise)
  *   NUM_NAME                     "q16" | "q32" | "f32" | "f64" | "hfp32" | "hfp64"
  *   NS(name)                     mode-prefixed symbol: NS(trace) -> q16_trace
+ *                                (q16_v3_trace in the x86-64-v3 build of the
+ *                                mode, -DNUM_ISA_V3: see the Makefile)
+ *   NUM_ISA_NAME                 "baseline" | "x86-64-v3"
  * Mode-independent code reaches modal code only through per-mode ops tables
  * (e.g. q16_render_ops), never by including this header. */
 #ifndef NUM_H
@@ -24,7 +27,13 @@
 
 #define NUM_NS_2(m, x) m##_##x
 #define NUM_NS_1(m, x) NUM_NS_2(m, x)
+#if defined(NUM_ISA_V3)
+#define NS(x) NUM_NS_1(NUM_NS_1(NUM_MODE, v3), x)
+#define NUM_ISA_NAME "x86-64-v3"
+#else
 #define NS(x) NUM_NS_1(NUM_MODE, x)
+#define NUM_ISA_NAME "baseline"
+#endif
 
 #if defined(NUM_MODE_q16)
 #include "num/num_q16.h"

@@ -8,14 +8,37 @@
 #include <time.h>
 #include <strings.h>
 
-const render_ops *render_ops_find(const char *name)
+#if defined(RENDER_ISA_V3)
+extern const render_ops q16_v3_render_ops, q32_v3_render_ops, f32_v3_render_ops, f64_v3_render_ops,
+    hfp32_v3_render_ops, hfp64_v3_render_ops;
+
+/* 1 when the processor (and the kernel, for the AVX registers) runs
+ * x86-64-v3 code. */
+static int render_isa_v3(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("x86-64-v3") != 0;
+}
+#endif
+
+const render_ops *render_ops_find(const char *name, render_isa isa)
 {
     static const render_ops *const all[] = {&q16_render_ops, &q32_render_ops, &f32_render_ops,
                                             &f64_render_ops, &hfp32_render_ops, &hfp64_render_ops};
+#if defined(RENDER_ISA_V3)
+    static const render_ops *const v3[] = {&q16_v3_render_ops, &q32_v3_render_ops, &f32_v3_render_ops,
+                                           &f64_v3_render_ops, &hfp32_v3_render_ops, &hfp64_v3_render_ops};
+#endif
     size_t i;
     for (i = 0; name && i < sizeof all / sizeof all[0]; i++)
-        if (!strcasecmp(all[i]->name, name))
+        if (!strcasecmp(all[i]->name, name)) {
+#if defined(RENDER_ISA_V3)
+            if (isa == RENDER_ISA_AUTO && render_isa_v3())
+                return v3[i];
+#endif
+            (void)isa;
             return all[i];
+        }
     return NULL;
 }
 

@@ -80,6 +80,8 @@ typedef struct render_fb {
  * of fb and adds to st. */
 typedef struct render_ops {
     const char *name;
+    const char *isa;          /* the code it was compiled for: "baseline" or
+                                 "x86-64-v3" (Makefile, ISA_V3) */
     int (*compile)(const scene *sc, void **cs, diag *err);
     void (*free)(void *cs);
     int (*thread_new)(const void *cs, void **tc);     /* 0, or -1 out of memory */
@@ -94,9 +96,14 @@ typedef struct render_ops {
 extern const render_ops q16_render_ops, q32_render_ops, f32_render_ops, f64_render_ops,
     hfp32_render_ops, hfp64_render_ops;
 
+/* Which build of a mode render_ops_find gives: the fastest this processor
+ * runs (x86-64-v3 where the binary holds it and the processor has AVX2,
+ * BMI2 and FMA), or the baseline. Both draw the same pictures. */
+typedef enum render_isa { RENDER_ISA_AUTO, RENDER_ISA_BASELINE } render_isa;
+
 /* The ops table for "q16", "q32", "f32", "f64", "hfp32" or "hfp64"; NULL for
  * anything else. */
-const render_ops *render_ops_find(const char *name);
+const render_ops *render_ops_find(const char *name, render_isa isa);
 
 /* Checks a region (x0 y0 x1 y1) against a width x height image: 0 when
  * 0 <= x0 < x1 <= width and 0 <= y0 < y1 <= height, or all four are 0. */

@@ -222,6 +222,7 @@ static void render_ops_tile(const void *vcs, void *vtc, const render_opts *o,
 
 const render_ops NS(render_ops) = {
     .name = NUM_NAME,
+    .isa = NUM_ISA_NAME,
     .compile = render_ops_compile,
     .free = render_ops_free,
     .thread_new = render_ops_thread_new,

@@ -49,7 +49,7 @@ static void test_render_goldens(void **state)
             diag_init(&err);
             snprintf(path, sizeof path, "tests/golden/%s-%s.png", scenes[s], modes[m]);
             assert_int_equal(image_read_png(path, 3, &gold, &err), 0);
-            assert_int_equal(render_scene(sc, render_ops_find(modes[m]), &o, &fb, &st, &err), 0);
+            assert_int_equal(render_scene(sc, render_ops_find(modes[m], RENDER_ISA_AUTO), &o, &fb, &st, &err), 0);
             bad = tt_image_over(&fb.img, &gold, 2);
             printf("# %s: %ld of %d pixels differ by more than 2/255\n", path, bad, 128 * 128);
             assert_true(bad <= 128 * 128 / 200);
@@ -82,7 +82,7 @@ static void test_render_unlit_attribute_skips_shadow_rays(void **state)
         long ball = 0, hits = 0, i;
         assert_non_null(sc);
         diag_init(&err);
-        assert_int_equal(render_scene(sc, render_ops_find(modes[m]), &o, &fb, &st, &err), 0);
+        assert_int_equal(render_scene(sc, render_ops_find(modes[m], RENDER_ISA_AUTO), &o, &fb, &st, &err), 0);
         for (i = 0; i < 64 * 48; i++) {
             hits += fb.pid[i] >= 0;
             if (fb.pid[i] == 0) {
@@ -260,13 +260,27 @@ static void test_render_glass_modes_agree(void **state)
 
 static void test_render_mode_lookup(void **state)
 {
+    const char *names[] = {"q16", "q32", "f32", "f64", "hfp32", "hfp64"};
+    size_t k;
     (void)state;
-    assert_ptr_equal(render_ops_find("q16"), &q16_render_ops);
-    assert_ptr_equal(render_ops_find("f64"), &f64_render_ops);
-    assert_string_equal(render_ops_find("q32")->name, "q32");
-    assert_string_equal(render_ops_find("f32")->name, "f32");
-    assert_null(render_ops_find("f16"));
-    assert_null(render_ops_find(NULL));
+    assert_ptr_equal(render_ops_find("q16", RENDER_ISA_BASELINE), &q16_render_ops);
+    assert_ptr_equal(render_ops_find("F64", RENDER_ISA_BASELINE), &f64_render_ops);
+    for (k = 0; k < sizeof names / sizeof names[0]; k++) {
+        const render_ops *b = render_ops_find(names[k], RENDER_ISA_BASELINE);
+        const render_ops *a = render_ops_find(names[k], RENDER_ISA_AUTO);
+        assert_string_equal(b->name, names[k]);
+        assert_string_equal(a->name, names[k]);
+        assert_string_equal(b->isa, "baseline");
+        /* auto: the baseline, or a build of its own for x86-64-v3 */
+        if (strcmp(a->isa, "baseline")) {
+            assert_string_equal(a->isa, "x86-64-v3");
+            assert_ptr_not_equal(a, b);
+        } else {
+            assert_ptr_equal(a, b);
+        }
+    }
+    assert_null(render_ops_find("f16", RENDER_ISA_AUTO));
+    assert_null(render_ops_find(NULL, RENDER_ISA_AUTO));
 }
 
 static void test_render_bad_view(void **state)
