@@ -73,6 +73,8 @@ static void cmd_bench_help(FILE *f)
         "  -h, --help        show this help\n"
         "\n"
         "Timings depend on machine load; the median of N runs damps the noise.\n"
+        "They are of the tracer's x86-64-v3 build where the processor runs it\n"
+        "('maprt render --isa'); the f64 reference is rendered by the baseline.\n"
         "Under 'mpirun -n N maprt-mpi bench' the (scene, mode) cells are handed\n"
         "out to the ranks, each rank renders its cells' N runs with --threads\n"
         "threads, and rank 0 prints and writes the rows in the order above; the\n"
