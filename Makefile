@@ -30,8 +30,10 @@ COMMON_OBJ  := $(COMMON_SRC:%.c=$(BUILD)/obj/%.o)
 # them, -ffp-contract=off says so where it matters (fused, the glass
 # scene's f32 picture changes). Both builds draw the same pictures, bit
 # for bit (tests/cli/isa.sh). `make ISA_V3=` builds the baseline alone.
-ISA_V3 ?= $(shell printf 'int main(void) { return !__builtin_cpu_supports("x86-64-v3"); }\n' \
+ifeq ($(origin ISA_V3),undefined)
+ISA_V3 := $(shell printf 'int main(void) { return !__builtin_cpu_supports("x86-64-v3"); }\n' \
             | $(CC) -march=x86-64-v3 -x c - -fsyntax-only 2>/dev/null && echo yes)
+endif
 V3_CFLAGS   := -march=x86-64-v3 -ffp-contract=off
 MODE_DIRS   := $(MODES) $(if $(ISA_V3),$(MODES:%=%-v3))
 MODAL_OBJ   := $(foreach m,$(MODE_DIRS),$(MODAL_SRC:%.c=$(BUILD)/$(m)/%.o))
