@@ -536,20 +536,25 @@ static int csg_eval_in(csg_query *q, int ni, num lo, num hi, int tested, span **
 VEC_HOT int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out)
 {
     const csg_node *nd = &q->c->nodes[ni];
-    span s, *dst;
+    span *dst;
+    size_t mark;
     num tc;
     if (csg_bounds_miss(q, nd, lo, hi, alike, &tc))
         return 0;
     if (nd->op != CSG_LEAF)
         return csg_eval_in(q, ni, lo, hi, 1, out);
     q->st->prim_tests++;
-    if (!NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s))
-        return 0;
-    if (!(dst = arena_alloc(q->ar, sizeof s))) {
+    /* the span is written in place: a copy of it would load whole what
+     * the test stored field by field (see prim_side) */
+    mark = arena_mark(q->ar);
+    if (!(dst = arena_alloc(q->ar, sizeof *dst))) {
         q->st->arena_full++;
         return 0;
     }
-    *dst = s;
+    if (!NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, dst)) {
+        arena_release(q->ar, mark);
+        return 0;
+    }
     *out = dst;
     return 1;
 }
@@ -633,7 +638,10 @@ static void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *foun
     if (hit && (!*found || h.t < best->t
                 || (h.t == best->t && (h.entering > best->entering
                                        || (h.entering == best->entering && h.prim < best->prim))))) {
-        *best = h;
+        best->t = h.t;            /* field by field: see prim_side */
+        best->prim = h.prim;
+        best->face = h.face;
+        best->entering = h.entering;
         *found = 1;
         q->tmax = h.t;
         q->tmax_d = num_to_d(h.t);

@@ -94,9 +94,9 @@ static inline int span_sweep(int op, const span *a, int na, const span *b, int n
         else
             e = ea ? ea : eb;
         if (now)
-            out[n].a = *e;
+            span_end_copy(&out[n].a, e);
         else
-            out[n++].b = *e;
+            span_end_copy(&out[n++].b, e);
         inr = now;
     }
     return n;

@@ -19,6 +19,17 @@ typedef struct span {
     span_end a, b;     /* entry and exit; a.t < b.t */
 } span;
 
+/* *d = *s field by field. The tests store an end's fields one by one; a
+ * struct copy soon after loads them as one wider piece, which no single
+ * store can forward: the load waits until the stores retire (some 15
+ * cycles a copy on a hot path). */
+static inline void span_end_copy(span_end *d, const span_end *s)
+{
+    d->t = s->t;
+    d->prim = s->prim;
+    d->face = s->face;
+}
+
 /* Combines the sorted, disjoint, non-touching span lists a (na spans) and b
  * (nb spans) by op (CSG_UNION, CSG_INTER or CSG_DIFF = a minus b) into out,
  * which must hold na + nb spans; returns the number written. The result is
