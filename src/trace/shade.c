@@ -34,12 +34,16 @@ void NS(shade_local)(const cscene *cs, const scene_attr *at, const double color[
                      const double d[3], const double (*ldir)[3], const double *pass, double c[3])
 {
     const scene *sc = cs->sc;
+    double acc[3];        /* summed here, not in c: c may alias the inputs,
+                             so each sum into c would reload them */
     size_t li;
     int i;
-    for (i = 0; i < 3; i++)
-        c[i] = at->model == SHADE_MIRROR ? 0 : at->ambient * color[i] * sc->ambient[i];
-    if (at->model == SHADE_MIRROR)
+    if (at->model == SHADE_MIRROR) {
+        c[0] = c[1] = c[2] = 0;
         return;
+    }
+    for (i = 0; i < 3; i++)
+        acc[i] = at->ambient * color[i] * sc->ambient[i];
     for (li = 0; li < cs->nlights; li++) {
         const double *ld = ldir[li];
         double ndl, spec = 0, x = 0;
@@ -65,8 +69,10 @@ void NS(shade_local)(const cscene *cs, const scene_attr *at, const double color[
         if (x > 0)
             spec = at->specular * NS(shade_pow)(x, at->exponent);
         for (i = 0; i < 3; i++)
-            c[i] += pass[li] * cs->lights[li].rgb[i] * (at->diffuse * ndl * color[i] + spec);
+            acc[i] += pass[li] * cs->lights[li].rgb[i] * (at->diffuse * ndl * color[i] + spec);
     }
+    for (i = 0; i < 3; i++)
+        c[i] = acc[i];
 }
 
 void NS(shade_weights)(const scene_attr *at, const double color[3], double cos_i, double eta, double *refl,
