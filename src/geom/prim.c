@@ -306,6 +306,17 @@ static int prim_same_solid(const prim *a, const prim *b)
     if (a->kind != b->kind || !a->bounded || a->kind == PRIM_BLOCK
         || a->cone_a != b->cone_a || a->cone_k != b->cone_k)
         return 0;
+    if (a->kind != PRIM_SPHERE) {           /* the axes first: s's third column,
+                                               (0, 0, +-1) below, tells most
+                                               pairs through one point apart */
+        for (i = 0; i < 3; i++) {
+            s[3 * i + 2] = 0;
+            for (k = 0; k < 3; k++)
+                s[3 * i + 2] += a->fr->ainv_d[3 * i + k] * b->fr->a_d[3 * k + 2];
+        }
+        if (fabs(s[2]) > e || fabs(s[5]) > e || fabs(fabs(s[8]) - 1) > e)
+            return 0;
+    }
     for (i = 0; i < 3; i++)                 /* s = a^-1 b, t = a^-1 (org_b - org_a) */
         for (j = 0; j < 3; j++) {
             s[3 * i + j] = 0;
