@@ -133,7 +133,8 @@ void NS(prim_box)(const prim *p, double lo[3], double hi[3]);
 /* Intersects r with p; the bounding test rejects p when it lies wholly
  * outside the parameters [tmin, tmax] (the span itself is not clipped).
  * Returns 1 and the span (entry and exit; ends at +-GEOM_TBIG are unbounded
- * and carry PRIM_FACE_NONE) or 0 when the ray misses. */
+ * and carry PRIM_FACE_NONE) or 0 when the ray misses, *out then undefined
+ * (the span is built in place: see prim_side). */
 int NS(prim_intersect)(const prim *p, const prim_ray *r, num tmin, num tmax, span *out);
 /* prim_intersect_tc past its exclusion test. */
 int NS(prim_intersect_spans)(const prim *p, const prim_ray *r, num tc, span *out);
