@@ -472,42 +472,36 @@ VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, in
 static int csg_eval_in(csg_query *q, int ni, num lo, num hi, int tested, span **out);
 VEC_HOT int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out);
 
-/* Span list of the operator node ni along the ray, whose bounds test
- * passed, placed at the arena top on entry (nothing is left allocated
- * when it returns 0). Only parameters in [lo, hi] can matter to
- * the caller, so subtrees whose bounds lie outside are skipped; the right
- * operand of a difference or intersection only matters where the left one
- * has spans, which narrows [lo, hi] further. tested: ni's box passed over
- * [lo, hi] itself (not only over a wider range), so that children with
- * the same box need not test it again. */
-static int csg_eval_in(csg_query *q, int ni, num lo, num hi, int tested, span **out)
+/* The rest of csg_eval_in once ni's left operand has given the nl spans
+ * at l (nl > 0, or any nl for a union), the arena at mark on entry to it. */
+VEC_HOT int csg_eval_right(csg_query *q, const csg_node *nd, span *l, int nl, num lo, num hi, int tested,
+                         size_t mark, span **out)
 {
-    const csg_node *nd = &q->c->nodes[ni];
-    size_t mark = arena_mark(q->ar);
-    span *l = NULL, *r = NULL, *tmp, *dst;
-    int nl, nr, n;
+    span *r = NULL, *tmp, *dst;
+    int nr, n;
     num rlo = lo, rhi = hi;
-    nl = csg_eval(q, nd->left, lo, hi, tested, &l);
-    if (nl == 0 && nd->op != CSG_UNION) {
-        q->st->pruned++;          /* the right operand cannot matter */
-        return 0;
-    }
     if (nd->op != CSG_UNION) {
         rlo = num_max(lo, l[0].a.t);
         rhi = num_min(hi, l[nl - 1].b.t);
     }
     nr = csg_eval(q, nd->right, rlo, rhi, tested && nd->op == CSG_UNION, &r);
-    if (nr == 0) {
-        if (nd->op == CSG_INTER) {
-            arena_release(q->ar, mark);
-            return 0;
-        }
-        *out = l;                 /* union or difference with nothing */
-        return nl;
+    if (nr == 0 && nd->op == CSG_INTER) {
+        arena_release(q->ar, mark);
+        return 0;
     }
-    if (nl == 0) {                /* union */
-        *out = r;
-        return nr;
+    /* An operand met alone (a union or difference with nothing) is swept
+     * too: what the sweep keeps of it must not depend on whether the other
+     * operand, or its bounds, meet the ray somewhere else. One span longer
+     * than a sweep step comes through unchanged. */
+    if (nr == 0 || nl == 0) {
+        span *one = nr ? r : l;
+        int k = nr ? nr : nl;
+        if (k == 0)
+            return 0;
+        if (k == 1 && one->b.t > span_lim(one->a.t)) {
+            *out = one;
+            return 1;
+        }
     }
     if (!(tmp = arena_alloc(q->ar, (size_t)(nl + nr) * sizeof *tmp))) {
         q->st->arena_full++;
@@ -528,6 +522,27 @@ static int csg_eval_in(csg_query *q, int ni, num lo, num hi, int tested, span **
     }
     *out = dst;
     return n;
+}
+
+/* Span list of the operator node ni along the ray, whose bounds test
+ * passed, placed at the arena top on entry (nothing is left allocated
+ * when it returns 0). Only parameters in [lo, hi] can matter to
+ * the caller, so subtrees whose bounds lie outside are skipped; the right
+ * operand of a difference or intersection only matters where the left one
+ * has spans, which narrows [lo, hi] further. tested: ni's box passed over
+ * [lo, hi] itself (not only over a wider range), so that children with
+ * the same box need not test it again. */
+static int csg_eval_in(csg_query *q, int ni, num lo, num hi, int tested, span **out)
+{
+    const csg_node *nd = &q->c->nodes[ni];
+    size_t mark = arena_mark(q->ar);
+    span *l = NULL;
+    int nl = csg_eval(q, nd->left, lo, hi, tested, &l);
+    if (nl == 0 && nd->op != CSG_UNION) {
+        q->st->pruned++;          /* the right operand cannot matter */
+        return 0;
+    }
+    return csg_eval_right(q, nd, l, nl, lo, hi, tested, mark, out);
 }
 
 /* The span list of node ni after its own bounds test (see csg_eval_in);

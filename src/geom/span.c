@@ -1,25 +1,6 @@
 /* span — set operations on span lists by a sweep over boundaries (see span.h). */
 #include "geom/span.h"
 
-/* The mode's error bound on a span end at parameter t (normalised units),
- * eps(t) = E0 (1 + |t|/16): the bound docs/numerics.md states for a ray
- * parameter, in normalised rather than deck units. */
-#if defined(NUM_MODE_q16)
-#define SPAN_E0 ((num)32)                  /* 2^-11 */
-#define SPAN_E1 ((num)2)
-#elif defined(NUM_MODE_q32)
-#define SPAN_E0 ((num)64)                  /* 2^-26 */
-#define SPAN_E1 ((num)4)
-#elif defined(NUM_MODE_f32)
-#define SPAN_E0 (1.0f / 65536)             /* 2^-16 */
-#define SPAN_E1 (1.0f / 1048576)
-#else
-#define SPAN_E0 (1.0 / 68719476736.0)      /* 2^-36 */
-#define SPAN_E1 (1.0 / 1099511627776.0)
-#endif
-
-static inline num span_eps(num t) { return num_add(SPAN_E0, num_mul(num_abs(t), SPAN_E1)); }
-
 /* Result membership for the operator given operand memberships. */
 static inline int span_op(int op, int ina, int inb)
 {
@@ -81,7 +62,7 @@ static inline int span_sweep(int op, const span *a, int na, const span *b, int n
             t = num_min(span_end_at(a, pa)->t, span_end_at(b, pb)->t);
         /* boundaries of the two lists closer than the error bound are one
          * boundary (regularised CSG: no slivers thinner than the bound) */
-        lim = num_add(t, span_eps(t));
+        lim = span_lim(t);
         ea = span_take(a, na, &pa, lim);
         eb = span_take(b, nb, &pb, lim);
         now = span_op(op, pa & 1, pb & 1);

@@ -30,6 +30,28 @@ static inline void span_end_copy(span_end *d, const span_end *s)
     d->face = s->face;
 }
 
+/* The mode's error bound on a span end at parameter t (normalised units),
+ * eps(t) = E0 (1 + |t|/16): the bound docs/numerics.md states for a ray
+ * parameter, in normalised rather than deck units. */
+#if defined(NUM_MODE_q16)
+#define SPAN_E0 ((num)32)                  /* 2^-11 */
+#define SPAN_E1 ((num)2)
+#elif defined(NUM_MODE_q32)
+#define SPAN_E0 ((num)64)                  /* 2^-26 */
+#define SPAN_E1 ((num)4)
+#elif defined(NUM_MODE_f32)
+#define SPAN_E0 (1.0f / 65536)             /* 2^-16 */
+#define SPAN_E1 (1.0f / 1048576)
+#else
+#define SPAN_E0 (1.0 / 68719476736.0)      /* 2^-36 */
+#define SPAN_E1 (1.0 / 1099511627776.0)
+#endif
+
+static inline num span_eps(num t) { return num_add(SPAN_E0, num_mul(num_abs(t), SPAN_E1)); }
+/* The last parameter a sweep step at boundary t takes with it: every end
+ * in [t, span_lim(t)] is one boundary (span_merge). */
+static inline num span_lim(num t) { return num_add(t, span_eps(t)); }
+
 /* Combines the sorted, disjoint, non-touching span lists a (na spans) and b
  * (nb spans) by op (CSG_UNION, CSG_INTER or CSG_DIFF = a minus b) into out,
  * which must hold na + nb spans; returns the number written. The result is

@@ -476,22 +476,34 @@ static char *csg_random_objects(char *p, uint64_t *s, int n, double smax, double
     return p;
 }
 
-/* Two compiles a and b of one scene in one mode, asked the same questions:
- * the nearest hit of nrays random rays (every fourth from 400 units away
- * when far), and the nearest hit of a ray spawned from that hit in a
- * random direction. Adds to n[0] the rays, n[1] b's hits, n[2] b's hits
- * of spawned rays, n[3] the rays where a and b answer differently. */
-static void csg_same_hits(const probe_ops *ops, void *a, void *b, uint64_t *s, int nrays, int far, long n[4])
+/* Where csg_same_hits takes its rays from: o and unit d for ray k. */
+typedef void csg_ray_fn(uint64_t *s, const void *ctx, int k, double *o, double *d);
+
+/* csg_random_ray, every fourth ray from 400 units away when *ctx (an int)
+ * is set: a far origin gives coarse float points. */
+static void csg_random_source(uint64_t *s, const void *ctx, int k, double *o, double *d)
 {
-    int i, k;
+    int i;
+    csg_random_ray(s, o, d);
+    if (*(const int *)ctx && k % 4 == 0)
+        for (i = 0; i < 3; i++)
+            o[i] -= 400 * d[i];
+}
+
+/* Two compiles a and b of one scene in one mode, asked the same questions:
+ * the nearest hit of nrays rays from src, and the nearest hit of a ray
+ * spawned from that hit in a random direction. Adds to n[0] the rays, n[1]
+ * b's hits, n[2] b's hits of spawned rays, n[3] the rays where a and b
+ * answer differently. */
+static void csg_same_hits(const probe_ops *ops, void *a, void *b, uint64_t *s, int nrays, csg_ray_fn *src,
+                          const void *ctx, long n[4])
+{
+    int k;
     for (k = 0; k < nrays; k++) {
         double o[3], d[3], d2[3];
         probe_hit ha, hb, ha2, hb2;
         int ra, rb;
-        csg_random_ray(s, o, d);
-        if (far && k % 4 == 0)             /* a far origin: coarse float points */
-            for (i = 0; i < 3; i++)
-                o[i] -= 400 * d[i];
+        src(s, ctx, k, o, d);
         tt_random_dir(s, d2);
         ra = ops->hit(a, o, d, &ha);
         rb = ops->hit(b, o, d, &hb);
@@ -512,9 +524,10 @@ static void csg_same_hits(const probe_ops *ops, void *a, void *b, uint64_t *s, i
 }
 
 /* Compiles sc twice in every mode, alters the second compile (alter) and
- * asks both the questions of csg_same_hits, adding to n[0..3]. */
+ * asks both the questions of csg_same_hits (rays from src), adding to
+ * n[0..3]. */
 static void csg_altered_hits(const scene *sc, void (*alter)(const probe_ops *ops, void *cs), uint64_t *s,
-                             int nrays, int far, long n[4])
+                             int nrays, csg_ray_fn *src, const void *ctx, long n[4])
 {
     int m;
     for (m = 0; m < TT_MODES; m++) {
@@ -525,7 +538,7 @@ static void csg_altered_hits(const scene *sc, void (*alter)(const probe_ops *ops
         assert_int_equal(ops->compile(sc, &a, &err), 0);
         assert_int_equal(ops->compile(sc, &b, &err), 0);
         alter(ops, b);
-        csg_same_hits(ops, a, b, s, nrays, far, n);
+        csg_same_hits(ops, a, b, s, nrays, src, ctx, n);
         ops->free(a);
         ops->free(b);
     }
@@ -574,12 +587,123 @@ static void test_csg_boxes_never_change_a_hit(void **state)
 {
     uint64_t s = test_seed("test_csg_boxes_never_change_a_hit");
     long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
+    const int far = 1;
     int k;
     (void)state;
     for (k = 0; k < 8; k++) {
         char deck[8192];
         scene *sc = csg_random_scene(deck, sizeof deck, &s, 6, 2.5, 4, k % 2, -3);
-        csg_altered_hits(sc, csg_unbox, &s, 250, 1, n);
+        csg_altered_hits(sc, csg_unbox, &s, 250, csg_random_source, &far, n);
+        scene_free(sc);
+    }
+    csg_assert_same(n);
+}
+
+/* A signed offset of 2^-u, u uniform in [3, 40] (zero one time in eight):
+ * from far outside every mode's error bound to far inside f64's. */
+static double csg_near(uint64_t *s)
+{
+    if (test_rand(s) % 8 == 0)
+        return 0;
+    return (test_rand(s) % 2 ? 1 : -1) * ldexp(1, -(int)(3 + test_rand(s) % 38));
+}
+
+/* The placement of test_csg_difference_first_crossing_near_faces: x ->
+ * m x + t, m a rotation times a non-uniform scale (row-major, as MATRIX). */
+typedef struct csg_place { double m[9], t[3]; } csg_place;
+
+/* Rays at the faces of the block [-1, 1]^3 placed by *ctx: a random point
+ * of a random face (the top one, z = 1, for half the rays), met from
+ * outside in a random direction, from 3 to 6 units away or (every other
+ * ray) from 400, in the deck's coordinates. */
+static void csg_face_source(uint64_t *s, const void *ctx, int k, double *o, double *d)
+{
+    const csg_place *pl = ctx;
+    double p[3], u[3], len = 0, back = k % 2 ? 400 : test_uniform(s, 3, 6);
+    int i, axis = (int)(test_rand(s) % 6), side = test_rand(s) % 2 ? 1 : -1;
+    if (axis > 2) {                   /* half the rays at the top face */
+        axis = 2;
+        side = 1;
+    }
+    for (i = 0; i < 3; i++)
+        p[i] = i == axis ? side : test_uniform(s, -1, 1);
+    do
+        tt_random_dir(s, u);
+    while (u[axis] * side > -0.05);    /* into the face */
+    for (i = 0; i < 3; i++)
+        p[i] -= back * u[i];
+    for (i = 0; i < 3; i++) {         /* placed: a point and a direction */
+        o[i] = pl->m[3 * i] * p[0] + pl->m[3 * i + 1] * p[1] + pl->m[3 * i + 2] * p[2] + pl->t[i];
+        d[i] = pl->m[3 * i] * u[0] + pl->m[3 * i + 1] * u[1] + pl->m[3 * i + 2] * u[2];
+        len += d[i] * d[i];
+    }
+    for (i = 0; i < 3; i++)
+        d[i] /= sqrt(len);
+}
+
+/* Differences whose subtracted solids touch the faces of the solid they
+ * cut, or lie near them: a block A = [-1, 1]^3 minus the union of a
+ * cylinder along A's top face, a block and a sphere sunk into two other
+ * faces and a cylinder standing on a fourth, each offset from A's face by
+ * csg_near (the block B2 in half the scenes by -2^-u, u in [5, 12]: below
+ * A's face by more than the box pad and less than q16's error bound on a
+ * ray 400 units long), the whole placed by a random rotation (none in a
+ * quarter of the scenes, so that the boxes are tight) and a non-uniform
+ * scale (MATRIX) and a translation, in every mode; rays at A's faces from
+ * near and far. The
+ * nearest hits, and those of rays spawned from them, are bit for bit those
+ * found with every bounding box made infinite (the subtracted part then
+ * always tested). */
+static void test_csg_difference_first_crossing_near_faces(void **state)
+{
+    uint64_t s = test_seed("test_csg_difference_first_crossing_near_faces");
+    long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
+    int k, i;
+    (void)state;
+    for (k = 0; k < 12; k++) {
+        char deck[4096], t[512];
+        char *p = deck;
+        csg_place pl;
+        double q[4], ql = 0, sc3[3], r, z2;
+        scene *sc;
+        for (i = 0; i < 4; i++) {     /* a random rotation, by a unit quaternion */
+            q[i] = k % 4 == 1 ? i == 0 : test_uniform(&s, -1, 1);
+            ql += q[i] * q[i];
+        }
+        for (i = 0; i < 4; i++)
+            q[i] /= sqrt(ql);
+        for (i = 0; i < 3; i++) {
+            sc3[i] = test_uniform(&s, 0.7, 1.5);
+            pl.t[i] = test_uniform(&s, -1, 1);
+        }
+        pl.m[0] = (1 - 2 * (q[2] * q[2] + q[3] * q[3])) * sc3[0];
+        pl.m[1] = 2 * (q[1] * q[2] - q[0] * q[3]) * sc3[1];
+        pl.m[2] = 2 * (q[1] * q[3] + q[0] * q[2]) * sc3[2];
+        pl.m[3] = 2 * (q[1] * q[2] + q[0] * q[3]) * sc3[0];
+        pl.m[4] = (1 - 2 * (q[1] * q[1] + q[3] * q[3])) * sc3[1];
+        pl.m[5] = 2 * (q[2] * q[3] - q[0] * q[1]) * sc3[2];
+        pl.m[6] = 2 * (q[1] * q[3] - q[0] * q[2]) * sc3[0];
+        pl.m[7] = 2 * (q[2] * q[3] + q[0] * q[1]) * sc3[1];
+        pl.m[8] = (1 - 2 * (q[1] * q[1] + q[2] * q[2])) * sc3[2];
+        snprintf(t, sizeof t, "-\n  MATRIX %.17g %.17g -\n  %.17g %.17g -\n  %.17g %.17g -\n"
+                 "  %.17g %.17g -\n  %.17g %.17g -\n  %.17g %.17g", pl.m[0], pl.m[1], pl.m[2], pl.t[0],
+                 pl.m[3], pl.m[4], pl.m[5], pl.t[1], pl.m[6], pl.m[7], pl.m[8], pl.t[2]);
+        r = test_uniform(&s, 0.2, 0.6);   /* B1's side along A's top face */
+        z2 = k % 2 ? -ldexp(1, -(int)(5 + test_rand(&s) % 8)) : csg_near(&s);
+        p += sprintf(p, VIEW "BLOCK A 2 2 2 TRANSLATE -1 -1 -1 %s\n", t);
+        p += sprintf(p, "CYLINDER B1 %.5f 3 TRANSLATE 0 0 -1.5 ROTATE Y 90 -\n"
+                     "  TRANSLATE 0 %.5f %.20f %s\n", r, test_uniform(&s, -0.5, 0.5), 1 - r + csg_near(&s), t);
+        p += sprintf(p, "BLOCK B2 1 1 1 -\n  TRANSLATE %.5f %.5f %.20f %s\n", test_uniform(&s, -1.5, 0.5),
+                     test_uniform(&s, -1.5, 0.5), z2, t);
+        p += sprintf(p, "SPHERE B3 %.5f -\n  TRANSLATE %.20f %.5f %.5f %s\n", test_uniform(&s, 0.2, 0.6),
+                     -1 + csg_near(&s), test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), t);
+        p += sprintf(p, "CYLINDER B4 %.5f 1 -\n  TRANSLATE %.5f %.5f %.20f %s\n", test_uniform(&s, 0.2, 0.5),
+                     test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), -2 + csg_near(&s), t);
+        p += sprintf(p, "UNION B B1 B2 B3 B4\nDIFF D A B\nOBJECT D\n");
+        assert_true((size_t)(p - deck) < sizeof deck);
+        sc = tt_parse(deck);
+        assert_non_null(sc);
+        csg_altered_hits(sc, csg_unbox, &s, 300, csg_face_source, &pl, n);
         scene_free(sc);
     }
     csg_assert_same(n);
@@ -596,11 +720,12 @@ static void test_csg_deep_hierarchy_stack_in_arena(void **state)
     static char deck[24576];
     uint64_t s = test_seed("test_csg_deep_hierarchy_stack_in_arena");
     long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
+    const int near = 0;
     int k;
     (void)state;
     for (k = 0; k < 2; k++) {
         scene *sc = csg_random_scene(deck, sizeof deck, &s, 48, 0.8, 5, k % 2, -6);
-        csg_altered_hits(sc, csg_deepen, &s, 300, 0, n);
+        csg_altered_hits(sc, csg_deepen, &s, 300, csg_random_source, &near, n);
         scene_free(sc);
     }
     csg_assert_same(n);
@@ -616,6 +741,7 @@ int main(void)
         cmocka_unit_test(test_csg_slab_cost_sublinear),
         cmocka_unit_test(test_csg_rejects_malformed_tree),
         cmocka_unit_test(test_csg_boxes_never_change_a_hit),
+        cmocka_unit_test(test_csg_difference_first_crossing_near_faces),
         cmocka_unit_test(test_csg_deep_hierarchy_stack_in_arena),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
