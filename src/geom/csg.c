@@ -598,6 +598,42 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
     return 0;
 }
 
+/* The first crossing (0 < t <= q->tmax) of the difference A - B at node
+ * ni (an object's root, tested as for csg_eval_in), as csg_first of its
+ * span list gives it, into *h: 1, or 0 when there is none. Where A's first
+ * span starts at a0 > w on a face and outlasts a0's sweep step, and B's
+ * bounds alone (no primitive of B tested) show that B has no span within
+ * w = 2 eps(a0) + E0 of a0, that list starts with A's entry at a0: in
+ * span_merge's sweep the steps before a0 - w end before a0, no end of B
+ * joins a0's step, and a0 lies outside B. B is then not classified over
+ * the rest of A. Else the whole difference, as csg_eval_in. */
+static int csg_diff_first(csg_query *q, int ni, int tested, csg_hit *h)
+{
+    const csg_node *nd = &q->c->nodes[ni];
+    size_t mark = arena_mark(q->ar), rmark;
+    span *l = NULL, *s = NULL;
+    int nl = csg_eval(q, nd->left, NUM_ZERO, q->tmax, tested, &l), n;
+    num a0, w;
+    if (nl == 0) {
+        q->st->pruned++;          /* B cannot matter */
+        return 0;
+    }
+    a0 = l[0].a.t;
+    w = num_add(num_add(span_eps(a0), span_eps(a0)), span_eps(NUM_ZERO));
+    if (a0 > w && l[0].a.face != PRIM_FACE_NONE && l[0].b.t > span_lim(a0)) {
+        unsigned long long tests = q->st->prim_tests;
+        span *r = NULL;
+        int nr;
+        rmark = arena_mark(q->ar);
+        nr = csg_eval(q, nd->right, num_sub(a0, w), num_add(a0, w), 0, &r);
+        arena_release(q->ar, rmark);
+        if (nr == 0 && q->st->prim_tests == tests)
+            return csg_first(l, nl, q->tmax, h);
+    }
+    n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark, &s);
+    return n > 0 && csg_first(s, n, q->tmax, h);
+}
+
 /* The first crossing (0 < t <= q->tmax) of object k, rooted at the
  * operator node ni, into *h: 1, or 0 when there is none. tested: as for
  * csg_object. Out of line, so that csg_object (every query's floor and
@@ -620,8 +656,12 @@ static int csg_object_tree(csg_query *q, int k, int ni, int tested, csg_hit *h)
                         || hull[3] == leaves))
         return 0;
     mark = arena_mark(q->ar);
-    n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tested, &s);
-    hit = n > 0 && csg_first(s, n, q->tmax, h);
+    if (q->c->nodes[ni].op == CSG_DIFF) {
+        hit = csg_diff_first(q, ni, tested, h);
+    } else {
+        n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tested, &s);
+        hit = n > 0 && csg_first(s, n, q->tmax, h);
+    }
     arena_release(q->ar, mark);
     return hit;
 }

@@ -647,13 +647,16 @@ static void csg_face_source(uint64_t *s, const void *ctx, int k, double *o, doub
  * faces and a cylinder standing on a fourth, each offset from A's face by
  * csg_near (the block B2 in half the scenes by -2^-u, u in [5, 12]: below
  * A's face by more than the box pad and less than q16's error bound on a
- * ray 400 units long), the whole placed by a random rotation (none in a
- * quarter of the scenes, so that the boxes are tight) and a non-uniform
- * scale (MATRIX) and a translation, in every mode; rays at A's faces from
- * near and far. The
- * nearest hits, and those of rays spawned from them, are bit for bit those
- * found with every bounding box made infinite (the subtracted part then
- * always tested). */
+ * ray 400 units long, where only csg_diff_first's window, wider than the
+ * pad, keeps B2 in the sweep), the whole placed by a random rotation
+ * (none in a quarter of the scenes, so that the boxes are tight) and a
+ * non-uniform scale (MATRIX) and a translation, in every mode; rays at
+ * A's faces from near and far. The first crossing of a difference whose subtracted
+ * part's bounds keep clear of A's entry is found from A alone (csg.c,
+ * csg_diff_first): the nearest hits, and those of rays spawned from them,
+ * are bit for bit those found with every bounding box made infinite (the
+ * subtracted part then always tested, so the whole difference
+ * classified). */
 static void test_csg_difference_first_crossing_near_faces(void **state)
 {
     uint64_t s = test_seed("test_csg_difference_first_crossing_near_faces");
