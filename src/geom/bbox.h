@@ -72,8 +72,11 @@ static inline int bbox_miss(const double lo[3], const double hi[3], const bbox_r
     __m128d vz = _mm_mul_pd(_mm_sub_pd(_mm_set_pd(hi[0], hi[2]), oz), rz);
     __m128d n = _mm_max_pd(_mm_min_pd(u, v), _mm_min_pd(uz, vz));
     __m128d f = _mm_min_pd(_mm_max_pd(u, v), _mm_max_pd(uz, vz));
-    n = _mm_max_sd(_mm_max_sd(n, _mm_unpackhi_pd(n, n)), _mm_set_sd(tmin));
-    f = _mm_min_sd(_mm_min_sd(f, _mm_unpackhi_pd(f, f)), _mm_set_sd(tmax));
+    /* tmin and tmax in both lanes (only the low one counts): _mm_set_sd
+     * from a register is a zeroing VMOVQ between registers, which
+     * valgrind 3.19 does not decode */
+    n = _mm_max_sd(_mm_max_sd(n, _mm_unpackhi_pd(n, n)), _mm_set1_pd(tmin));
+    f = _mm_min_sd(_mm_min_sd(f, _mm_unpackhi_pd(f, f)), _mm_set1_pd(tmax));
     *tin = _mm_cvtsd_f64(n);
     return _mm_comigt_sd(n, f);
 #else

@@ -598,19 +598,35 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
     return 0;
 }
 
+/* 1 when the bounds of node ni leave none of its primitives to test over
+ * [lo, hi], as csg_eval would find them: a node whose bounds the ray
+ * misses there; a union both of whose operands are clear; an intersection
+ * or difference whose left operand is (its right one is then not asked).
+ * Only bounds are tested, never a primitive. */
+static int csg_bounds_clear(csg_query *q, int ni, num lo, num hi)
+{
+    const csg_node *nd = &q->c->nodes[ni];
+    num tc;
+    if (csg_bounds_miss(q, nd, lo, hi, 0, &tc))
+        return 1;
+    if (nd->op == CSG_LEAF || !csg_bounds_clear(q, nd->left, lo, hi))
+        return 0;
+    return nd->op != CSG_UNION || csg_bounds_clear(q, nd->right, lo, hi);
+}
+
 /* The first crossing (0 < t <= q->tmax) of the difference A - B at node
  * ni (an object's root, tested as for csg_eval_in), as csg_first of its
  * span list gives it, into *h: 1, or 0 when there is none. Where A's first
  * span starts at a0 > w on a face and outlasts a0's sweep step, and B's
- * bounds alone (no primitive of B tested) show that B has no span within
- * w = 2 eps(a0) + E0 of a0, that list starts with A's entry at a0: in
+ * bounds alone show that B has no span within w = 2 eps(a0) + E0 of a0
+ * (csg_bounds_clear), that list starts with A's entry at a0: in
  * span_merge's sweep the steps before a0 - w end before a0, no end of B
  * joins a0's step, and a0 lies outside B. B is then not classified over
  * the rest of A. Else the whole difference, as csg_eval_in. */
 static int csg_diff_first(csg_query *q, int ni, int tested, csg_hit *h)
 {
     const csg_node *nd = &q->c->nodes[ni];
-    size_t mark = arena_mark(q->ar), rmark;
+    size_t mark = arena_mark(q->ar);
     span *l = NULL, *s = NULL;
     int nl = csg_eval(q, nd->left, NUM_ZERO, q->tmax, tested, &l), n;
     num a0, w;
@@ -620,16 +636,9 @@ static int csg_diff_first(csg_query *q, int ni, int tested, csg_hit *h)
     }
     a0 = l[0].a.t;
     w = num_add(num_add(span_eps(a0), span_eps(a0)), span_eps(NUM_ZERO));
-    if (a0 > w && l[0].a.face != PRIM_FACE_NONE && l[0].b.t > span_lim(a0)) {
-        unsigned long long tests = q->st->prim_tests;
-        span *r = NULL;
-        int nr;
-        rmark = arena_mark(q->ar);
-        nr = csg_eval(q, nd->right, num_sub(a0, w), num_add(a0, w), 0, &r);
-        arena_release(q->ar, rmark);
-        if (nr == 0 && q->st->prim_tests == tests)
-            return csg_first(l, nl, q->tmax, h);
-    }
+    if (a0 > w && l[0].a.face != PRIM_FACE_NONE && l[0].b.t > span_lim(a0)
+        && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
+        return csg_first(l, nl, q->tmax, h);
     n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark, &s);
     return n > 0 && csg_first(s, n, q->tmax, h);
 }
