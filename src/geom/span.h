@@ -42,6 +42,12 @@ static inline void span_end_copy(span_end *d, const span_end *s)
 #elif defined(NUM_MODE_f32)
 #define SPAN_E0 (1.0f / 65536)             /* 2^-16 */
 #define SPAN_E1 (1.0f / 1048576)
+#elif defined(NUM_MODE_hfp32)                /* order keys: the images */
+#define SPAN_E0 ((num)0x3d800000)           /* 2^-13 = 0.8 x 16^-3 */
+#define SPAN_E1 ((num)0x3c800000)           /* 2^-17 */
+#elif defined(NUM_MODE_hfp64)
+#define SPAN_E0 ((num)0x3810000000000000)   /* 2^-36 = 0.1 x 16^-8 */
+#define SPAN_E1 ((num)0x3710000000000000)   /* 2^-40 */
 #else
 #define SPAN_E0 (1.0 / 68719476736.0)      /* 2^-36 */
 #define SPAN_E1 (1.0 / 1099511627776.0)

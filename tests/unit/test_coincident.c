@@ -415,7 +415,7 @@ static void co_to_world(const double *m, const double *o, const double *d, doubl
 static void test_coincident_random_placements(void **state)
 {
     uint64_t s = test_seed("test_coincident_random_placements");
-    long wrong[4][CO_KINDS], counted[4][CO_KINDS], amb = 0;
+    long wrong[TT_MODES][CO_KINDS], counted[TT_MODES][CO_KINDS], amb = 0;
     int n, kind, m, j;
     (void)state;
     memset(wrong, 0, sizeof wrong);
@@ -450,7 +450,7 @@ static void test_coincident_random_placements(void **state)
                 if (truth[j] < 0)
                     amb++;
             }
-            for (m = 0; m < 4; m++) {
+            for (m = 0; m < TT_MODES; m++) {
                 const probe_ops *ops = tt_mode(m);
                 void *cs;
                 diag err;
@@ -482,7 +482,7 @@ static void test_coincident_random_placements(void **state)
             }
             scene_free(sc);
         }
-    for (m = 0; m < 4; m++) {
+    for (m = 0; m < TT_MODES; m++) {
         long tw = 0;
         printf("# %s:", tt_mode(m)->name);
         for (kind = 0; kind < CO_KINDS; kind++) {
@@ -497,7 +497,7 @@ static void test_coincident_random_placements(void **state)
     /* q16 coaxial sides: a direction rounded to 2^-16 errs by up to about
      * 1e-3 normalised units over a probe ray's length, over |cos| more than
      * the bound the merge absorbs; measured, and held under 0.2% */
-    for (m = 0; m < 4; m++)
+    for (m = 0; m < TT_MODES; m++)
         for (kind = 0; kind < CO_KINDS; kind++)
             if (m == 0 && kind == CO_COAX)
                 assert_true(wrong[m][kind] * 500 <= counted[m][kind]);
