@@ -120,28 +120,41 @@ static int csg_rtree_in(const csg_rtree *t, int np, int node, const int *inp)
     return t->op[k] == 0 ? (a || b) : t->op[k] == 1 ? (a && b) : (a && !b);
 }
 
-/* Membership at o + tt d; *margin is the smallest |signed distance|. The
- * primitive of leaf Pi is found by name (the parser numbers primitives in
- * the order the rendered tree uses them). */
-static int csg_rtree_at(const scene *sc, const csg_rtree *t, int np, const double *o, const double *d,
-                        double tt, double *margin)
+/* The signed distance of o + tt d to the primitive of each leaf Pi into
+ * sd[i], and that primitive into sp[i] when sp is given. The primitive is
+ * found by name (the parser numbers primitives in the order the rendered
+ * tree uses them). */
+static void csg_rtree_dist(const scene *sc, int np, const double *o, const double *d, double tt,
+                           double *sd, const scene_prim **sp)
 {
-    int in[8], i;
     double p[3], q[3];
-    *margin = HUGE_VAL;
+    int i;
     for (i = 0; i < 3; i++)
         p[i] = o[i] + tt * d[i];
     for (i = 0; i < np; i++) {
         char nm[16];
-        const scene_prim *sp;
-        double sd;
+        const scene_prim *pr;
         snprintf(nm, sizeof nm, "P%d", i);
-        sp = &sc->prims[tt_find_prim(sc, nm)];
-        tt_to_object(sp, p, q);
-        sd = tt_sdf(sp, q);
-        in[i] = sd < 0;
-        if (fabs(sd) < *margin)
-            *margin = fabs(sd);
+        pr = &sc->prims[tt_find_prim(sc, nm)];
+        tt_to_object(pr, p, q);
+        sd[i] = tt_sdf(pr, q);
+        if (sp)
+            sp[i] = pr;
+    }
+}
+
+/* Membership at o + tt d; *margin is the smallest |signed distance|. */
+static int csg_rtree_at(const scene *sc, const csg_rtree *t, int np, const double *o, const double *d,
+                        double tt, double *margin)
+{
+    int in[8], i;
+    double sd[8];
+    csg_rtree_dist(sc, np, o, d, tt, sd, NULL);
+    *margin = HUGE_VAL;
+    for (i = 0; i < np; i++) {
+        in[i] = sd[i] < 0;
+        if (fabs(sd[i]) < *margin)
+            *margin = fabs(sd[i]);
     }
     return csg_rtree_in(t, np, np + t->n - 1, in);
 }
@@ -156,31 +169,24 @@ typedef struct csg_rcase { double o[3], d[3], tb, cosi; int s0, skip; } csg_rcas
  * signed distance of the primitive nearest to that point. */
 static double csg_rtree_cos(const scene *sc, int np, const double *o, const double *d, double tt)
 {
-    const scene_prim *near = NULL;
-    double p[3], q[3], g[3], best = HUGE_VAL, gl = 0, gd = 0;
-    int i, a;
+    const scene_prim *sp[8], *near;
+    double p[3], q[3], g[3], sd[8], gl = 0, gd = 0;
+    int i, a, k = 0;
+    csg_rtree_dist(sc, np, o, d, tt, sd, sp);
+    for (i = 1; i < np; i++)
+        if (fabs(sd[i]) < fabs(sd[k]))
+            k = i;
+    near = sp[k];
     for (i = 0; i < 3; i++)
         p[i] = o[i] + tt * d[i];
-    for (i = 0; i < np; i++) {
-        char nm[16];
-        const scene_prim *sp;
-        double sd;
-        snprintf(nm, sizeof nm, "P%d", i);
-        sp = &sc->prims[tt_find_prim(sc, nm)];
-        tt_to_object(sp, p, q);
-        if ((sd = fabs(tt_sdf(sp, q))) < best) {
-            best = sd;
-            near = sp;
-        }
-    }
     for (a = 0; a < 3; a++) {
         double f[2];
-        int k;
-        for (k = 0; k < 2; k++) {
+        int j;
+        for (j = 0; j < 2; j++) {
             double r[3] = {p[0], p[1], p[2]};
-            r[a] += k ? 1e-6 : -1e-6;
+            r[a] += j ? 1e-6 : -1e-6;
             tt_to_object(near, r, q);
-            f[k] = tt_sdf(near, q);
+            f[j] = tt_sdf(near, q);
         }
         g[a] = f[1] - f[0];
         gl += g[a] * g[a];
