@@ -614,6 +614,46 @@ static int csg_bounds_clear(csg_query *q, int ni, num lo, num hi)
     return nd->op != CSG_UNION || csg_bounds_clear(q, nd->right, lo, hi);
 }
 
+/* 1 when the ray's point at parameter t lies so deep inside the sphere p
+ * that the mode's span of p (prim_side) holds [t - w, t + w]: no end of p
+ * lies within w of t (csg_diff_first; docs/numerics.md, "Culling in
+ * binary64"). Tested in binary64 on the exact frame: the
+ * canonical point c = ainv (o + t d - org) has |c| = rho, so every point of
+ * the ray within (1 - rho) / |ainv d| of t is inside the unit sphere. Asked
+ * of that: 1 - rho at least 1/64 (the chord's half-length is then at least
+ * 0.176, which bounds how much a rounding of the discriminant moves a
+ * root) beyond e, 2^8 units of the mode's rounding scaled by the canonical
+ * map's norm and the magnitudes the solver forms (the bounding radius, and
+ * in a floating mode the origin and t), and the distance along the ray at
+ * least 2w. */
+static int csg_deep_in_sphere(const csg_query *q, const prim *p, num t, num w)
+{
+    const prim_frame *fr = p->fr;
+    const double *o = q->r->b.o;
+    double d[3], v[3], c[3], g[3], td = num_to_d(t), scale = 1 + num_to_d(p->br), e, m, need;
+    int i;
+    vec3_to_d(q->r->d, d);
+    for (i = 0; i < 3; i++)
+        v[i] = o[i] + td * d[i] - fr->org_d[i];
+    dmath_m3_mul_v(fr->ainv_d, v, c);
+    if (!NUM_IS_FIXED)
+        scale += fabs(td) + fmax(fabs(o[0]), fmax(fabs(o[1]), fabs(o[2])));
+    e = 256 * num_to_d(NUM_ULP) * num_to_d(p->inv_smin) * scale;
+    dmath_m3_mul_v(fr->ainv_d, d, g);
+    need = 2 * num_to_d(w) * dmath_len3(g);
+    m = 1 - e - (need > 1.0 / 64 ? need : 1.0 / 64);
+    return m > 0 && dmath_norm2_3(c) <= m * m;
+}
+
+/* 1 when the first span of l starts at *a0 > *w on a face and outlasts
+ * a0's sweep step; *w = span_win(*a0). */
+VEC_HOT int csg_entry_window(const span *l, num *a0, num *w)
+{
+    *a0 = l[0].a.t;
+    *w = span_win(*a0);
+    return *a0 > *w && l[0].a.face != PRIM_FACE_NONE && l[0].b.t > span_lim(*a0);
+}
+
 /* The first crossing (0 < t <= q->tmax) of the difference A - B at node
  * ni (an object's root, tested as for csg_eval_in), as csg_first of its
  * span list gives it, into *h: 1, or 0 when there is none. Where A's first
@@ -622,23 +662,42 @@ static int csg_bounds_clear(csg_query *q, int ni, num lo, num hi)
  * (csg_bounds_clear), that list starts with A's entry at a0: in
  * span_merge's sweep the steps before a0 - w end before a0, no end of B
  * joins a0's step, and a0 lies outside B. B is then not classified over
- * the rest of A. Else the whole difference, as csg_eval_in. */
+ * the rest of A. Where A is an intersection X n S with S a sphere, X is
+ * classified first (as for A) and S only where A's whole list is needed:
+ * if X's first span starts at x0 as above and lies deep inside S there
+ * (csg_deep_in_sphere), no end of S lies within w of x0, so in A's sweep
+ * the steps before x0 - w end before x0 and x0's step holds X's end
+ * alone: A's list starts with X's first span, up to its exit. Else the
+ * whole difference, as csg_eval_in. */
 static int csg_diff_first(csg_query *q, int ni, int tested, csg_hit *h)
 {
-    const csg_node *nd = &q->c->nodes[ni];
+    const csg_node *nd = &q->c->nodes[ni], *a = &q->c->nodes[nd->left], *sp = NULL;
     size_t mark = arena_mark(q->ar);
     span *l = NULL, *s = NULL;
-    int nl = csg_eval(q, nd->left, NUM_ZERO, q->tmax, tested, &l), n;
-    num a0, w;
+    int lazy = 0, nl, n;
+    num a0, w, tc;
+    if (a->op == CSG_INTER) {     /* A = X n S, S a sphere: X first, as classifying A would begin */
+        sp = &q->c->nodes[a->right];
+        lazy = sp->op == CSG_LEAF && q->prims[sp->prim].kind == PRIM_SPHERE && q->r->excl_prim != sp->prim;
+    }
+    if (lazy && csg_bounds_miss(q, a, NUM_ZERO, q->tmax, tested, &tc))
+        return 0;
+    nl = csg_eval(q, lazy ? a->left : nd->left, NUM_ZERO, q->tmax, lazy || tested, &l);
     if (nl == 0) {
-        q->st->pruned++;          /* B cannot matter */
+        q->st->pruned++;          /* B (and S) cannot matter */
         return 0;
     }
-    a0 = l[0].a.t;
-    w = num_add(num_add(span_eps(a0), span_eps(a0)), span_eps(NUM_ZERO));
-    if (a0 > w && l[0].a.face != PRIM_FACE_NONE && l[0].b.t > span_lim(a0)
-        && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
+    /* X's list stands for A's (first crossing only) where X's first span,
+     * deep inside S, is A's; else S is classified now */
+    if (lazy && !(csg_entry_window(l, &a0, &w) && csg_deep_in_sphere(q, &q->prims[sp->prim], a0, w))) {
+        if ((nl = csg_eval_right(q, a, l, nl, NUM_ZERO, q->tmax, 1, mark, &l)) == 0)
+            return 0;
+        lazy = 0;
+    }
+    if (csg_entry_window(l, &a0, &w) && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
         return csg_first(l, nl, q->tmax, h);
+    if (lazy && (nl = csg_eval_right(q, a, l, nl, NUM_ZERO, q->tmax, 1, mark, &l)) == 0)
+        return 0;
     n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark, &s);
     return n > 0 && csg_first(s, n, q->tmax, h);
 }

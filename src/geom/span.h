@@ -57,6 +57,10 @@ static inline num span_eps(num t) { return num_add(SPAN_E0, num_mul(num_abs(t), 
 /* The last parameter a sweep step at boundary t takes with it: every end
  * in [t, span_lim(t)] is one boundary (span_merge). */
 static inline num span_lim(num t) { return num_add(t, span_eps(t)); }
+/* The window about t inside which an end of another operand could join
+ * t's sweep step or a step before it: w = 2 eps(t) + E0 (csg_diff_first,
+ * docs/numerics.md "Culling in binary64"). */
+static inline num span_win(num t) { return num_add(num_add(span_eps(t), span_eps(t)), span_eps(NUM_ZERO)); }
 
 /* Combines the sorted, disjoint, non-touching span lists a (na spans) and b
  * (nb spans) by op (CSG_UNION, CSG_INTER or CSG_DIFF = a minus b) into out,

@@ -670,6 +670,38 @@ static double csg_near(uint64_t *s)
  * m x + t, m a rotation times a non-uniform scale (row-major, as MATRIX). */
 typedef struct csg_place { double m[9], t[3]; } csg_place;
 
+/* A random placement into *pl, also written as the deck's MATRIX into t
+ * (n bytes, "-" and a line break first): a rotation by a random unit
+ * quaternion (none unless turn), a scale by size times 0.7 to 1.5 along
+ * each axis, a translation by -1 to 1 along each. */
+static void csg_random_place(uint64_t *s, int turn, double size, csg_place *pl, char *t, size_t n)
+{
+    double q[4], ql = 0, sc3[3];
+    int i;
+    for (i = 0; i < 4; i++) {
+        q[i] = turn ? test_uniform(s, -1, 1) : i == 0;
+        ql += q[i] * q[i];
+    }
+    for (i = 0; i < 4; i++)
+        q[i] /= sqrt(ql);
+    for (i = 0; i < 3; i++) {
+        sc3[i] = size * test_uniform(s, 0.7, 1.5);
+        pl->t[i] = test_uniform(s, -1, 1);
+    }
+    pl->m[0] = (1 - 2 * (q[2] * q[2] + q[3] * q[3])) * sc3[0];
+    pl->m[1] = 2 * (q[1] * q[2] - q[0] * q[3]) * sc3[1];
+    pl->m[2] = 2 * (q[1] * q[3] + q[0] * q[2]) * sc3[2];
+    pl->m[3] = 2 * (q[1] * q[2] + q[0] * q[3]) * sc3[0];
+    pl->m[4] = (1 - 2 * (q[1] * q[1] + q[3] * q[3])) * sc3[1];
+    pl->m[5] = 2 * (q[2] * q[3] - q[0] * q[1]) * sc3[2];
+    pl->m[6] = 2 * (q[1] * q[3] - q[0] * q[2]) * sc3[0];
+    pl->m[7] = 2 * (q[2] * q[3] + q[0] * q[1]) * sc3[1];
+    pl->m[8] = (1 - 2 * (q[1] * q[1] + q[2] * q[2])) * sc3[2];
+    snprintf(t, n, "-\n  MATRIX %.17g %.17g -\n  %.17g %.17g -\n  %.17g %.17g -\n"
+             "  %.17g %.17g -\n  %.17g %.17g -\n  %.17g %.17g", pl->m[0], pl->m[1], pl->m[2], pl->t[0],
+             pl->m[3], pl->m[4], pl->m[5], pl->t[1], pl->m[6], pl->m[7], pl->m[8], pl->t[2]);
+}
+
 /* Rays at the faces of the block [-1, 1]^3 placed by *ctx: a random point
  * of a random face (the top one, z = 1, for half the rays), met from
  * outside in a random direction, from 3 to 6 units away or (every other
@@ -719,36 +751,15 @@ static void test_csg_difference_first_crossing_near_faces(void **state)
 {
     uint64_t s = test_seed("test_csg_difference_first_crossing_near_faces");
     long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
-    int k, i;
+    int k;
     (void)state;
     for (k = 0; k < 12; k++) {
         char deck[4096], t[512];
         char *p = deck;
         csg_place pl;
-        double q[4], ql = 0, sc3[3], r, z2;
+        double r, z2;
         scene *sc;
-        for (i = 0; i < 4; i++) {     /* a random rotation, by a unit quaternion */
-            q[i] = k % 4 == 1 ? i == 0 : test_uniform(&s, -1, 1);
-            ql += q[i] * q[i];
-        }
-        for (i = 0; i < 4; i++)
-            q[i] /= sqrt(ql);
-        for (i = 0; i < 3; i++) {
-            sc3[i] = test_uniform(&s, 0.7, 1.5);
-            pl.t[i] = test_uniform(&s, -1, 1);
-        }
-        pl.m[0] = (1 - 2 * (q[2] * q[2] + q[3] * q[3])) * sc3[0];
-        pl.m[1] = 2 * (q[1] * q[2] - q[0] * q[3]) * sc3[1];
-        pl.m[2] = 2 * (q[1] * q[3] + q[0] * q[2]) * sc3[2];
-        pl.m[3] = 2 * (q[1] * q[2] + q[0] * q[3]) * sc3[0];
-        pl.m[4] = (1 - 2 * (q[1] * q[1] + q[3] * q[3])) * sc3[1];
-        pl.m[5] = 2 * (q[2] * q[3] - q[0] * q[1]) * sc3[2];
-        pl.m[6] = 2 * (q[1] * q[3] - q[0] * q[2]) * sc3[0];
-        pl.m[7] = 2 * (q[2] * q[3] + q[0] * q[1]) * sc3[1];
-        pl.m[8] = (1 - 2 * (q[1] * q[1] + q[2] * q[2])) * sc3[2];
-        snprintf(t, sizeof t, "-\n  MATRIX %.17g %.17g -\n  %.17g %.17g -\n  %.17g %.17g -\n"
-                 "  %.17g %.17g -\n  %.17g %.17g -\n  %.17g %.17g", pl.m[0], pl.m[1], pl.m[2], pl.t[0],
-                 pl.m[3], pl.m[4], pl.m[5], pl.t[1], pl.m[6], pl.m[7], pl.m[8], pl.t[2]);
+        csg_random_place(&s, k % 4 != 1, 1, &pl, t, sizeof t);
         r = test_uniform(&s, 0.2, 0.6);   /* B1's side along A's top face */
         z2 = k % 2 ? -ldexp(1, -(int)(5 + test_rand(&s) % 8)) : csg_near(&s);
         p += sprintf(p, VIEW "BLOCK A 2 2 2 TRANSLATE -1 -1 -1 %s\n", t);
@@ -761,6 +772,58 @@ static void test_csg_difference_first_crossing_near_faces(void **state)
         p += sprintf(p, "CYLINDER B4 %.5f 1 -\n  TRANSLATE %.5f %.5f %.20f %s\n", test_uniform(&s, 0.2, 0.5),
                      test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), -2 + csg_near(&s), t);
         p += sprintf(p, "UNION B B1 B2 B3 B4\nDIFF D A B\nOBJECT D\n");
+        assert_true((size_t)(p - deck) < sizeof deck);
+        sc = tt_parse(deck);
+        assert_non_null(sc);
+        csg_altered_hits(sc, csg_unbox, &s, 300, csg_face_source, &pl, n);
+        scene_free(sc);
+    }
+    csg_assert_same(n);
+}
+
+/* A difference whose left operand is a block A = [-1, 1]^3 intersected
+ * with a sphere S (radius 1.05 to 1.9, or in a third of the scenes 1 plus
+ * csg_near's offset, so that A's face centres lie near S's surface; an
+ * ellipsoid in half the scenes; its centre up to 0.25 off A's), minus a
+ * cylinder through A along a random axis and a sphere sunk into a face;
+ * the whole placed as in the test above, in a third of the scenes 32
+ * times smaller beside a block 50 units away, so that the part is small
+ * in the compiled scene; rays at A's faces from near and far, in every
+ * mode. Where A's entry lies deep inside S, the first crossing is found
+ * without S's test (csg.c, csg_diff_first, csg_deep_in_sphere): the
+ * nearest hits, and those of rays spawned from them, are bit for bit
+ * those found with every bounding box made infinite (the subtracted part
+ * then never clear of A's entry, so S and the whole difference are
+ * classified). */
+static void test_csg_sphere_cut_first_crossing(void **state)
+{
+    uint64_t s = test_seed("test_csg_sphere_cut_first_crossing");
+    long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
+    static const char *const turn[3] = {"ROTATE X 90", "ROTATE Y 90", ""};
+    int k;
+    (void)state;
+    for (k = 0; k < 12; k++) {
+        char deck[4096], t[512], ell[96] = "";
+        char *p = deck;
+        csg_place pl;
+        double rs = k % 3 == 0 ? 1 + csg_near(&s) : test_uniform(&s, 1.05, 1.9);
+        int small = k % 3 == 1;
+        scene *sc;
+        csg_random_place(&s, k % 4 != 1, small ? 1.0 / 32 : 1, &pl, t, sizeof t);
+        if (k % 2)
+            snprintf(ell, sizeof ell, "SCALE %.5f %.5f %.5f ", test_uniform(&s, 0.75, 1.33),
+                     test_uniform(&s, 0.75, 1.33), test_uniform(&s, 0.75, 1.33));
+        p += sprintf(p, VIEW "BLOCK A 2 2 2 TRANSLATE -1 -1 -1 %s\n", t);
+        p += sprintf(p, "SPHERE S %.20f %s-\n  TRANSLATE %.5f %.5f %.5f %s\n", rs, ell,
+                     test_uniform(&s, -0.25, 0.25), test_uniform(&s, -0.25, 0.25), test_uniform(&s, -0.25, 0.25), t);
+        p += sprintf(p, "CYLINDER B1 %.5f 3 TRANSLATE 0 0 -1.5 %s -\n  TRANSLATE %.5f %.5f 0 %s\n",
+                     test_uniform(&s, 0.2, 0.5), turn[test_rand(&s) % 3], test_uniform(&s, -0.5, 0.5),
+                     test_uniform(&s, -0.5, 0.5), t);
+        p += sprintf(p, "SPHERE B2 %.5f -\n  TRANSLATE %.20f %.5f %.5f %s\n", test_uniform(&s, 0.2, 0.6),
+                     -1 + csg_near(&s), test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), t);
+        p += sprintf(p, "INTER R A S\nUNION B B1 B2\nDIFF D R B\nOBJECT D\n");
+        if (small)
+            p += sprintf(p, "BLOCK FAR 2 2 2 TRANSLATE 50 -50 -50\nOBJECT FAR\n");
         assert_true((size_t)(p - deck) < sizeof deck);
         sc = tt_parse(deck);
         assert_non_null(sc);
@@ -803,6 +866,7 @@ int main(void)
         cmocka_unit_test(test_csg_rejects_malformed_tree),
         cmocka_unit_test(test_csg_boxes_never_change_a_hit),
         cmocka_unit_test(test_csg_difference_first_crossing_near_faces),
+        cmocka_unit_test(test_csg_sphere_cut_first_crossing),
         cmocka_unit_test(test_csg_deep_hierarchy_stack_in_arena),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
