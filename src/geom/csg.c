@@ -614,35 +614,45 @@ static int csg_bounds_clear(csg_query *q, int ni, num lo, num hi)
     return nd->op != CSG_UNION || csg_bounds_clear(q, nd->right, lo, hi);
 }
 
-/* 1 when the ray's point at parameter t lies so deep inside the sphere p
- * that the mode's span of p (prim_side) holds [t - w, t + w]: no end of p
- * lies within w of t (csg_diff_first; docs/numerics.md, "Culling in
- * binary64"). Tested in binary64 on the exact frame: the
- * canonical point c = ainv (o + t d - org) has |c| = rho, so every point of
- * the ray within (1 - rho) / |ainv d| of t is inside the unit sphere. Asked
- * of that: 1 - rho at least 1/64 (the chord's half-length is then at least
- * 0.176, which bounds how much a rounding of the discriminant moves a
- * root) beyond e, 2^8 units of the mode's rounding scaled by the canonical
- * map's norm and the magnitudes the solver forms (the bounding radius, and
- * in a floating mode the origin and t), and the distance along the ray at
- * least 2w. */
-static int csg_deep_in_sphere(const csg_query *q, const prim *p, num t, num w)
+/* 1 when the ray's segment [t0, t1] lies so deep inside the sphere p that
+ * no end of the mode's span of p (prim_side) lies within w of it, w the
+ * sweep window (span_win) at the larger of |t0|, |t1|: csg_diff_first;
+ * docs/numerics.md, "Culling in binary64". Tested in binary64 on the
+ * exact frame: the canonical point c = ainv (o + t d - org) at each end
+ * has |c| = rho, and every point of the ray within (1 - rho) / |ainv d| of
+ * it is inside the unit sphere (which holds the segment between: it is
+ * convex). Asked of that: 1 - rho at least 1/64 (the chord's half-length
+ * is then at least 0.176, which bounds how much a rounding of the
+ * discriminant moves a root) beyond e, 2^8 units of the mode's rounding
+ * scaled by the canonical map's norm and the magnitudes the solver forms
+ * (the bounding radius, and in a floating mode the origin and t), and the
+ * distance along the ray at least 2w. */
+static int csg_deep_in_sphere(const csg_query *q, const prim *p, num t0, num t1)
 {
     const prim_frame *fr = p->fr;
     const double *o = q->r->b.o;
-    double d[3], v[3], c[3], g[3], td = num_to_d(t), scale = 1 + num_to_d(p->br), e, m, need;
-    int i;
+    num tm = num_max(num_abs(t0), num_abs(t1));
+    double d[3], v[3], c[3], g[3], td[2], scale = 1 + num_to_d(p->br), e, m, need;
+    int i, k;
     vec3_to_d(q->r->d, d);
-    for (i = 0; i < 3; i++)
-        v[i] = o[i] + td * d[i] - fr->org_d[i];
-    dmath_m3_mul_v(fr->ainv_d, v, c);
     if (!NUM_IS_FIXED)
-        scale += fabs(td) + fmax(fabs(o[0]), fmax(fabs(o[1]), fabs(o[2])));
+        scale += num_to_d(tm) + fmax(fabs(o[0]), fmax(fabs(o[1]), fabs(o[2])));
     e = 256 * num_to_d(NUM_ULP) * num_to_d(p->inv_smin) * scale;
     dmath_m3_mul_v(fr->ainv_d, d, g);
-    need = 2 * num_to_d(w) * dmath_len3(g);
+    need = 2 * num_to_d(span_win(tm)) * dmath_len3(g);
     m = 1 - e - (need > 1.0 / 64 ? need : 1.0 / 64);
-    return m > 0 && dmath_norm2_3(c) <= m * m;
+    if (!(m > 0))
+        return 0;
+    td[0] = num_to_d(t0);
+    td[1] = num_to_d(t1);
+    for (k = 0; k < 2; k++) {
+        for (i = 0; i < 3; i++)
+            v[i] = o[i] + td[k] * d[i] - fr->org_d[i];
+        dmath_m3_mul_v(fr->ainv_d, v, c);
+        if (dmath_norm2_3(c) > m * m)
+            return 0;
+    }
+    return 1;
 }
 
 /* 1 when the first span of l starts at *a0 > *w on a face and outlasts
@@ -654,6 +664,65 @@ VEC_HOT int csg_entry_window(const span *l, num *a0, num *w)
     return *a0 > *w && l[0].a.face != PRIM_FACE_NONE && l[0].b.t > span_lim(*a0);
 }
 
+/* The first crossing of the difference A - B at nd (an object's root)
+ * given A's span list l (nl > 0, at the arena's mark): A's first entry
+ * where B's bounds keep clear of it (csg_diff_first), else that of the
+ * whole difference. */
+VEC_HOT int csg_diff_rest(csg_query *q, const csg_node *nd, span *l, int nl, int tested, size_t mark,
+                       csg_hit *h)
+{
+    span *s = NULL;
+    num a0, w;
+    int n;
+    if (csg_entry_window(l, &a0, &w) && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
+        return csg_first(l, nl, q->tmax, h);
+    n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark, &s);
+    return n > 0 && csg_first(s, n, q->tmax, h);
+}
+
+/* csg_diff_first where A = X n S, S the sphere leaf sp (A's right operand,
+ * the ray not leaving it). X is classified first, as classifying A would
+ * begin. From s0 = max(x0, -span_win(0)) on, x0 X's first entry, A's list
+ * is X's as far as S holds the ray deep (csg_deep_in_sphere): no end of S
+ * lies within w of that stretch, so the steps of A's sweep there hold X's
+ * ends alone, and the steps before s0 reach no t > 0 (before x0 both are
+ * empty). So where S holds s0 deep: A's first entry as csg_diff_first
+ * takes it; else the first crossing of X - B if S holds the ray deep from
+ * s0 to it; else none if X - B has none and S holds the ray deep from s0
+ * to X's exit (or q->tmax, if nearer). Else S is classified, and A - B. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int csg_diff_sphere(csg_query *q, const csg_node *nd, const csg_node *a, const prim *sp,
+                           int tested, csg_hit *h)
+{
+    size_t mark = arena_mark(q->ar), mark2;
+    span *l = NULL, *s = NULL;
+    int nl, n, hit;
+    num tc, s0;
+    if (csg_bounds_miss(q, a, NUM_ZERO, q->tmax, tested, &tc))
+        return 0;
+    if ((nl = csg_eval(q, a->left, NUM_ZERO, q->tmax, 1, &l)) == 0) {
+        q->st->pruned++;          /* S and B cannot matter */
+        return 0;
+    }
+    s0 = num_max(l[0].a.t, num_neg(span_win(NUM_ZERO)));
+    if (csg_deep_in_sphere(q, sp, s0, s0)) {
+        num a0, w;
+        if (csg_entry_window(l, &a0, &w) && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
+            return csg_first(l, nl, q->tmax, h);
+        mark2 = arena_mark(q->ar);  /* X - B above X's list */
+        n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark2, &s);
+        hit = n > 0 && csg_first(s, n, q->tmax, h);
+        if (csg_deep_in_sphere(q, sp, s0, hit ? h->t : num_min(l[nl - 1].b.t, q->tmax)))
+            return hit;
+        arena_release(q->ar, mark2);
+    }
+    if ((nl = csg_eval_right(q, a, l, nl, NUM_ZERO, q->tmax, 1, mark, &l)) == 0)
+        return 0;
+    return csg_diff_rest(q, nd, l, nl, tested, mark, h);
+}
+
 /* The first crossing (0 < t <= q->tmax) of the difference A - B at node
  * ni (an object's root, tested as for csg_eval_in), as csg_first of its
  * span list gives it, into *h: 1, or 0 when there is none. Where A's first
@@ -662,44 +731,24 @@ VEC_HOT int csg_entry_window(const span *l, num *a0, num *w)
  * (csg_bounds_clear), that list starts with A's entry at a0: in
  * span_merge's sweep the steps before a0 - w end before a0, no end of B
  * joins a0's step, and a0 lies outside B. B is then not classified over
- * the rest of A. Where A is an intersection X n S with S a sphere, X is
- * classified first (as for A) and S only where A's whole list is needed:
- * if X's first span starts at x0 as above and lies deep inside S there
- * (csg_deep_in_sphere), no end of S lies within w of x0, so in A's sweep
- * the steps before x0 - w end before x0 and x0's step holds X's end
- * alone: A's list starts with X's first span, up to its exit. Else the
- * whole difference, as csg_eval_in. */
+ * the rest of A. An A that is X n S with S a sphere: csg_diff_sphere.
+ * Else the whole difference, as csg_eval_in. */
 static int csg_diff_first(csg_query *q, int ni, int tested, csg_hit *h)
 {
-    const csg_node *nd = &q->c->nodes[ni], *a = &q->c->nodes[nd->left], *sp = NULL;
+    const csg_node *nd = &q->c->nodes[ni], *a = &q->c->nodes[nd->left];
     size_t mark = arena_mark(q->ar);
-    span *l = NULL, *s = NULL;
-    int lazy = 0, nl, n;
-    num a0, w, tc;
-    if (a->op == CSG_INTER) {     /* A = X n S, S a sphere: X first, as classifying A would begin */
-        sp = &q->c->nodes[a->right];
-        lazy = sp->op == CSG_LEAF && q->prims[sp->prim].kind == PRIM_SPHERE && q->r->excl_prim != sp->prim;
+    span *l = NULL;
+    int nl;
+    if (a->op == CSG_INTER) {
+        const csg_node *sp = &q->c->nodes[a->right];
+        if (sp->op == CSG_LEAF && q->prims[sp->prim].kind == PRIM_SPHERE && q->r->excl_prim != sp->prim)
+            return csg_diff_sphere(q, nd, a, &q->prims[sp->prim], tested, h);
     }
-    if (lazy && csg_bounds_miss(q, a, NUM_ZERO, q->tmax, tested, &tc))
-        return 0;
-    nl = csg_eval(q, lazy ? a->left : nd->left, NUM_ZERO, q->tmax, lazy || tested, &l);
-    if (nl == 0) {
-        q->st->pruned++;          /* B (and S) cannot matter */
+    if ((nl = csg_eval(q, nd->left, NUM_ZERO, q->tmax, tested, &l)) == 0) {
+        q->st->pruned++;          /* B cannot matter */
         return 0;
     }
-    /* X's list stands for A's (first crossing only) where X's first span,
-     * deep inside S, is A's; else S is classified now */
-    if (lazy && !(csg_entry_window(l, &a0, &w) && csg_deep_in_sphere(q, &q->prims[sp->prim], a0, w))) {
-        if ((nl = csg_eval_right(q, a, l, nl, NUM_ZERO, q->tmax, 1, mark, &l)) == 0)
-            return 0;
-        lazy = 0;
-    }
-    if (csg_entry_window(l, &a0, &w) && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
-        return csg_first(l, nl, q->tmax, h);
-    if (lazy && (nl = csg_eval_right(q, a, l, nl, NUM_ZERO, q->tmax, 1, mark, &l)) == 0)
-        return 0;
-    n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark, &s);
-    return n > 0 && csg_first(s, n, q->tmax, h);
+    return csg_diff_rest(q, nd, l, nl, tested, mark, h);
 }
 
 /* The first crossing (0 < t <= q->tmax) of object k, rooted at the
@@ -724,7 +773,7 @@ static int csg_object_tree(csg_query *q, int k, int ni, int tested, csg_hit *h)
                         || hull[3] == leaves))
         return 0;
     mark = arena_mark(q->ar);
-    if (q->c->nodes[ni].op == CSG_DIFF) {
+    if (q->c->nodes[ni].op == CSG_DIFF && !q->c->whole) {
         hit = csg_diff_first(q, ni, tested, h);
     } else {
         n = csg_eval_in(q, ni, NUM_ZERO, q->tmax, tested, &s);

@@ -69,6 +69,8 @@ typedef struct csg {
     int nobjects, nbounded;
     bvh objtree;             /* over objects[0 .. nbounded - 1] */
     size_t peak_spans;       /* span storage one query needs at most */
+    int whole;               /* classify each object whole, without
+                                csg_diff_first's shortcuts (tests' reference) */
 } csg;
 
 /* A child of the object hierarchy (bvh.h) that the traversal will visit

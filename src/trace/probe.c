@@ -166,6 +166,8 @@ static int probe_deepen(void *v)
     return arena_init(&p->ar, NS(csg_arena_bytes)(t)) ? -1 : depth;
 }
 
+static void probe_whole(void *v) { ((probe_cs *)v)->cs->tree.whole = 1; }
+
 const probe_ops NS(probe_ops) = {
     .name = NUM_NAME,
     .compile = probe_compile,
@@ -176,4 +178,5 @@ const probe_ops NS(probe_ops) = {
     .refract = probe_refract,
     .unbox = probe_unbox,
     .deepen = probe_deepen,
+    .whole = probe_whole,
 };

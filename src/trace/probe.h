@@ -42,6 +42,10 @@ typedef struct probe_ops {
      * hierarchies that deep (csg.c): for tests that both stacks agree.
      * Returns the hierarchy's real depth, or -1 when memory runs out. */
     int (*deepen)(void *cs);
+    /* Has every object classified whole (its span list, then its first
+     * crossing), without the first-crossing shortcuts of csg_diff_first:
+     * the reference for tests of those. */
+    void (*whole)(void *cs);
 } probe_ops;
 
 extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops,

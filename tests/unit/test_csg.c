@@ -630,6 +630,8 @@ static void csg_assert_same(const long n[4])
 
 static void csg_unbox(const probe_ops *ops, void *cs) { ops->unbox(cs); }
 
+static void csg_whole(const probe_ops *ops, void *cs) { ops->whole(cs); }
+
 /* 48 objects give at least 6 levels, so subtrees wait on the stack. */
 static void csg_deepen(const probe_ops *ops, void *cs) { assert_true(ops->deepen(cs) >= 6); }
 
@@ -827,7 +829,7 @@ static void test_csg_sphere_cut_first_crossing(void **state)
         assert_true((size_t)(p - deck) < sizeof deck);
         sc = tt_parse(deck);
         assert_non_null(sc);
-        csg_altered_hits(sc, csg_unbox, &s, 300, csg_face_source, &pl, n);
+        csg_altered_hits(sc, csg_whole, &s, 300, csg_face_source, &pl, n);
         scene_free(sc);
     }
     csg_assert_same(n);
