@@ -791,12 +791,14 @@ static void test_csg_difference_first_crossing_near_faces(void **state)
  * the whole placed as in the test above, in a third of the scenes 32
  * times smaller beside a block 50 units away, so that the part is small
  * in the compiled scene; rays at A's faces from near and far, in every
- * mode. Where A's entry lies deep inside S, the first crossing is found
- * without S's test (csg.c, csg_diff_first, csg_deep_in_sphere): the
- * nearest hits, and those of rays spawned from them, are bit for bit
- * those found with every bounding box made infinite (the subtracted part
- * then never clear of A's entry, so S and the whole difference are
- * classified). */
+ * mode. Where S holds the ray deep from A's entry to the difference's
+ * first crossing, that crossing is found without S's test (csg.c,
+ * csg_diff_sphere): the nearest hits, and those of rays spawned from them
+ * (from the part's faces and bores, into it and out of it), are bit for
+ * bit those found when every object is classified whole (probe whole).
+ * S's centre is offset from A's in the direction that puts S second in
+ * the compiled intersection (its operands are ordered by their centres
+ * along the axis of largest spread): the order csg_diff_sphere reads. */
 static void test_csg_sphere_cut_first_crossing(void **state)
 {
     uint64_t s = test_seed("test_csg_sphere_cut_first_crossing");
@@ -808,16 +810,25 @@ static void test_csg_sphere_cut_first_crossing(void **state)
         char deck[4096], t[512], ell[96] = "";
         char *p = deck;
         csg_place pl;
-        double rs = k % 3 == 0 ? 1 + csg_near(&s) : test_uniform(&s, 1.05, 1.9);
-        int small = k % 3 == 1;
+        double rs = k % 3 == 0 ? 1 + csg_near(&s) : test_uniform(&s, 1.05, 1.9), off[3], wo[3];
+        int small = k % 3 == 1, i, ax = 0;
         scene *sc;
         csg_random_place(&s, k % 4 != 1, small ? 1.0 / 32 : 1, &pl, t, sizeof t);
         if (k % 2)
             snprintf(ell, sizeof ell, "SCALE %.5f %.5f %.5f ", test_uniform(&s, 0.75, 1.33),
                      test_uniform(&s, 0.75, 1.33), test_uniform(&s, 0.75, 1.33));
         p += sprintf(p, VIEW "BLOCK A 2 2 2 TRANSLATE -1 -1 -1 %s\n", t);
-        p += sprintf(p, "SPHERE S %.20f %s-\n  TRANSLATE %.5f %.5f %.5f %s\n", rs, ell,
-                     test_uniform(&s, -0.25, 0.25), test_uniform(&s, -0.25, 0.25), test_uniform(&s, -0.25, 0.25), t);
+        for (i = 0; i < 3; i++)
+            off[i] = test_uniform(&s, -0.25, 0.25);
+        for (i = 0; i < 3; i++)       /* the placed offset */
+            wo[i] = pl.m[3 * i] * off[0] + pl.m[3 * i + 1] * off[1] + pl.m[3 * i + 2] * off[2];
+        for (i = 1; i < 3; i++)
+            if (fabs(wo[i]) > fabs(wo[ax]))
+                ax = i;
+        if (wo[ax] < 0)               /* S's centre after A's along that axis */
+            for (i = 0; i < 3; i++)
+                off[i] = -off[i];
+        p += sprintf(p, "SPHERE S %.20f %s-\n  TRANSLATE %.5f %.5f %.5f %s\n", rs, ell, off[0], off[1], off[2], t);
         p += sprintf(p, "CYLINDER B1 %.5f 3 TRANSLATE 0 0 -1.5 %s -\n  TRANSLATE %.5f %.5f 0 %s\n",
                      test_uniform(&s, 0.2, 0.5), turn[test_rand(&s) % 3], test_uniform(&s, -0.5, 0.5),
                      test_uniform(&s, -0.5, 0.5), t);
