@@ -614,45 +614,53 @@ static int csg_bounds_clear(csg_query *q, int ni, num lo, num hi)
     return nd->op != CSG_UNION || csg_bounds_clear(q, nd->right, lo, hi);
 }
 
-/* 1 when the ray's segment [t0, t1] lies so deep inside the sphere p that
- * no end of the mode's span of p (prim_side) lies within w of it, w the
- * sweep window (span_win) at the larger of |t0|, |t1|: csg_diff_first;
- * docs/numerics.md, "Culling in binary64". Tested in binary64 on the
- * exact frame: the canonical point c = ainv (o + t d - org) at each end
- * has |c| = rho, and every point of the ray within (1 - rho) / |ainv d| of
- * it is inside the unit sphere (which holds the segment between: it is
- * convex). Asked of that: 1 - rho at least 1/64 (the chord's half-length
- * is then at least 0.176, which bounds how much a rounding of the
- * discriminant moves a root) beyond e, 2^8 units of the mode's rounding
- * scaled by the canonical map's norm and the magnitudes the solver forms
- * (the bounding radius, and in a floating mode the origin and t), and the
- * distance along the ray at least 2w. */
-static int csg_deep_in_sphere(const csg_query *q, const prim *p, num t0, num t1)
+/* The ray in a sphere's canonical frame, in binary64, for
+ * csg_deep_in_sphere: the point c0 = ainv (o + t0 d - org) on the exact
+ * placement, and g = ainv d, its move per unit of t. */
+typedef struct csg_canon { double c0[3], g[3], glen; num t0; } csg_canon;
+
+static void csg_canon_at(const csg_query *q, const prim *p, num t0, csg_canon *k)
 {
     const prim_frame *fr = p->fr;
-    const double *o = q->r->b.o;
-    num tm = num_max(num_abs(t0), num_abs(t1));
-    double d[3], v[3], c[3], g[3], td[2], scale = 1 + num_to_d(p->br), e, m, need;
-    int i, k;
+    double d[3], v[3], td = num_to_d(t0);
+    int i;
     vec3_to_d(q->r->d, d);
+    for (i = 0; i < 3; i++)
+        v[i] = q->r->b.o[i] + td * d[i] - fr->org_d[i];
+    dmath_m3_mul_v(fr->ainv_d, v, k->c0);
+    dmath_m3_mul_v(fr->ainv_d, d, k->g);
+    k->glen = dmath_len3(k->g);
+    k->t0 = t0;
+}
+
+/* 1 when the ray's stretch from k->t0 to t1 lies so deep inside the
+ * sphere p that no end of the mode's span of p (prim_side) lies within w
+ * of it, w = 2 eps + E0 (span_win) at the larger |t| (csg_diff_sphere;
+ * docs/numerics.md, "Culling in binary64"). With |c| = rho at either end,
+ * every point of the ray within (1 - rho) / |g| of it is inside the unit
+ * sphere, which holds the points between (it is convex). Asked of that:
+ * 1 - rho at least 1/64 (the chord's half-length is then at least 0.176,
+ * which bounds how much a rounding of the discriminant moves a root)
+ * beyond e, 2^8 units of the mode's rounding scaled by the canonical map's
+ * norm and the magnitudes the solver forms (the bounding radius, and in a
+ * floating mode the origin and t), and the distance along the ray at
+ * least 2w. */
+static int csg_deep_in_sphere(const csg_query *q, const prim *p, const csg_canon *k, num t1)
+{
+    const double *o = q->r->b.o;
+    double t0 = num_to_d(k->t0), dt = num_to_d(t1) - t0, tm = fmax(fabs(t0), fabs(t0 + dt));
+    double scale = 1 + num_to_d(p->br), e, m, need, c1[3];
+    int i;
     if (!NUM_IS_FIXED)
-        scale += num_to_d(tm) + fmax(fabs(o[0]), fmax(fabs(o[1]), fabs(o[2])));
+        scale += tm + fmax(fabs(o[0]), fmax(fabs(o[1]), fabs(o[2])));
     e = 256 * num_to_d(NUM_ULP) * num_to_d(p->inv_smin) * scale;
-    dmath_m3_mul_v(fr->ainv_d, d, g);
-    need = 2 * num_to_d(span_win(tm)) * dmath_len3(g);
+    need = 2 * (3 * num_to_d(SPAN_E0) + 2 * tm * num_to_d(SPAN_E1)) * k->glen;
     m = 1 - e - (need > 1.0 / 64 ? need : 1.0 / 64);
-    if (!(m > 0))
+    if (!(m > 0) || dmath_norm2_3(k->c0) > m * m)
         return 0;
-    td[0] = num_to_d(t0);
-    td[1] = num_to_d(t1);
-    for (k = 0; k < 2; k++) {
-        for (i = 0; i < 3; i++)
-            v[i] = o[i] + td[k] * d[i] - fr->org_d[i];
-        dmath_m3_mul_v(fr->ainv_d, v, c);
-        if (dmath_norm2_3(c) > m * m)
-            return 0;
-    }
-    return 1;
+    for (i = 0; i < 3; i++)
+        c1[i] = k->c0[i] + dt * k->g[i];
+    return dmath_norm2_3(c1) <= m * m;
 }
 
 /* 1 when the first span of l starts at *a0 > *w on a face and outlasts
@@ -699,22 +707,23 @@ static int csg_diff_sphere(csg_query *q, const csg_node *nd, const csg_node *a, 
     size_t mark = arena_mark(q->ar), mark2;
     span *l = NULL, *s = NULL;
     int nl, n, hit;
-    num tc, s0;
+    num tc;
+    csg_canon k;
     if (csg_bounds_miss(q, a, NUM_ZERO, q->tmax, tested, &tc))
         return 0;
     if ((nl = csg_eval(q, a->left, NUM_ZERO, q->tmax, 1, &l)) == 0) {
         q->st->pruned++;          /* S and B cannot matter */
         return 0;
     }
-    s0 = num_max(l[0].a.t, num_neg(span_win(NUM_ZERO)));
-    if (csg_deep_in_sphere(q, sp, s0, s0)) {
+    csg_canon_at(q, sp, num_max(l[0].a.t, num_neg(span_win(NUM_ZERO))), &k);
+    if (csg_deep_in_sphere(q, sp, &k, k.t0)) {
         num a0, w;
         if (csg_entry_window(l, &a0, &w) && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
             return csg_first(l, nl, q->tmax, h);
         mark2 = arena_mark(q->ar);  /* X - B above X's list */
         n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark2, &s);
         hit = n > 0 && csg_first(s, n, q->tmax, h);
-        if (csg_deep_in_sphere(q, sp, s0, hit ? h->t : num_min(l[nl - 1].b.t, q->tmax)))
+        if (csg_deep_in_sphere(q, sp, &k, hit ? h->t : num_min(l[nl - 1].b.t, q->tmax)))
             return hit;
         arena_release(q->ar, mark2);
     }
