@@ -733,6 +733,26 @@ static void csg_face_source(uint64_t *s, const void *ctx, int k, double *o, doub
         d[i] /= sqrt(len);
 }
 
+/* Appends to the deck at p a sphere `name` of radius 0.2 to 0.6 sunk into
+ * the block's face x = -1 (its centre csg_near's offset from the face),
+ * placed by t; returns the new end. */
+static char *csg_sunk_sphere(char *p, uint64_t *s, const char *name, const char *t)
+{
+    return p + sprintf(p, "SPHERE %s %.5f -\n  TRANSLATE %.20f %.5f %.5f %s\n", name, test_uniform(s, 0.2, 0.6),
+                       -1 + csg_near(s), test_uniform(s, -0.6, 0.6), test_uniform(s, -0.6, 0.6), t);
+}
+
+/* Parses deck and asks it csg_altered_hits' questions (alter), 300 rays
+ * at the faces of the block placed by pl. */
+static void csg_face_hits(const char *deck, void (*alter)(const probe_ops *ops, void *cs), uint64_t *s,
+                          const csg_place *pl, long n[4])
+{
+    scene *sc = tt_parse(deck);
+    assert_non_null(sc);
+    csg_altered_hits(sc, alter, s, 300, csg_face_source, pl, n);
+    scene_free(sc);
+}
+
 /* Differences whose subtracted solids touch the faces of the solid they
  * cut, or lie near them: a block A = [-1, 1]^3 minus the union of a
  * cylinder along A's top face, a block and a sphere sunk into two other
@@ -760,7 +780,6 @@ static void test_csg_difference_first_crossing_near_faces(void **state)
         char *p = deck;
         csg_place pl;
         double r, z2;
-        scene *sc;
         csg_random_place(&s, k % 4 != 1, 1, &pl, t, sizeof t);
         r = test_uniform(&s, 0.2, 0.6);   /* B1's side along A's top face */
         z2 = k % 2 ? -ldexp(1, -(int)(5 + test_rand(&s) % 8)) : csg_near(&s);
@@ -769,16 +788,12 @@ static void test_csg_difference_first_crossing_near_faces(void **state)
                      "  TRANSLATE 0 %.5f %.20f %s\n", r, test_uniform(&s, -0.5, 0.5), 1 - r + csg_near(&s), t);
         p += sprintf(p, "BLOCK B2 1 1 1 -\n  TRANSLATE %.5f %.5f %.20f %s\n", test_uniform(&s, -1.5, 0.5),
                      test_uniform(&s, -1.5, 0.5), z2, t);
-        p += sprintf(p, "SPHERE B3 %.5f -\n  TRANSLATE %.20f %.5f %.5f %s\n", test_uniform(&s, 0.2, 0.6),
-                     -1 + csg_near(&s), test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), t);
+        p = csg_sunk_sphere(p, &s, "B3", t);
         p += sprintf(p, "CYLINDER B4 %.5f 1 -\n  TRANSLATE %.5f %.5f %.20f %s\n", test_uniform(&s, 0.2, 0.5),
                      test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), -2 + csg_near(&s), t);
         p += sprintf(p, "UNION B B1 B2 B3 B4\nDIFF D A B\nOBJECT D\n");
         assert_true((size_t)(p - deck) < sizeof deck);
-        sc = tt_parse(deck);
-        assert_non_null(sc);
-        csg_altered_hits(sc, csg_unbox, &s, 300, csg_face_source, &pl, n);
-        scene_free(sc);
+        csg_face_hits(deck, csg_unbox, &s, &pl, n);
     }
     csg_assert_same(n);
 }
@@ -812,7 +827,6 @@ static void test_csg_sphere_cut_first_crossing(void **state)
         csg_place pl;
         double rs = k % 3 == 0 ? 1 + csg_near(&s) : test_uniform(&s, 1.05, 1.9), off[3], wo[3];
         int small = k % 3 == 1, i, ax = 0;
-        scene *sc;
         csg_random_place(&s, k % 4 != 1, small ? 1.0 / 32 : 1, &pl, t, sizeof t);
         if (k % 2)
             snprintf(ell, sizeof ell, "SCALE %.5f %.5f %.5f ", test_uniform(&s, 0.75, 1.33),
@@ -832,16 +846,12 @@ static void test_csg_sphere_cut_first_crossing(void **state)
         p += sprintf(p, "CYLINDER B1 %.5f 3 TRANSLATE 0 0 -1.5 %s -\n  TRANSLATE %.5f %.5f 0 %s\n",
                      test_uniform(&s, 0.2, 0.5), turn[test_rand(&s) % 3], test_uniform(&s, -0.5, 0.5),
                      test_uniform(&s, -0.5, 0.5), t);
-        p += sprintf(p, "SPHERE B2 %.5f -\n  TRANSLATE %.20f %.5f %.5f %s\n", test_uniform(&s, 0.2, 0.6),
-                     -1 + csg_near(&s), test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), t);
+        p = csg_sunk_sphere(p, &s, "B2", t);
         p += sprintf(p, "INTER R A S\nUNION B B1 B2\nDIFF D R B\nOBJECT D\n");
         if (small)
             p += sprintf(p, "BLOCK FAR 2 2 2 TRANSLATE 50 -50 -50\nOBJECT FAR\n");
         assert_true((size_t)(p - deck) < sizeof deck);
-        sc = tt_parse(deck);
-        assert_non_null(sc);
-        csg_altered_hits(sc, csg_whole, &s, 300, csg_face_source, &pl, n);
-        scene_free(sc);
+        csg_face_hits(deck, csg_whole, &s, &pl, n);
     }
     csg_assert_same(n);
 }
