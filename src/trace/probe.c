@@ -111,22 +111,46 @@ static int probe_hit_fn(const void *v, const double *o, const double *d, probe_h
     return probe_trace(p, &r, h, &pn);
 }
 
+/* The ray from the nearest hit along d from o, as shading spawns it along
+ * d2 (h1 that hit): 0, or -1 when there is none. */
+static int probe_spawn(const probe_cs *p, const double *o, const double *d, const double *d2, probe_hit *h1,
+                       prim_ray *r2)
+{
+    prim_ray r;
+    vec3 pn, dir;
+    double u[3];
+    if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || dmath_unit3(d2, u)
+        || vec3_normalize(vec3_from_d(u), &dir, NULL))
+        return -1;
+    prim_ray_set(r2, pn, dir, h1->prim, u[0] * h1->sf.n[0] + u[1] * h1->sf.n[1] + u[2] * h1->sf.n[2] < 0);
+    return 0;
+}
+
 static int probe_respawn(const void *v, const double *o, const double *d, const double *d2,
                          probe_hit *h1, probe_hit *h2)
 {
     const probe_cs *p = v;
-    prim_ray r, r2;
+    prim_ray r2;
     vec3 pn;
-    double u[3];
-    if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || dmath_unit3(d2, u))
+    if (probe_spawn(p, o, d, d2, h1, &r2))
         return -1;
-    {
-        vec3 dir;
-        if (vec3_normalize(vec3_from_d(u), &dir, NULL))
-            return -1;
-        prim_ray_set(&r2, pn, dir, h1->prim, u[0] * h1->sf.n[0] + u[1] * h1->sf.n[1] + u[2] * h1->sf.n[2] < 0);
-    }
     return probe_trace(p, &r2, h2, &pn);
+}
+
+static int probe_shadow(const void *v, const double *o, const double *d, const double *d2, double tmax)
+{
+    const probe_cs *p = v;
+    const cscene *cs = p->cs;
+    prim_ray r2;
+    probe_hit h1;
+    geom_stats gs;
+    csg_hit ch;
+    double tm = tmax * cs->nm.scale;
+    if (probe_spawn(p, o, d, d2, &h1, &r2))
+        return -1;
+    memset(&gs, 0, sizeof gs);
+    return NS(csg_occluded)(&cs->tree, cs->prims, &r2, num_from_d(tm < GEOM_TMAX ? tm : GEOM_TMAX),
+                            (arena *)&p->ar, &gs, &ch);
 }
 
 static int probe_refract(const double *d, const double *n, double eta, double *t)
@@ -175,6 +199,7 @@ const probe_ops NS(probe_ops) = {
     .prim_span = probe_prim_span,
     .hit = probe_hit_fn,
     .respawn = probe_respawn,
+    .shadow = probe_shadow,
     .refract = probe_refract,
     .unbox = probe_unbox,
     .deepen = probe_deepen,

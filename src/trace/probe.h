@@ -30,6 +30,10 @@ typedef struct probe_ops {
      * hit, 0 when it hits nothing, -1 when the first ray missed. */
     int (*respawn)(const void *cs, const double *o, const double *d, const double *d2,
                    probe_hit *h1, probe_hit *h2);
+    /* As respawn, but the ray spawned along d2 asks what a shadow ray asks
+     * (csg_occluded): whether anything lies within tmax deck units of the
+     * hit. 1 or 0; -1 when the first ray missed. */
+    int (*shadow)(const void *cs, const double *o, const double *d, const double *d2, double tmax);
     /* The mode's refraction (optics.h) of unit d at unit normal n for index
      * ratio eta: 0 and t, 1 for total internal reflection, -1 degenerate. */
     int (*refract)(const double *d, const double *n, double eta, double *t);

@@ -581,11 +581,35 @@ static void csg_same_hits(const probe_ops *ops, void *a, void *b, uint64_t *s, i
     }
 }
 
+/* Two compiles a and b asked what shadow rays ask (probe shadow): from the
+ * nearest hit of a ray from src, along a random direction, whether
+ * anything lies within 0 to 3 deck units (a far end that often falls
+ * inside a solid). Adds to n[0] the rays, n[1] b's occluded ones, n[2]
+ * the rays where a and b answer differently. */
+static void csg_same_shadows(const probe_ops *ops, void *a, void *b, uint64_t *s, int nrays, csg_ray_fn *src,
+                             const void *ctx, long n[3])
+{
+    int k;
+    for (k = 0; k < nrays; k++) {
+        double o[3], d[3], d2[3], tmax;
+        int ra, rb;
+        src(s, ctx, k, o, d);
+        tt_random_dir(s, d2);
+        tmax = test_uniform(s, 0, 3);
+        ra = ops->shadow(a, o, d, d2, tmax);
+        rb = ops->shadow(b, o, d, d2, tmax);
+        n[0] += rb >= 0;
+        n[1] += rb > 0;
+        n[2] += ra != rb;
+    }
+}
+
 /* Compiles sc twice in every mode, alters the second compile (alter) and
  * asks both the questions of csg_same_hits (rays from src), adding to
- * n[0..3]. */
+ * n[0..3], and when sh is not NULL those of csg_same_shadows, adding to
+ * sh[0..2]. */
 static void csg_altered_hits(const scene *sc, void (*alter)(const probe_ops *ops, void *cs), uint64_t *s,
-                             int nrays, csg_ray_fn *src, const void *ctx, long n[4])
+                             int nrays, csg_ray_fn *src, const void *ctx, long n[4], long *sh)
 {
     int m;
     for (m = 0; m < TT_MODES; m++) {
@@ -597,6 +621,8 @@ static void csg_altered_hits(const scene *sc, void (*alter)(const probe_ops *ops
         assert_int_equal(ops->compile(sc, &b, &err), 0);
         alter(ops, b);
         csg_same_hits(ops, a, b, s, nrays, src, ctx, n);
+        if (sh)
+            csg_same_shadows(ops, a, b, s, nrays, src, ctx, sh);
         ops->free(a);
         ops->free(b);
     }
@@ -653,7 +679,7 @@ static void test_csg_boxes_never_change_a_hit(void **state)
     for (k = 0; k < 8; k++) {
         char deck[8192];
         scene *sc = csg_random_scene(deck, sizeof deck, &s, 6, 2.5, 4, k % 2, -3);
-        csg_altered_hits(sc, csg_unbox, &s, 250, csg_random_source, &far, n);
+        csg_altered_hits(sc, csg_unbox, &s, 250, csg_random_source, &far, n, NULL);
         scene_free(sc);
     }
     csg_assert_same(n);
@@ -743,13 +769,13 @@ static char *csg_sunk_sphere(char *p, uint64_t *s, const char *name, const char 
 }
 
 /* Parses deck and asks it csg_altered_hits' questions (alter), 300 rays
- * at the faces of the block placed by pl. */
+ * at the faces of the block placed by pl (and shadow rays, sh). */
 static void csg_face_hits(const char *deck, void (*alter)(const probe_ops *ops, void *cs), uint64_t *s,
-                          const csg_place *pl, long n[4])
+                          const csg_place *pl, long n[4], long *sh)
 {
     scene *sc = tt_parse(deck);
     assert_non_null(sc);
-    csg_altered_hits(sc, alter, s, 300, csg_face_source, pl, n);
+    csg_altered_hits(sc, alter, s, 300, csg_face_source, pl, n, sh);
     scene_free(sc);
 }
 
@@ -793,7 +819,7 @@ static void test_csg_difference_first_crossing_near_faces(void **state)
                      test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), -2 + csg_near(&s), t);
         p += sprintf(p, "UNION B B1 B2 B3 B4\nDIFF D A B\nOBJECT D\n");
         assert_true((size_t)(p - deck) < sizeof deck);
-        csg_face_hits(deck, csg_unbox, &s, &pl, n);
+        csg_face_hits(deck, csg_unbox, &s, &pl, n, NULL);
     }
     csg_assert_same(n);
 }
@@ -818,6 +844,7 @@ static void test_csg_sphere_cut_first_crossing(void **state)
 {
     uint64_t s = test_seed("test_csg_sphere_cut_first_crossing");
     long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
+    long sh[3] = {0, 0, 0};       /* shadow rays, occluded, differing */
     static const char *const turn[3] = {"ROTATE X 90", "ROTATE Y 90", ""};
     int k;
     (void)state;
@@ -851,9 +878,12 @@ static void test_csg_sphere_cut_first_crossing(void **state)
         if (small)
             p += sprintf(p, "BLOCK FAR 2 2 2 TRANSLATE 50 -50 -50\nOBJECT FAR\n");
         assert_true((size_t)(p - deck) < sizeof deck);
-        csg_face_hits(deck, csg_whole, &s, &pl, n);
+        csg_face_hits(deck, csg_whole, &s, &pl, n, sh);
     }
     csg_assert_same(n);
+    print_message("# %ld shadow rays, %ld occluded, %ld differ\n", sh[0], sh[1], sh[2]);
+    assert_true(sh[1] > sh[0] / 10 && sh[0] - sh[1] > sh[0] / 10);
+    assert_int_equal(sh[2], 0);
 }
 
 /* 48 random objects (as above) in every mode: a query keeps the subtrees
@@ -872,7 +902,7 @@ static void test_csg_deep_hierarchy_stack_in_arena(void **state)
     (void)state;
     for (k = 0; k < 2; k++) {
         scene *sc = csg_random_scene(deck, sizeof deck, &s, 48, 0.8, 5, k % 2, -6);
-        csg_altered_hits(sc, csg_deepen, &s, 300, csg_random_source, &near, n);
+        csg_altered_hits(sc, csg_deepen, &s, 300, csg_random_source, &near, n, NULL);
         scene_free(sc);
     }
     csg_assert_same(n);
