@@ -13,7 +13,7 @@ WARN     := -std=c99 -pedantic -Wall -Wextra -Werror
 CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Isrc -I. -MMD -MP
 ALL_CFLAGS = $(WARN) $(CFLAGS) -fopenmp $(MODULE_CFLAGS)
 # -ldl: util/libload's dlopen (glibc before 2.34 keeps it in libdl)
-LIBS     = $(MODULE_LIBS) -lpng -lz -lm -ldl
+LIBS     = $(MODULE_LIBS) -lpng -ldeflate -lz -lm -ldl
 MODES    := q16 q32 f32 f64 hfp32 hfp64
 
 # Directories compiled once per numeric mode (symbols prefixed by mode).

@@ -20,7 +20,8 @@ demo gcc                 the C99 compiler, with OpenMP
 demo make                the build
 demo pkg-config          finds zlib, Open MPI, libjpeg and libtiff
 demo libpng-dev          PNG input and output
-demo zlib1g-dev          the threaded PNG encoder and HET tapes (zlib blocks)
+demo libdeflate-dev      the threaded PNG encoder (its deflate)
+demo zlib1g-dev          the PNG encoder (zlib stream, Adler-32) and HET tapes (zlib blocks)
 test libcmocka-dev       the unit tests (tests/unit)
 test libbz2-dev          HET tapes with bzip2 blocks (vm_cms_shim; without it maprt names the package)
 test gfortran            the REAL(16) geometry oracle (test_oracle)

@@ -1,24 +1,23 @@
 /* image_png_write — banded, threaded PNG encoding (see image_png_write.h).
  * Format: PNG (ISO/IEC 15948, RFC 2083): signature, IHDR, sRGB, IDAT, IEND;
  * the IDAT data is one zlib stream (RFC 1950) of raw deflate bands (RFC
- * 1951) each ended by a sync flush (an empty stored block), the last by
- * the final block, followed by the Adler-32 of all filtered bytes. */
+ * 1951) each ended by an empty stored block (as a sync flush ends it), the
+ * last by the final block, followed by the Adler-32 of all filtered bytes. */
 #include "image/image_png_write.h"
 #include "util/mem.h"
 #include <omp.h>
 #include <stdint.h>
 #include <string.h>
+#include <libdeflate.h>
 #include <zlib.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
-#define IMAGE_PNG_WRITE_WINDOW 32768
-
 typedef struct image_png_write_band {
     unsigned char *buf;
     size_t len, cap;
-    uLong adler;               /* Adler-32 of this band's filtered bytes */
+    uint32_t adler;            /* Adler-32 of this band's filtered bytes */
     size_t raw;                /* filtered bytes in this band */
     int failed;
 } image_png_write_band;
@@ -183,77 +182,83 @@ static void image_png_write_filter(const unsigned char *cur, const unsigned char
     }
 }
 
-/* Appends the deflate output of z's pending input to b, growing b. */
-static int image_png_write_pump(z_stream *z, int flush, image_png_write_band *b)
+/* Makes the raw deflate stream buf[0, *len) continue where it ends: its
+ * final block's BFINAL bit cleared and an empty stored block appended, the
+ * bytes zlib's Z_SYNC_FLUSH ends a stream with, so that the next band's
+ * stream can follow it byte for byte. buf has room for 5 more bytes. The
+ * bit positions come from zlib's inflate run block by block (Z_BLOCK: on
+ * each return after an end-of-block code data_type holds 128, plus 64
+ * after the final block's, and the count of unused bits of the last byte
+ * read), which also checks the stream. 0, or -1 if it is not one complete
+ * deflate stream. */
+static int image_png_write_continue(unsigned char *buf, size_t *len)
 {
+    unsigned char sink[16384];
+    unsigned long hdr = 0, end = 0;
+    z_stream z;
+    int rc;
+    memset(&z, 0, sizeof z);
+    if (inflateInit2(&z, -15) != Z_OK)
+        return -1;
+    z.next_in = buf;
+    z.avail_in = (uInt)*len;
     for (;;) {
-        int rc;
-        if (b->len == b->cap) {
-            size_t cap = b->cap ? 2 * b->cap : 65536;
-            unsigned char *nb = mem_realloc(b->buf, cap);
-            if (!nb)
-                return -1;
-            b->buf = nb;
-            b->cap = cap;
+        z.next_out = sink;
+        z.avail_out = sizeof sink;
+        rc = inflate(&z, Z_BLOCK);
+        if (rc != Z_OK)         /* an error, or no progress: cut short */
+            break;
+        if (z.data_type & 128) {
+            unsigned long at = z.total_in * 8 - (unsigned long)(z.data_type & 7);
+            if (z.data_type & 64) {
+                end = at;       /* just past the final block */
+                break;
+            }
+            hdr = at;           /* where the next block's header starts */
         }
-        z->next_out = b->buf + b->len;
-        z->avail_out = (uInt)(b->cap - b->len);
-        rc = deflate(z, flush);
-        b->len = b->cap - z->avail_out;
-        if (rc == Z_STREAM_END)
-            return 0;
-        if (rc != Z_OK && rc != Z_BUF_ERROR)
-            return -1;
-        if (z->avail_in == 0 && z->avail_out != 0)
-            return 0;
     }
+    inflateEnd(&z);
+    if (rc != Z_OK || (end + 7) / 8 != *len)
+        return -1;
+    buf[hdr / 8] &= (unsigned char)~(1u << (hdr % 8));
+    if (end % 8)                /* the bits past the end: zero, as the stored
+                                   block's 3 header bits (BFINAL 0, BTYPE 00) */
+        buf[end / 8] &= (unsigned char)((1u << (end % 8)) - 1);
+    end = (end + 3 + 7) / 8;    /* the header, then to a byte boundary */
+    if (end > *len)
+        buf[*len] = 0;
+    memcpy(buf + end, "\0\0\377\377", 4);   /* LEN 0, NLEN ~0 */
+    *len = end + 4;
+    return 0;
 }
 
-/* Deflates rows [y0, y1) of img into b (raw deflate); the rows before y0
- * (their last 32 KiB once filtered) are the dictionary. */
+/* Deflates rows [y0, y1) of img into b (raw deflate, libdeflate at level
+ * `level`): a stream of its own, made to continue (see above) unless it
+ * is the last. */
 static void image_png_write_band_run(const image *img, int y0, int y1, int last, int level,
                                      image_png_write_band *b)
 {
-    size_t n = (size_t)img->width * (size_t)img->channels, rb = n + 1;
-    int bpp = img->channels, y, yd = y0 - (int)((IMAGE_PNG_WRITE_WINDOW + rb - 1) / rb);
-    unsigned char *zero = mem_calloc(1, n), *row = mem_alloc(rb), *dict = NULL;
-    z_stream z;
-    memset(&z, 0, sizeof z);
-    b->adler = adler32(0L, Z_NULL, 0);
-    if (!zero || !row || deflateInit2(&z, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) {
+    size_t n = (size_t)img->width * (size_t)img->channels, rb = n + 1, y;
+    struct libdeflate_compressor *c = libdeflate_alloc_compressor(level);
+    unsigned char *zero = mem_calloc(1, n), *rows = mem_alloc((size_t)(y1 - y0) * rb);
+    b->raw = (size_t)(y1 - y0) * rb;
+    if (c && zero && rows) {
+        b->cap = libdeflate_deflate_compress_bound(c, b->raw) + 5;
+        b->buf = mem_alloc(b->cap);
+    }
+    if (!b->buf) {
         b->failed = 1;
-        mem_free(zero);
-        mem_free(row);
-        return;
+    } else {
+        for (y = (size_t)y0; y < (size_t)y1; y++)
+            image_png_write_filter(img->px + y * n, y ? img->px + (y - 1) * n : zero, n, img->channels,
+                                   rows + (y - (size_t)y0) * rb);
+        b->adler = libdeflate_adler32(1, rows, b->raw);
+        b->len = libdeflate_deflate_compress(c, rows, b->raw, b->buf, b->cap - 5);
+        b->failed = b->len == 0 || (!last && image_png_write_continue(b->buf, &b->len));
     }
-    if (y0 > 0) {
-        size_t dl = 0;
-        if (yd < 0)
-            yd = 0;
-        if (!(dict = mem_alloc((size_t)(y0 - yd) * rb)))
-            b->failed = 1;
-        for (y = yd; dict && y < y0; y++, dl += rb)
-            image_png_write_filter(img->px + (size_t)y * n, y ? img->px + (size_t)(y - 1) * n : zero, n,
-                                   bpp, dict + dl);
-        if (dict && dl > IMAGE_PNG_WRITE_WINDOW)
-            deflateSetDictionary(&z, dict + dl - IMAGE_PNG_WRITE_WINDOW, IMAGE_PNG_WRITE_WINDOW);
-        else if (dict)
-            deflateSetDictionary(&z, dict, (uInt)dl);
-        mem_free(dict);
-    }
-    for (y = y0; y < y1 && !b->failed; y++) {
-        image_png_write_filter(img->px + (size_t)y * n, y ? img->px + (size_t)(y - 1) * n : zero, n, bpp,
-                               row);
-        b->adler = adler32(b->adler, row, (uInt)rb);
-        b->raw += rb;
-        z.next_in = row;
-        z.avail_in = (uInt)rb;
-        if (image_png_write_pump(&z, y + 1 < y1 ? Z_NO_FLUSH : last ? Z_FINISH : Z_SYNC_FLUSH, b))
-            b->failed = 1;
-    }
-    deflateEnd(&z);
+    libdeflate_free_compressor(c);
     mem_free(zero);
-    mem_free(row);
+    mem_free(rows);
 }
 
 static unsigned char *image_png_write_u32(unsigned char *p, uint32_t v)
