@@ -232,33 +232,50 @@ static int image_png_write_continue(unsigned char *buf, size_t *len)
     return 0;
 }
 
-/* Deflates rows [y0, y1) of img into b (raw deflate, libdeflate at level
- * `level`): a stream of its own, made to continue (see above) unless it
- * is the last. */
-static void image_png_write_band_run(const image *img, int y0, int y1, int last, int level,
+/* What a thread reuses from band to band: the compressor, a row of zeros
+ * (the row above the first) and the filtered rows of one band. */
+typedef struct image_png_write_work {
+    struct libdeflate_compressor *c;
+    unsigned char *zero, *rows;
+} image_png_write_work;
+
+static void image_png_write_work_init(image_png_write_work *w, const image *img, int level)
+{
+    size_t n = (size_t)img->width * (size_t)img->channels;
+    w->c = libdeflate_alloc_compressor(level);
+    w->zero = mem_calloc(1, n);
+    w->rows = mem_alloc((size_t)IMAGE_PNG_WRITE_BAND * (n + 1));
+}
+
+static void image_png_write_work_free(image_png_write_work *w)
+{
+    libdeflate_free_compressor(w->c);
+    mem_free(w->zero);
+    mem_free(w->rows);
+}
+
+/* Deflates rows [y0, y1) of img into b (raw deflate, libdeflate at the
+ * level w's compressor was made for): a stream of its own, made to
+ * continue (see above) unless it is the last. */
+static void image_png_write_band_run(const image *img, image_png_write_work *w, int y0, int y1, int last,
                                      image_png_write_band *b)
 {
     size_t n = (size_t)img->width * (size_t)img->channels, rb = n + 1, y;
-    struct libdeflate_compressor *c = libdeflate_alloc_compressor(level);
-    unsigned char *zero = mem_calloc(1, n), *rows = mem_alloc((size_t)(y1 - y0) * rb);
     b->raw = (size_t)(y1 - y0) * rb;
-    if (c && zero && rows) {
-        b->cap = libdeflate_deflate_compress_bound(c, b->raw) + 5;
+    if (w->c && w->zero && w->rows) {
+        b->cap = libdeflate_deflate_compress_bound(w->c, b->raw) + 5;
         b->buf = mem_alloc(b->cap);
     }
     if (!b->buf) {
         b->failed = 1;
-    } else {
-        for (y = (size_t)y0; y < (size_t)y1; y++)
-            image_png_write_filter(img->px + y * n, y ? img->px + (y - 1) * n : zero, n, img->channels,
-                                   rows + (y - (size_t)y0) * rb);
-        b->adler = libdeflate_adler32(1, rows, b->raw);
-        b->len = libdeflate_deflate_compress(c, rows, b->raw, b->buf, b->cap - 5);
-        b->failed = b->len == 0 || (!last && image_png_write_continue(b->buf, &b->len));
+        return;
     }
-    libdeflate_free_compressor(c);
-    mem_free(zero);
-    mem_free(rows);
+    for (y = (size_t)y0; y < (size_t)y1; y++)
+        image_png_write_filter(img->px + y * n, y ? img->px + (y - 1) * n : w->zero, n, img->channels,
+                               w->rows + (y - (size_t)y0) * rb);
+    b->adler = libdeflate_adler32(1, w->rows, b->raw);
+    b->len = libdeflate_deflate_compress(w->c, w->rows, b->raw, b->buf, b->cap - 5);
+    b->failed = b->len == 0 || (!last && image_png_write_continue(b->buf, &b->len));
 }
 
 static unsigned char *image_png_write_u32(unsigned char *p, uint32_t v)
@@ -296,10 +313,16 @@ int image_png_write_mem(const image *img, int threads, int level, const char *na
         return diag_at(err, DIAG_IO, name, 0, 0, "out of memory encoding a PNG");
     if (threads < 1)
         threads = 1;
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
-    for (i = 0; i < nb; i++) {
-        int y0 = i * IMAGE_PNG_WRITE_BAND, y1 = y0 + IMAGE_PNG_WRITE_BAND;
-        image_png_write_band_run(img, y0, y1 < img->height ? y1 : img->height, i == nb - 1, level, &bands[i]);
+#pragma omp parallel num_threads(threads)
+    {
+        image_png_write_work w;
+        image_png_write_work_init(&w, img, level);
+#pragma omp for schedule(dynamic, 1)
+        for (i = 0; i < nb; i++) {
+            int y0 = i * IMAGE_PNG_WRITE_BAND, y1 = y0 + IMAGE_PNG_WRITE_BAND;
+            image_png_write_band_run(img, &w, y0, y1 < img->height ? y1 : img->height, i == nb - 1, &bands[i]);
+        }
+        image_png_write_work_free(&w);
     }
     adler = adler32(0L, Z_NULL, 0);
     for (i = 0; i < nb; i++) {
