@@ -9,6 +9,7 @@
 #include "util/dmath.h"
 #include "util/mem.h"
 #include "util/bvh.h"
+#include "util/lightbuf.h"
 #include "util/radix.h"
 #include <math.h>
 #include <stdint.h>
@@ -224,6 +225,153 @@ static void test_util_bvh_covers_every_item_once(void **state)
     }
 }
 
+/* Whether the segment o + t d, t in [0, tmax], meets the box [lo, hi]
+ * (slabs in binary64; a zero component tests the origin's coordinate). */
+static int util_segment_meets(const double *o, const double *d, double tmax, const double *lo, const double *hi)
+{
+    double t0 = 0, t1 = tmax;
+    int a;
+    for (a = 0; a < 3; a++) {
+        if (d[a] == 0) {
+            if (o[a] < lo[a] || o[a] > hi[a])
+                return 0;
+        } else {
+            double u = (lo[a] - o[a]) / d[a], v = (hi[a] - o[a]) / d[a];
+            t0 = fmax(t0, fmin(u, v));
+            t1 = fmin(t1, fmax(u, v));
+        }
+    }
+    return t0 <= t1;
+}
+
+/* Random boxes (some tiny, some large enough to cross the faces' planes
+ * through the light, some around the light itself) and rays that pass the
+ * light at up to about the boxes' growth: to the light from anywhere
+ * (stopping short of it or past it) and away from it. Where the lookup
+ * answers, every box the segment meets is in the cell's list, once; it
+ * answers whenever the ray passes within 0.99 of grow / 2 and stops (or
+ * starts) within as much of its closest point, and never beyond 1.01 of
+ * it. A buffer whose cells would hold too many entries is not built and
+ * answers no ray. A failed allocation leaves nothing built. */
+static void test_util_lightbuf_lists_every_box_a_ray_meets(void **state)
+{
+    enum { N = 240, RAYS = 3000 };
+    static double lo[N][3], hi[N][3];
+    static int listed[N];
+    uint64_t s = test_seed("test_util_lightbuf_lists_every_box_a_ray_meets");
+    long answered = 0, met = 0, refused = 0, unbuilt = 0;
+    int trial;
+    (void)state;
+    for (trial = 0; trial < 24; trial++) {
+        size_t n = trial % 4 == 0 ? (trial % 8 ? 60 : 9) : trial % 3 == 0 ? 60 : N;
+        double at[3], grow = trial % 2 ? 1.0 / 32 : test_uniform(&s, 0.1, 1.5);
+        lightbuf lb;
+        int i, a, k, built;
+        for (a = 0; a < 3; a++)            /* among the boxes, or off to one side */
+            at[a] = test_uniform(&s, -20, 20) + (trial % 4 && a == trial % 3 ? 60 : 0);
+        for (i = 0; i < (int)n; i++) {
+            /* one large, one around the light, two small ones a growth or
+             * so from it, then some tiny ones and ordinary ones */
+            int kind = i < 4 ? i : 4 + (int)(test_rand(&s) % 12);
+            for (a = 0; a < 3; a++) {
+                double c = kind == 0 ? at[a] + test_uniform(&s, -0.1, 0.1)
+                           : kind <= 3 && kind >= 2 ? at[a] + test_uniform(&s, -1.5, 1.5) * grow
+                                                    : test_uniform(&s, -25, 25);
+                double w = kind == 1 ? test_uniform(&s, 5, 30) : kind <= 3 ? test_uniform(&s, 1e-4, 0.2) * grow
+                           : kind <= 5 ? test_uniform(&s, 1e-4, 0.05) : test_uniform(&s, 0.1, 3);
+                lo[i][a] = c - w;
+                hi[i][a] = c + w;
+            }
+        }
+        built = lightbuf_build(&lb, at, (const double (*)[3])lo, (const double (*)[3])hi, n, grow);
+        assert_true(built == 0 || built == 1);
+        unbuilt += built;                  /* too many entries: no buffer */
+        for (k = 0; k < RAYS; k++) {
+            int toward = k % 2 == 0, m = 0, got, j;
+            const int *item = NULL;
+            double o[3], d[3], u[3], len = 0, off, tmax, p[3], dd = 0, rd = 0, c2 = 0, ts, gap;
+            for (a = 0; a < 3; a++)
+                o[a] = test_uniform(&s, -40, 40);
+            if (k % 4 != 1 && k % 4 != 3 && k % 8) {   /* past a box's corner, towards the light */
+                int b = 4 + (int)(test_rand(&s) % (n - 4)), corner = (int)(test_rand(&s) % 8);
+                double back = test_uniform(&s, 0.1, 1);
+                for (a = 0; a < 3; a++) {
+                    double c = (corner >> a & 1 ? hi[b][a] : lo[b][a]) + test_uniform(&s, -1, 1) * grow;
+                    o[a] = c - (at[a] - c) * back;
+                }
+            }
+            for (a = 0; a < 3; a++) {
+                u[a] = at[a] - o[a];
+                len += u[a] * u[a];
+            }
+            len = sqrt(len);
+            off = test_uniform(&s, k % 3 ? 0.2 : 0, 0.6) * grow;   /* how far the line passes */
+            for (a = 0; a < 3; a++)
+                p[a] = test_uniform(&s, -1, 1);
+            for (a = 0; a < 3; a++)
+                d[a] = u[a] / len + off / len * p[a] / sqrt(3.0);
+            if (toward) {
+                tmax = len + test_uniform(&s, -0.6, 0.3) * grow;
+            } else {                                /* from near the light outwards */
+                for (a = 0; a < 3; a++) {
+                    o[a] = at[a] + test_uniform(&s, -0.4, 0.4) * grow;
+                    d[a] = -d[a];
+                }
+                tmax = test_uniform(&s, 1, 80);
+            }
+            if (k % 7 == 3)                         /* directions need not be unit */
+                for (a = 0; a < 3; a++)
+                    d[a] *= test_uniform(&s, 0.25, 4);
+            for (a = 0; a < 3; a++) {
+                dd += d[a] * d[a];
+                rd += (at[a] - o[a]) * d[a];
+            }
+            ts = rd / dd;
+            for (a = 0; a < 3; a++) {
+                double q = at[a] - o[a] - ts * d[a];
+                c2 += q * q;
+            }
+            gap = toward ? (tmax - ts) * sqrt(dd) : ts * sqrt(dd);
+            got = lightbuf_lookup(&lb, o, d, tmax, toward, &item, &m);
+            if (sqrt(c2) <= 0.99 * grow / 2 && gap <= 0.99 * grow / 2)
+                assert_int_equal(got, !built);
+            if (sqrt(c2) > 1.01 * grow / 2 || gap > 1.01 * grow / 2)
+                assert_int_equal(got, 0);
+            if (!got) {
+                refused++;
+                continue;
+            }
+            answered++;
+            memset(listed, 0, sizeof listed);
+            for (j = -lb.nnear; j < m; j++) {
+                int b = j < 0 ? lb.near[~j] : item[j];
+                assert_true(b >= 0 && b < (int)n);
+                assert_int_equal(listed[b]++, 0);
+            }
+            for (i = 0; i < (int)n; i++)
+                if (util_segment_meets(o, d, tmax, lo[i], hi[i])) {
+                    met++;
+                    if (!listed[i])
+                        fail_msg("trial %d ray %d: box %d met (line %.3g from the light, grow %.3g) "
+                                 "but not listed", trial, k, i, sqrt(c2), grow);
+                }
+        }
+        lightbuf_free(&lb);
+    }
+    print_message("lightbuf: %ld of 24 buffers built, %ld rays answered, %ld refused, %ld boxes met\n",
+                  24 - unbuilt, answered, refused, met);
+    assert_true(unbuilt <= 8 && answered > 20000 && refused > 2000 && met > 20000);
+    for (trial = 0; trial < 4; trial++) {
+        lightbuf lb;
+        double at[3] = {0, 0, 0};
+        mem_fail_after(trial);
+        assert_int_equal(lightbuf_build(&lb, at, (const double (*)[3])lo, (const double (*)[3])hi, 50, 0.1), -1);
+        mem_fail_after(-1);
+        assert_null(lb.start);
+        assert_null(lb.item);
+    }
+}
+
 /* An element as prim_share sorts them: a key, then the (primitive, plane)
  * it was stored in, ascending. */
 typedef struct util_rec { double key; int prim, k; } util_rec;
@@ -341,6 +489,7 @@ int main(void)
         cmocka_unit_test(test_util_mem_huge_pages),
         cmocka_unit_test(test_util_diag_first_error_and_forms),
         cmocka_unit_test(test_util_bvh_covers_every_item_once),
+        cmocka_unit_test(test_util_lightbuf_lists_every_box_a_ray_meets),
         cmocka_unit_test(test_util_radix_sort_matches_comparator),
         cmocka_unit_test(test_util_frobenius_bounds_spectral_norm),
     };

@@ -1,0 +1,233 @@
+/* lightbuf — a light buffer over boxes (see lightbuf.h). */
+#include "util/lightbuf.h"
+#include "util/mem.h"
+#include "util/radix.h"
+#include <math.h>
+#include <string.h>
+
+/* Slack on the grid's side: a projection is rounded once per quotient
+ * (relative 2^-53 on values within 1), far below this. */
+#define LIGHTBUF_EPS 1e-9
+
+/* A box's reach on one face, in the face's (u, v): [u0, u1] x [v0, v1],
+ * or none (u1 < u0). */
+typedef struct lightbuf_rect { double u0, u1, v0, v1; } lightbuf_rect;
+
+/* Face f looks along axis f / 2, towards -1 on it when f is odd; (u, v)
+ * are the next two axes over that coordinate's magnitude. */
+static void lightbuf_axes(int f, int *a, int *b, int *c, double *s)
+{
+    *a = f / 2;
+    *b = (*a + 1) % 3;
+    *c = (*a + 2) % 3;
+    *s = f % 2 ? -1 : 1;
+}
+
+/* The reach on face f of the box [lo, hi] (relative to the light): its
+ * corners' projections bound it while the box lies wholly in front of the
+ * face's plane through the light (a projection keeps a convex set's
+ * hull); a box across that plane may reach the whole face. */
+static lightbuf_rect lightbuf_reach(int f, const double lo[3], const double hi[3])
+{
+    lightbuf_rect r = {1, -1, 1, -1};
+    double s, wmin = HUGE_VAL, wmax = -HUGE_VAL;
+    int a, b, c, k;
+    lightbuf_axes(f, &a, &b, &c, &s);
+    for (k = 0; k < 2; k++) {
+        double w = s * (k ? hi[a] : lo[a]);
+        wmin = w < wmin ? w : wmin;
+        wmax = w > wmax ? w : wmax;
+    }
+    if (!(wmax > 0))
+        return r;
+    if (!(wmin > 0)) {
+        r.u0 = r.v0 = -1 - LIGHTBUF_EPS;
+        r.u1 = r.v1 = 1 + LIGHTBUF_EPS;
+        return r;
+    }
+    r.u0 = r.v0 = HUGE_VAL;
+    r.u1 = r.v1 = -HUGE_VAL;
+    for (k = 0; k < 8; k++) {
+        double w = s * (k & 1 ? hi[a] : lo[a]);
+        double u = (k & 2 ? hi[b] : lo[b]) / w, v = (k & 4 ? hi[c] : lo[c]) / w;
+        r.u0 = u < r.u0 ? u : r.u0;
+        r.u1 = u > r.u1 ? u : r.u1;
+        r.v0 = v < r.v0 ? v : r.v0;
+        r.v1 = v > r.v1 ? v : r.v1;
+    }
+    r.u0 = fmax(r.u0 - LIGHTBUF_EPS, -1 - LIGHTBUF_EPS);
+    r.u1 = fmin(r.u1 + LIGHTBUF_EPS, 1 + LIGHTBUF_EPS);
+    r.v0 = fmax(r.v0 - LIGHTBUF_EPS, -1 - LIGHTBUF_EPS);
+    r.v1 = fmin(r.v1 + LIGHTBUF_EPS, 1 + LIGHTBUF_EPS);
+    if (r.u1 < r.u0 || r.v1 < r.v0)
+        r.u1 = r.u0 - 1;
+    return r;
+}
+
+/* Whether the box [lo, hi] comes within 3 grow of the light on every
+ * axis: a ray's points near its closest point to the light may then lie
+ * in it whatever their direction. */
+static int lightbuf_is_near(const lightbuf *lb, const double lo[3], const double hi[3])
+{
+    int k, near = 1;
+    for (k = 0; k < 3; k++)
+        near &= lo[k] - 3 * lb->grow <= lb->at[k] && hi[k] + 3 * lb->grow >= lb->at[k];
+    return near;
+}
+
+/* The cells of face f that rect r covers: [*i0, *i1] x [*j0, *j1]. */
+static void lightbuf_span(const lightbuf *lb, int f, const lightbuf_rect *r, int *i0, int *i1, int *j0, int *j1)
+{
+    int n = lb->res[f] - 1;
+    double x0 = floor((r->u0 - lb->u0[f]) * lb->su[f]), x1 = floor((r->u1 - lb->u0[f]) * lb->su[f]);
+    double y0 = floor((r->v0 - lb->v0[f]) * lb->sv[f]), y1 = floor((r->v1 - lb->v0[f]) * lb->sv[f]);
+    *i0 = x0 < 0 ? 0 : x0 > n ? n : (int)x0;
+    *i1 = x1 < 0 ? 0 : x1 > n ? n : (int)x1;
+    *j0 = y0 < 0 ? 0 : y0 > n ? n : (int)y0;
+    *j1 = y1 < 0 ? 0 : y1 > n ? n : (int)y1;
+}
+
+int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
+                   size_t n, double grow)
+{
+    lightbuf_rect *rc = NULL;
+    double ext[6][4];
+    size_t i, j, total = 0, cells = 0;
+    uint64_t *key;
+    int *order, f, k, pass, m[6] = {0, 0, 0, 0, 0, 0};
+    memset(lb, 0, sizeof *lb);
+    memcpy(lb->at, at, sizeof lb->at);
+    lb->grow = grow;
+    if (n > LIGHTBUF_BOXES_MAX)            /* its scratch: 192 bytes a box */
+        return 1;
+    rc = mem_alloc((n ? n : 1) * 6 * sizeof *rc);
+    key = mem_alloc((n ? n : 1) * sizeof *key);
+    order = mem_alloc((n ? n : 1) * sizeof *order);
+    /* the boxes nearest the light first in every cell: a camera ray's
+     * far end then shrinks before the farther ones are tested */
+    for (i = 0; rc && key && order && i < n; i++) {
+        double d2 = 0;
+        for (k = 0; k < 3; k++) {
+            double g = lo[i][k] > at[k] ? lo[i][k] - at[k] : at[k] > hi[i][k] ? at[k] - hi[i][k] : 0;
+            d2 += g * g;
+        }
+        key[i] = radix_key_d(d2);
+        order[i] = (int)i;
+    }
+    if (!rc || !key || !order || radix_sort(order, n, sizeof *order, key)) {
+        mem_free(rc);
+        mem_free(key);
+        mem_free(order);
+        return -1;
+    }
+    mem_free(key);
+    for (f = 0; f < 6; f++) {
+        ext[f][0] = ext[f][2] = HUGE_VAL;
+        ext[f][1] = ext[f][3] = -HUGE_VAL;
+    }
+    /* each box's reach on each face; a box near the light reaches all */
+    for (i = 0; i < n; i++) {
+        double l[3], h[3];
+        int near = lightbuf_is_near(lb, lo[i], hi[i]);
+        for (k = 0; k < 3; k++) {
+            l[k] = lo[i][k] - grow - at[k];
+            h[k] = hi[i][k] + grow - at[k];
+        }
+        lb->nnear += near;
+        for (f = 0; f < 6; f++) {
+            lightbuf_rect *r = &rc[i * 6 + (size_t)f];
+            *r = lightbuf_reach(f, l, h);
+            if (near)
+                r->u1 = r->u0 - 1;
+            if (r->u1 < r->u0)
+                continue;
+            m[f]++;
+            ext[f][0] = fmin(ext[f][0], r->u0);
+            ext[f][1] = fmax(ext[f][1], r->u1);
+            ext[f][2] = fmin(ext[f][2], r->v0);
+            ext[f][3] = fmax(ext[f][3], r->v1);
+        }
+    }
+    /* per face a grid over what the boxes reach, about two cells a side
+     * per square root of the boxes there */
+    for (f = 0; f < 6; f++) {
+        int res = 0;
+        if (m[f]) {
+            res = (int)ceil(4 * sqrt((double)m[f]));
+            res = res > LIGHTBUF_RES_MAX ? LIGHTBUF_RES_MAX : res;
+            lb->u0[f] = ext[f][0];
+            lb->v0[f] = ext[f][2];
+            lb->su[f] = res / fmax(ext[f][1] - ext[f][0], LIGHTBUF_EPS);
+            lb->sv[f] = res / fmax(ext[f][3] - ext[f][2], LIGHTBUF_EPS);
+        }
+        lb->res[f] = res;
+        lb->first[f] = (int)cells;
+        cells += (size_t)res * (size_t)res;
+    }
+    lb->start = mem_calloc(cells + 1, sizeof *lb->start);
+    lb->near = mem_alloc((lb->nnear ? (size_t)lb->nnear : 1) * sizeof *lb->near);
+    if (!lb->start || !lb->near) {
+        mem_free(rc);
+        mem_free(order);
+        lightbuf_free(lb);
+        return -1;
+    }
+    for (j = 0, k = 0; j < n; j++) {
+        if (lightbuf_is_near(lb, lo[order[j]], hi[order[j]]))
+            lb->near[k++] = order[j];
+    }
+    /* two passes: count each cell's boxes, then place them */
+    for (pass = 0; pass < 2; pass++) {
+        for (j = 0; j < n; j++)
+            for (i = (size_t)order[j], f = 0; f < 6; f++) {
+                const lightbuf_rect *r = &rc[i * 6 + (size_t)f];
+                int i0, i1, j0, j1, x, y;
+                if (r->u1 < r->u0)
+                    continue;
+                lightbuf_span(lb, f, r, &i0, &i1, &j0, &j1);
+                for (y = j0; y <= j1; y++)
+                    for (x = i0; x <= i1; x++) {
+                        size_t cell = (size_t)lb->first[f] + (size_t)y * (size_t)lb->res[f] + (size_t)x;
+                        if (pass == 0)
+                            lb->start[cell + 1]++;
+                        else
+                            lb->item[lb->start[cell]++] = (int)i;
+                    }
+                if (pass == 0)
+                    total += (size_t)(i1 - i0 + 1) * (size_t)(j1 - j0 + 1);
+            }
+        if (pass == 0) {
+            size_t c;
+            if (total > LIGHTBUF_PER_BOX * (n > LIGHTBUF_BOXES_MIN ? n : LIGHTBUF_BOXES_MIN)) {
+                mem_free(rc);
+                mem_free(order);
+                lightbuf_free(lb);
+                return 1;
+            }
+            for (c = 0; c < cells; c++)
+                lb->start[c + 1] += lb->start[c];
+            lb->item = mem_alloc((total ? total : 1) * sizeof *lb->item);
+            if (!lb->item) {
+                mem_free(rc);
+                mem_free(order);
+                lightbuf_free(lb);
+                return -1;
+            }
+        }
+    }
+    /* placing advanced each start to the next cell's: shift back */
+    memmove(lb->start + 1, lb->start, cells * sizeof *lb->start);
+    lb->start[0] = 0;
+    mem_free(rc);
+    mem_free(order);
+    return 0;
+}
+
+void lightbuf_free(lightbuf *lb)
+{
+    mem_free(lb->start);
+    mem_free(lb->item);
+    mem_free(lb->near);
+    lb->start = lb->item = lb->near = NULL;
+    lb->nnear = 0;
+}
