@@ -351,6 +351,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     size_t cap, i, peak = 0;
     memset(&x, 0, sizeof x);
     memset(out, 0, sizeof *out);
+    out->prims = prims;
     x.sc = sc;
     x.prims = prims;
     x.err = err;
@@ -443,6 +444,8 @@ typedef struct csg_query {
     num tmax;
     double tmax_d;           /* tmax in binary64, for the culling tests */
     int any;                 /* any hit will do (an occlusion test) */
+    const lightbuf *lb;      /* the buffer of the light the ray goes to
+                                (any) or of the eye it leaves, or NULL */
     arena *ar;
     geom_stats *st;
 } csg_query;
@@ -863,6 +866,35 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
         }
     } else {
         bbox_ray2_init(&rb, &q->r->b);
+        /* with a buffer (of the light the ray goes to, or the eye it
+         * leaves), a ray that meets the root's boxes tests its cell's
+         * objects instead of walking (where the buffer answers for it) */
+        if (q->lb && q->lb->start) {
+            const int *item;
+            double d[3];
+            int m, i;
+            q->st->bound_tests += 2;
+            if (bbox_miss2(nodes[k].lo, nodes[k].hi, &rb, q->tmax_d, tin) == 3) {
+                q->st->pruned += 2;
+                return 0;
+            }
+            vec3_to_d(q->r->d, d);
+            if (lightbuf_lookup(q->lb, q->r->b.o, d, q->tmax_d, q->any, &item, &m)) {
+                for (i = -q->lb->nnear; i < m; i++) {   /* the near list, then the cell */
+                    int ob = i < 0 ? q->lb->near[~i] : item[i];
+                    const csg_node *nd = &c->nodes[c->objects[ob]];
+                    q->st->bound_tests++;
+                    if (bbox_miss(nd->lo, nd->hi, &q->r->b, 0, q->tmax_d, &tin[0])) {
+                        q->st->pruned++;
+                        continue;
+                    }
+                    csg_object(q, ob, 1, best, found);
+                    if (q->any && *found)
+                        return 1;
+                }
+                return 0;
+            }
+        }
     }
     for (;;) {
         if (k >= 0) {
@@ -898,8 +930,8 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
     }
 }
 
-static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num tmax, int any,
-                         arena *ar, geom_stats *st, csg_hit *hit)
+static int csg_query_run(const csg *c, const prim_ray *r, num tmax, int any, const lightbuf *lb, arena *ar,
+                         geom_stats *st, csg_hit *hit)
 {
     csg_query q;
     int found = 0;
@@ -909,11 +941,12 @@ static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num
     if (c->nobjects == 0)
         return 0;
     q.c = c;
-    q.prims = prims;
+    q.prims = c->prims;
     q.r = r;
     q.tmax = tmax;
     q.tmax_d = num_to_d(tmax);
     q.any = any;
+    q.lb = lb;
     q.ar = ar;
     q.st = st;
     mark = arena_mark(ar);
@@ -928,14 +961,14 @@ static int csg_query_run(const csg *c, const prim *prims, const prim_ray *r, num
     return found;
 }
 
-int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
-                      arena *ar, geom_stats *st, csg_hit *hit)
+int NS(csg_intersect)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
+                      csg_hit *hit)
 {
-    return csg_query_run(c, prims, r, tmax, 0, ar, st, hit);
+    return csg_query_run(c, r, tmax, 0, lb, ar, st, hit);
 }
 
-int NS(csg_occluded)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
-                     arena *ar, geom_stats *st, csg_hit *hit)
+int NS(csg_occluded)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
+                     csg_hit *hit)
 {
-    return csg_query_run(c, prims, r, tmax, 1, ar, st, hit);
+    return csg_query_run(c, r, tmax, 1, lb, ar, st, hit);
 }

@@ -21,6 +21,7 @@
 #include "geom/prim.h"
 #include "util/arena.h"
 #include "util/bvh.h"
+#include "util/lightbuf.h"
 
 #define CSG_MAX_NEST 256     /* operator alternations allowed along a path */
 /* Bounding boxes are padded outwards by this much (normalised units): far
@@ -58,6 +59,7 @@ typedef struct csg_node {
 #define CSG_TODO_LOCAL 64
 
 typedef struct csg {
+    const prim *prims;       /* the compiled primitives the leaves name */
     csg_node *nodes;
     int nnodes;
     int *objects;            /* each object's compiled root: the bounded ones
@@ -85,7 +87,8 @@ typedef struct csg_hit {
                                 normal faces the ray), 0: it leaves it */
 } csg_hit;
 
-/* Builds the compiled tree of sc over the compiled primitives prims.
+/* Builds the compiled tree of sc over the compiled primitives prims (kept
+ * by the tree: the queries read them).
  * 0 on success; DIAG_INPUT for malformed trees (bad indices, cycles, nesting
  * deeper than CSG_MAX_NEST); DIAG_IO when memory runs out. */
 int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err);
@@ -98,12 +101,17 @@ size_t NS(csg_arena_bytes)(const csg *c);
  * bounds.
  * At equal parameters a surface the ray enters wins over one it leaves (a
  * touching object shows its contact face), then the lower primitive.
- * Returns 1 and *hit, or 0. Temporaries come from ar (released before
- * returning); counters go to st. */
-int NS(csg_intersect)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
-                      arena *ar, geom_stats *st, csg_hit *hit);
+ * lb, when not NULL, is a buffer (lightbuf.h) over the bounded objects
+ * whose apex the ray leaves (the eye of a camera ray): where it answers
+ * for the ray, the objects its cell lists are tested instead of the
+ * hierarchy's. Returns 1 and *hit, or 0. Temporaries come from ar
+ * (released before returning); counters go to st. */
+int NS(csg_intersect)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
+                      csg_hit *hit);
 /* Some surface crossing with 0 < t <= tmax (not always the nearest): for
- * shadow rays through opaque scenes. Returns 1 and *hit, or 0. */
-int NS(csg_occluded)(const csg *c, const prim *prims, const prim_ray *r, num tmax,
-                     arena *ar, geom_stats *st, csg_hit *hit);
+ * shadow rays through opaque scenes. lb, when not NULL, is the buffer of
+ * the light the ray goes to, used as for csg_intersect. Returns 1 and
+ * *hit, or 0. */
+int NS(csg_occluded)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
+                     csg_hit *hit);
 #endif

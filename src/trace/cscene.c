@@ -360,6 +360,43 @@ void NS(cscene_primary_ray)(const cscene *cs, const cscene_batch *b, int k, prim
     r->excl_enter = 0;
 }
 
+/* A light buffer per light and one at the eye over the bounded objects'
+ * boxes, where there are enough objects for a hierarchy walk to cost more
+ * than a lookup (CSCENE_LBUF_MIN). Boxes are grown by CSCENE_LBUF_GROW: a
+ * ray whose line passes farther from its light or eye (a far surface
+ * point or a far eye in a coarse mode) walks the hierarchy instead
+ * (lightbuf_lookup). */
+static int cscene_lights(cscene *cs, diag *err)
+{
+    const csg *t = &cs->tree;
+    double (*lo)[3], (*hi)[3];
+    size_t i;
+    int k, status = 0;
+    if (t->nbounded < CSCENE_LBUF_MIN)
+        return 0;
+    lo = mem_calloc((size_t)t->nbounded, sizeof *lo);
+    hi = mem_calloc((size_t)t->nbounded, sizeof *hi);
+    cs->lbuf = mem_calloc(cs->nlights ? cs->nlights : 1, sizeof *cs->lbuf);
+    if (!lo || !hi || !cs->lbuf)
+        status = DIAG_IO;
+    for (k = 0; !status && k < t->nbounded; k++) {
+        memcpy(lo[k], t->nodes[t->objects[k]].lo, sizeof lo[k]);
+        memcpy(hi[k], t->nodes[t->objects[k]].hi, sizeof hi[k]);
+    }
+    for (i = 0; !status && i <= cs->nlights; i++) {
+        double at[3];
+        if (i < cs->nlights)
+            vec3_to_d(cs->lights[i].pos, at);
+        if (lightbuf_build(i < cs->nlights ? &cs->lbuf[i] : &cs->eyebuf, i < cs->nlights ? at : cs->eye,
+                           (const double (*)[3])lo, (const double (*)[3])hi, (size_t)t->nbounded,
+                           CSCENE_LBUF_GROW) < 0)
+            status = DIAG_IO;
+    }
+    mem_free(lo);
+    mem_free(hi);
+    return status ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
+}
+
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
 {
     cscene *cs;
@@ -474,7 +511,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         for (j = 0; j < 3; j++)
             cs->lights[i].rgb[j] = l->color[j] * l->intensity;
     }
-    if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)) ||
+    if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)) || (status = cscene_lights(cs, err)) ||
         (status = cscene_maps(sc, cs, err)) || (status = cscene_faces(sc, cs, err)))
         goto fail;
     *out = cs;
@@ -499,6 +536,10 @@ void NS(cscene_free)(cscene *cs)
     mem_free(cs->prim_pl);
     mem_free(cs->prim_pl_d);
     mem_free(cs->prim_fr);
+    for (i = 0; cs->lbuf && i < cs->nlights; i++)
+        lightbuf_free(&cs->lbuf[i]);
+    mem_free(cs->lbuf);
+    lightbuf_free(&cs->eyebuf);
     mem_free(cs->lights);
     mem_free(cs);
 }

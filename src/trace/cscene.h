@@ -5,11 +5,14 @@
  * per numeric mode. */
 #ifndef TRACE_CSCENE_H
 #define TRACE_CSCENE_H
+#include "util/lightbuf.h"
 #include "geom/csg.h"
 #include "pds/pds.h"
 
 #define CSCENE_MAX_DEPTH 32   /* recursion limit applied to scene max_depth */
 #define CSCENE_MAX_PLANES 64  /* half-spaces a primary ray is advanced over */
+#define CSCENE_LBUF_MIN 8      /* bounded objects for a light buffer */
+#define CSCENE_LBUF_GROW (1.0 / 32)   /* its boxes' growth, normalised world */
 
 typedef struct cscene_light {
     vec3 pos;                 /* normalised world */
@@ -43,6 +46,9 @@ typedef struct cscene {
     csg tree;
     cscene_light *lights;
     size_t nlights;
+    lightbuf *lbuf;           /* per light, for shadow rays (cscene_lights);
+                                 NULL where the hierarchy serves alone */
+    lightbuf eyebuf;          /* the same at the eye, for camera rays */
     double eye[3], fwd[3], right[3], up[3], tan_half;   /* camera, normalised */
     /* Primary rays start where something can first be hit (computed in
      * double, see cscene_primary): the sphere of radius bound_r about the

@@ -10,6 +10,8 @@
 typedef struct probe_cs {
     cscene *cs;
     arena ar;
+    int buffered;            /* rays from the eye and to the lights use the
+                                scene's light buffers (probe buffers) */
 } probe_cs;
 
 static int probe_compile(const scene *sc, void **out, diag *err)
@@ -71,10 +73,10 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
     return 1;
 }
 
-/* Nearest hit of r; fills h (deck units) and the num hit point. The probe
- * owns one arena, so one compiled probe must not be queried from two
- * threads at once. */
-static int probe_trace(const probe_cs *pc, const prim_ray *r, probe_hit *h, vec3 *pn)
+/* Nearest hit of r; fills h (deck units) and the num hit point. lb: as
+ * for csg_intersect. The probe owns one arena, so one compiled probe must
+ * not be queried from two threads at once. */
+static int probe_trace(const probe_cs *pc, const prim_ray *r, const lightbuf *lb, probe_hit *h, vec3 *pn)
 {
     const cscene *cs = pc->cs;
     geom_stats gs;
@@ -82,8 +84,7 @@ static int probe_trace(const probe_cs *pc, const prim_ray *r, probe_hit *h, vec3
     double dd[3], dn;
     int i;
     memset(&gs, 0, sizeof gs);
-    if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX),
-                           (arena *)&pc->ar, &gs, &ch))
+    if (!NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), lb, (arena *)&pc->ar, &gs, &ch))
         return 0;
     *pn = vec3_madd(r->o, ch.t, r->d);
     NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, 1, &h->sf);
@@ -108,7 +109,7 @@ static int probe_hit_fn(const void *v, const double *o, const double *d, probe_h
     vec3 pn;
     if (probe_ray(p->cs, o, d, &r))
         return 0;
-    return probe_trace(p, &r, h, &pn);
+    return probe_trace(p, &r, p->buffered ? &p->cs->eyebuf : NULL, h, &pn);
 }
 
 /* The ray from the nearest hit along d from o, as shading spawns it along
@@ -119,7 +120,7 @@ static int probe_spawn(const probe_cs *p, const double *o, const double *d, cons
     prim_ray r;
     vec3 pn, dir;
     double u[3];
-    if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, h1, &pn) || dmath_unit3(d2, u)
+    if (probe_ray(p->cs, o, d, &r) || !probe_trace(p, &r, NULL, h1, &pn) || dmath_unit3(d2, u)
         || vec3_normalize(vec3_from_d(u), &dir, NULL))
         return -1;
     prim_ray_set(r2, pn, dir, h1->prim, u[0] * h1->sf.n[0] + u[1] * h1->sf.n[1] + u[2] * h1->sf.n[2] < 0);
@@ -134,7 +135,7 @@ static int probe_respawn(const void *v, const double *o, const double *d, const 
     vec3 pn;
     if (probe_spawn(p, o, d, d2, h1, &r2))
         return -1;
-    return probe_trace(p, &r2, h2, &pn);
+    return probe_trace(p, &r2, NULL, h2, &pn);
 }
 
 static int probe_shadow(const void *v, const double *o, const double *d, const double *d2, double tmax)
@@ -149,8 +150,42 @@ static int probe_shadow(const void *v, const double *o, const double *d, const d
     if (probe_spawn(p, o, d, d2, &h1, &r2))
         return -1;
     memset(&gs, 0, sizeof gs);
-    return NS(csg_occluded)(&cs->tree, cs->prims, &r2, num_from_d(tm < GEOM_TMAX ? tm : GEOM_TMAX),
+    return NS(csg_occluded)(&cs->tree, &r2, num_from_d(tm < GEOM_TMAX ? tm : GEOM_TMAX), NULL,
                             (arena *)&p->ar, &gs, &ch);
+}
+
+static int probe_light(const void *v, const double *o, const double *d, int li)
+{
+    const probe_cs *p = v;
+    const cscene *cs = p->cs;
+    prim_ray r, s;
+    probe_hit h;
+    geom_stats gs;
+    csg_hit ch;
+    vec3 pn, l;
+    num dist;
+    double pd[3], ld[3];
+    if (li < 0 || (size_t)li >= cs->nlights || probe_ray(cs, o, d, &r)
+        || !probe_trace(p, &r, p->buffered ? &cs->eyebuf : NULL, &h, &pn)
+        || vec3_normalize(vec3_sub(cs->lights[li].pos, pn), &l, &dist))
+        return -1;
+    vec3_to_d(pn, pd);
+    vec3_to_d(l, ld);
+    prim_ray_set_d(&s, pn, l, pd, ld, h.prim, dmath_dot3(h.sf.n, ld) < 0);
+    memset(&gs, 0, sizeof gs);
+    return NS(csg_occluded)(&cs->tree, &s, dist, p->buffered && cs->lbuf ? &cs->lbuf[li] : NULL,
+                            (arena *)&p->ar, &gs, &ch);
+}
+
+static int probe_buffers(void *v)
+{
+    probe_cs *p = v;
+    size_t i;
+    int n = p->cs->eyebuf.start != NULL;
+    for (i = 0; p->cs->lbuf && i < p->cs->nlights; i++)
+        n += p->cs->lbuf[i].start != NULL;
+    p->buffered = 1;
+    return n;
 }
 
 static int probe_refract(const double *d, const double *n, double eta, double *t)
@@ -204,4 +239,6 @@ const probe_ops NS(probe_ops) = {
     .unbox = probe_unbox,
     .deepen = probe_deepen,
     .whole = probe_whole,
+    .light = probe_light,
+    .buffers = probe_buffers,
 };

@@ -50,6 +50,16 @@ typedef struct probe_ops {
      * crossing), without the first-crossing shortcuts of csg_diff_first:
      * the reference for tests of those. */
     void (*whole)(void *cs);
+    /* The nearest hit along d from o, then the shadow ray to light li as
+     * shading casts it (from the hit point, in the mode's numbers, to the
+     * light's distance): 1 when something lies on the way, 0 when not, -1
+     * when the first ray missed or there is no such light. */
+    int (*light)(const void *cs, const double *o, const double *d, int li);
+    /* Has the nearest hits of hit and light's first rays ask the eye's
+     * light buffer, and light's shadow rays the light's (cscene_lights),
+     * where the compile built them: for tests that the buffers never change
+     * an answer. Returns how many buffers were built. */
+    int (*buffers)(void *cs);
 } probe_ops;
 
 extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops,

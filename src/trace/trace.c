@@ -92,7 +92,7 @@ static double trace_light_through(const cscene *cs, trace_ctx *tc, vec3 p, vec3 
         vec3_to_d(p, pd);
         prim_ray_set_d(&s, p, l, pd, ld, pi, enter);
         tc->rs.rays_shadow++;
-        if (!NS(csg_intersect)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h))
+        if (!NS(csg_intersect)(&cs->tree, &s, dist, NULL, &tc->ar, &tc->gs, &h))
             return pass;
         p = vec3_madd(p, h.t, l);
         dist = num_sub(dist, h.t);
@@ -113,7 +113,7 @@ static double trace_light_through(const cscene *cs, trace_ctx *tc, vec3 p, vec3 
  * light test has the dot product that gives `enter`). pd is p in double,
  * formed once for all the lights. */
 static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, const double *pd, vec3 l,
-                                 const double *ld, num dist, int pi, int enter)
+                                 const double *ld, num dist, int pi, int enter, size_t li)
 {
     prim_ray s;
     csg_hit h;
@@ -121,7 +121,8 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, const 
         return trace_light_through(cs, tc, p, l, ld, dist, pi, enter);
     prim_ray_set_d(&s, p, l, pd, ld, pi, enter);
     tc->rs.rays_shadow++;
-    return NS(csg_occluded)(&cs->tree, cs->prims, &s, dist, &tc->ar, &tc->gs, &h) ? 0 : 1;
+    return NS(csg_occluded)(&cs->tree, &s, dist, cs->lbuf ? &cs->lbuf[li] : NULL, &tc->ar, &tc->gs,
+                            &h) ? 0 : 1;
 }
 
 /* Takes one secondary ray from the pixel's cap; 0 (counted) when spent. */
@@ -194,7 +195,8 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     int i, far, lit;
 
     /* Step 1: nearest hit and its primitive (PID), else the background. */
-    if (!NS(csg_intersect)(&cs->tree, cs->prims, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)) {
+    if (!NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), depth ? NULL : &cs->eyebuf,
+                           &tc->ar, &tc->gs, &h)) {
         for (i = 0; i < 3; i++)
             rgb[i] = sc->background[i];
         if (pid)
@@ -242,7 +244,7 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
         ln = dmath_dot3(sf.n, ld);
         if (ln * dn >= 0)
             continue;
-        pass[li] = far ? 1 : trace_light_passes(cs, tc, p, pd, l, ld, dist, h.prim, ln < 0);
+        pass[li] = far ? 1 : trace_light_passes(cs, tc, p, pd, l, ld, dist, h.prim, ln < 0, li);
     }
 
     /* Step 5 (1): the bump attribute perturbs the normal; the shading normal

@@ -908,6 +908,90 @@ static void test_csg_deep_hierarchy_stack_in_arena(void **state)
     csg_assert_same(n);
 }
 
+/* Rays from the eye (ctx: its deck position) to random points of the
+ * objects' field. */
+static void csg_eye_source(uint64_t *s, const void *ctx, int k, double *o, double *d)
+{
+    const double *eye = ctx;
+    int i;
+    (void)k;
+    for (i = 0; i < 3; i++) {
+        o[i] = eye[i];
+        d[i] = test_uniform(s, -6, 6) - eye[i];
+    }
+}
+
+/* 48 random objects on a floor, with the eye outside the field or among
+ * the objects and three lights (far above, and two at random points of
+ * the field, where some lie close to an object), in every mode: the light
+ * buffers (cscene_lights) never change an answer. A compile that asks
+ * them (probe buffers) gives the nearest hits of rays from the eye and the
+ * answers of the shadow rays from those hits to each light of one that
+ * does not, bit for bit. */
+static void test_csg_light_buffers_change_nothing(void **state)
+{
+    static char deck[24576];
+    uint64_t s = test_seed("test_csg_light_buffers_change_nothing");
+    long n[4] = {0, 0, 0, 0}, sh[3] = {0, 0, 0};   /* rays, hits, -, differing;
+                                                      shadow rays, occluded, differing */
+    int k, built = 0;
+    (void)state;
+    for (k = 0; k < 4; k++) {
+        double eye[3];
+        char *p = deck;
+        scene *sc;
+        int i, m;
+        for (i = 0; i < 3; i++)
+            eye[i] = k % 2 ? test_uniform(&s, -3, 3) : (i == 2 ? 7 : i ? -9 : 9);
+        p += sprintf(p, "EYE %.5f %.5f %.5f\nLOOKAT 0 0 0\nLIGHT 0 0 20\n", eye[0], eye[1], eye[2]);
+        for (i = 0; i < 2; i++)
+            p += sprintf(p, "LIGHT %.5f %.5f %.5f\n", test_uniform(&s, -5, 5), test_uniform(&s, -5, 5),
+                         test_uniform(&s, -5, 5));
+        p = csg_random_objects(p, &s, 48, 0.8, 5);
+        p += sprintf(p, "HALFSPACE FLOOR TRANSLATE 0 0 -6\nOBJECT FLOOR\n");
+        assert_true((size_t)(p - deck) < sizeof deck);
+        sc = tt_parse(deck);
+        assert_non_null(sc);
+        for (m = 0; m < TT_MODES; m++) {
+            const probe_ops *ops = tt_mode(m);
+            void *a, *b;
+            diag err;
+            int r;
+            diag_init(&err);
+            assert_int_equal(ops->compile(sc, &a, &err), 0);
+            assert_int_equal(ops->compile(sc, &b, &err), 0);
+            built += ops->buffers(b);
+            for (r = 0; r < 400; r++) {
+                double o[3], d[3];
+                probe_hit ha, hb;
+                int ra, rb, li;
+                csg_eye_source(&s, eye, r, o, d);
+                ra = ops->hit(a, o, d, &ha);
+                rb = ops->hit(b, o, d, &hb);
+                n[0]++;
+                n[1] += rb;
+                n[3] += ra != rb || (ra && (ha.t != hb.t || ha.prim != hb.prim || ha.face != hb.face
+                                            || ha.entering != hb.entering));
+                for (li = 0; rb && li < 3; li++) {
+                    int la = ops->light(a, o, d, li), lb = ops->light(b, o, d, li);
+                    sh[0]++;
+                    sh[1] += lb > 0;
+                    sh[2] += la != lb;
+                }
+            }
+            ops->free(a);
+            ops->free(b);
+        }
+        scene_free(sc);
+    }
+    print_message("# %d buffers built; %ld rays from the eye, %ld hits, %ld differ; %ld shadow rays, "
+                  "%ld occluded, %ld differ\n", built, n[0], n[1], n[3], sh[0], sh[1], sh[2]);
+    assert_int_equal(built, 4 * TT_MODES * 4);
+    assert_true(n[1] > n[0] / 4 && sh[1] > sh[0] / 10 && sh[0] - sh[1] > sh[0] / 10);
+    assert_int_equal(n[3], 0);
+    assert_int_equal(sh[2], 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -921,6 +1005,7 @@ int main(void)
         cmocka_unit_test(test_csg_difference_first_crossing_near_faces),
         cmocka_unit_test(test_csg_sphere_cut_first_crossing),
         cmocka_unit_test(test_csg_deep_hierarchy_stack_in_arena),
+        cmocka_unit_test(test_csg_light_buffers_change_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
