@@ -841,7 +841,7 @@ VEC_HOT void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *fou
  * once and the other kept in todo[] (objtree.depth entries at most), to
  * be skipped without another test when a hit nearer than its entry has
  * been found by then. Returns 1 to stop (an occlusion test found a hit). */
-static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
+VEC_HOT int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
 {
     const csg *c = q->c;
     const bvh_node *nodes = c->objtree.nodes;
@@ -930,8 +930,11 @@ static int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
     }
 }
 
-static int csg_query_run(const csg *c, const prim_ray *r, num tmax, int any, const lightbuf *lb, arena *ar,
-                         geom_stats *st, csg_hit *hit)
+/* One query; inlined into each entry point below, so that the two without
+ * a buffer keep the walk they had before buffers (a scene with few
+ * objects has none). */
+VEC_HOT int csg_query_run(const csg *c, const prim_ray *r, num tmax, int any, const lightbuf *lb, arena *ar,
+                          geom_stats *st, csg_hit *hit)
 {
     csg_query q;
     int found = 0;
@@ -961,14 +964,24 @@ static int csg_query_run(const csg *c, const prim_ray *r, num tmax, int any, con
     return found;
 }
 
-int NS(csg_intersect)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
-                      csg_hit *hit)
+int NS(csg_intersect)(const csg *c, const prim_ray *r, num tmax, arena *ar, geom_stats *st, csg_hit *hit)
+{
+    return csg_query_run(c, r, tmax, 0, NULL, ar, st, hit);
+}
+
+int NS(csg_occluded)(const csg *c, const prim_ray *r, num tmax, arena *ar, geom_stats *st, csg_hit *hit)
+{
+    return csg_query_run(c, r, tmax, 1, NULL, ar, st, hit);
+}
+
+int NS(csg_intersect_from)(const csg *c, const lightbuf *lb, const prim_ray *r, num tmax, arena *ar,
+                           geom_stats *st, csg_hit *hit)
 {
     return csg_query_run(c, r, tmax, 0, lb, ar, st, hit);
 }
 
-int NS(csg_occluded)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
-                     csg_hit *hit)
+int NS(csg_occluded_to)(const csg *c, const lightbuf *lb, const prim_ray *r, num tmax, arena *ar, geom_stats *st,
+                        csg_hit *hit)
 {
     return csg_query_run(c, r, tmax, 1, lb, ar, st, hit);
 }

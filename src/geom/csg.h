@@ -101,17 +101,20 @@ size_t NS(csg_arena_bytes)(const csg *c);
  * bounds.
  * At equal parameters a surface the ray enters wins over one it leaves (a
  * touching object shows its contact face), then the lower primitive.
- * lb, when not NULL, is a buffer (lightbuf.h) over the bounded objects
- * whose apex the ray leaves (the eye of a camera ray): where it answers
- * for the ray, the objects its cell lists are tested instead of the
- * hierarchy's. Returns 1 and *hit, or 0. Temporaries come from ar
- * (released before returning); counters go to st. */
-int NS(csg_intersect)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
-                      csg_hit *hit);
+ * Returns 1 and *hit, or 0. Temporaries come from ar (released before
+ * returning); counters go to st. */
+int NS(csg_intersect)(const csg *c, const prim_ray *r, num tmax, arena *ar, geom_stats *st, csg_hit *hit);
 /* Some surface crossing with 0 < t <= tmax (not always the nearest): for
- * shadow rays through opaque scenes. lb, when not NULL, is the buffer of
- * the light the ray goes to, used as for csg_intersect. Returns 1 and
- * *hit, or 0. */
-int NS(csg_occluded)(const csg *c, const prim_ray *r, num tmax, const lightbuf *lb, arena *ar, geom_stats *st,
-                     csg_hit *hit);
+ * shadow rays through opaque scenes. Returns 1 and *hit, or 0. */
+int NS(csg_occluded)(const csg *c, const prim_ray *r, num tmax, arena *ar, geom_stats *st, csg_hit *hit);
+/* The same for a ray that leaves the point of the light buffer lb (a camera
+ * ray from the eye), and for one that goes to it (a shadow ray to a
+ * light): lb is over the bounded objects (objects[0 .. nbounded - 1]), and
+ * where it answers for the ray (lightbuf_lookup), the objects of the
+ * ray's cell are tested instead of the hierarchy's; the answers are the
+ * same (docs/numerics.md, "Culling in binary64"). */
+int NS(csg_intersect_from)(const csg *c, const lightbuf *lb, const prim_ray *r, num tmax, arena *ar,
+                           geom_stats *st, csg_hit *hit);
+int NS(csg_occluded_to)(const csg *c, const lightbuf *lb, const prim_ray *r, num tmax, arena *ar, geom_stats *st,
+                        csg_hit *hit);
 #endif

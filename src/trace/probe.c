@@ -84,7 +84,8 @@ static int probe_trace(const probe_cs *pc, const prim_ray *r, const lightbuf *lb
     double dd[3], dn;
     int i;
     memset(&gs, 0, sizeof gs);
-    if (!NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), lb, (arena *)&pc->ar, &gs, &ch))
+    if (!(lb && lb->start ? NS(csg_intersect_from)(&cs->tree, lb, r, num_from_i(GEOM_TMAX), (arena *)&pc->ar, &gs, &ch)
+                          : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), (arena *)&pc->ar, &gs, &ch)))
         return 0;
     *pn = vec3_madd(r->o, ch.t, r->d);
     NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, 1, &h->sf);
@@ -150,8 +151,8 @@ static int probe_shadow(const void *v, const double *o, const double *d, const d
     if (probe_spawn(p, o, d, d2, &h1, &r2))
         return -1;
     memset(&gs, 0, sizeof gs);
-    return NS(csg_occluded)(&cs->tree, &r2, num_from_d(tm < GEOM_TMAX ? tm : GEOM_TMAX), NULL,
-                            (arena *)&p->ar, &gs, &ch);
+    return NS(csg_occluded)(&cs->tree, &r2, num_from_d(tm < GEOM_TMAX ? tm : GEOM_TMAX), (arena *)&p->ar, &gs,
+                            &ch);
 }
 
 static int probe_light(const void *v, const double *o, const double *d, int li)
@@ -173,8 +174,9 @@ static int probe_light(const void *v, const double *o, const double *d, int li)
     vec3_to_d(l, ld);
     prim_ray_set_d(&s, pn, l, pd, ld, h.prim, dmath_dot3(h.sf.n, ld) < 0);
     memset(&gs, 0, sizeof gs);
-    return NS(csg_occluded)(&cs->tree, &s, dist, p->buffered && cs->lbuf ? &cs->lbuf[li] : NULL,
-                            (arena *)&p->ar, &gs, &ch);
+    if (p->buffered && cs->lbuf && cs->lbuf[li].start)
+        return NS(csg_occluded_to)(&cs->tree, &cs->lbuf[li], &s, dist, (arena *)&p->ar, &gs, &ch);
+    return NS(csg_occluded)(&cs->tree, &s, dist, (arena *)&p->ar, &gs, &ch);
 }
 
 static int probe_buffers(void *v)

@@ -64,7 +64,9 @@ static void render_ops_ids(const cscene *cs, trace_ctx *tc, const prim_ray *r, d
 {
     csg_hit h;
     geom_surface sf;
-    if (!NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), &cs->eyebuf, &tc->ar, &tc->gs, &h))
+    if (!(cs->eyebuf.start ? NS(csg_intersect_from)(&cs->tree, &cs->eyebuf, r, num_from_i(GEOM_TMAX), &tc->ar,
+                                                    &tc->gs, &h)
+                           : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)))
         return;
     NS(prim_surface)(&cs->prims[h.prim], h.face, vec3_madd(r->o, h.t, r->d), 1, &sf);
     out->prim = h.prim;

@@ -92,7 +92,7 @@ static double trace_light_through(const cscene *cs, trace_ctx *tc, vec3 p, vec3 
         vec3_to_d(p, pd);
         prim_ray_set_d(&s, p, l, pd, ld, pi, enter);
         tc->rs.rays_shadow++;
-        if (!NS(csg_intersect)(&cs->tree, &s, dist, NULL, &tc->ar, &tc->gs, &h))
+        if (!NS(csg_intersect)(&cs->tree, &s, dist, &tc->ar, &tc->gs, &h))
             return pass;
         p = vec3_madd(p, h.t, l);
         dist = num_sub(dist, h.t);
@@ -121,8 +121,9 @@ static double trace_light_passes(const cscene *cs, trace_ctx *tc, vec3 p, const 
         return trace_light_through(cs, tc, p, l, ld, dist, pi, enter);
     prim_ray_set_d(&s, p, l, pd, ld, pi, enter);
     tc->rs.rays_shadow++;
-    return NS(csg_occluded)(&cs->tree, &s, dist, cs->lbuf ? &cs->lbuf[li] : NULL, &tc->ar, &tc->gs,
-                            &h) ? 0 : 1;
+    if (cs->lbuf && cs->lbuf[li].start)
+        return NS(csg_occluded_to)(&cs->tree, &cs->lbuf[li], &s, dist, &tc->ar, &tc->gs, &h) ? 0 : 1;
+    return NS(csg_occluded)(&cs->tree, &s, dist, &tc->ar, &tc->gs, &h) ? 0 : 1;
 }
 
 /* Takes one secondary ray from the pixel's cap; 0 (counted) when spent. */
@@ -195,8 +196,9 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     int i, far, lit;
 
     /* Step 1: nearest hit and its primitive (PID), else the background. */
-    if (!NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), depth ? NULL : &cs->eyebuf,
-                           &tc->ar, &tc->gs, &h)) {
+    if (!(depth == 0 && cs->eyebuf.start
+              ? NS(csg_intersect_from)(&cs->tree, &cs->eyebuf, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)
+              : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h))) {
         for (i = 0; i < 3; i++)
             rgb[i] = sc->background[i];
         if (pid)

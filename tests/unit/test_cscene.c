@@ -300,7 +300,7 @@ static int cscene_test_hit(const cscene *cs, arena *ar, const double *o, const d
     geom_stats gs;
     memset(&gs, 0, sizeof gs);
     prim_ray_set(&r, vec3_from_d(o), vec3_from_d(d), -1, 0);
-    return f64_csg_intersect(&cs->tree, &r, num_from_i(GEOM_TBIG), NULL, ar, &gs, h);
+    return f64_csg_intersect(&cs->tree, &r, num_from_i(GEOM_TBIG), ar, &gs, h);
 }
 
 /* What the lanes of test_cscene_primary_batch_skips_nothing came to. */
