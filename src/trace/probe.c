@@ -79,13 +79,14 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
 static int probe_trace(const probe_cs *pc, const prim_ray *r, const lightbuf *lb, probe_hit *h, vec3 *pn)
 {
     const cscene *cs = pc->cs;
+    arena *ar = (arena *)&pc->ar;
     geom_stats gs;
     csg_hit ch;
     double dd[3], dn;
     int i;
     memset(&gs, 0, sizeof gs);
-    if (!(lb && lb->start ? NS(csg_intersect_from)(&cs->tree, lb, r, num_from_i(GEOM_TMAX), (arena *)&pc->ar, &gs, &ch)
-                          : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), (arena *)&pc->ar, &gs, &ch)))
+    if (!(lb && lb->start ? NS(csg_intersect_from)(&cs->tree, lb, r, num_from_i(GEOM_TMAX), ar, &gs, &ch)
+                          : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), ar, &gs, &ch)))
         return 0;
     *pn = vec3_madd(r->o, ch.t, r->d);
     NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, 1, &h->sf);

@@ -1,17 +1,18 @@
-/* lightbuf — for one point light, the boxes a shadow ray toward it can
- * meet, looked up by the direction the ray arrives from (a light buffer,
- * after Haines and Greenberg, "The Light Buffer", IEEE CG&A 6(9), 1986).
+/* lightbuf — for one point (a light, or the eye), the boxes a ray to or
+ * from it can meet, looked up by the direction of the ray as seen from
+ * the point (a light buffer, after Haines and Greenberg, "The Light
+ * Buffer", IEEE CG&A 6(9), 1986).
  *
- * The directions from the light are split among the six faces of a cube
+ * The directions from the point are split among the six faces of a cube
  * around it; each face holds a grid of cells over the part of it that
  * some box covers, and each cell the boxes whose projection from the
- * light reaches it. The boxes are grown by `grow` first, so a ray whose
- * line passes within `grow` of the light (and that stops within `grow`
- * of its closest point to the light) meets no box outside its cell's
- * list: a point x of the ray before that closest point L' lies in a box B
- * only if x + (light - L') lies in B grown by |light - L'|, in the
- * direction -d from the light. A box within 3 grow of the light is in no
- * cell but in the list `near`, which every lookup's caller tests too
+ * point reaches it. The boxes are grown by `grow` first, so a ray whose
+ * line passes within grow / 2 of the point, and that stays on one side
+ * of its closest point L' to it but for grow / 2, meets no box outside its
+ * cell's list: a point x of the ray on that side lies in a box B only if
+ * x + (point - L') lies in B grown by |point - L'|, in the ray's direction
+ * as seen from the point. A box within 3 grow of the point is in no cell
+ * but in the list `near`, which every lookup's caller tests too
  * (docs/numerics.md, "Culling in binary64").
  * Binary64 throughout; mode-independent. */
 #ifndef UTIL_LIGHTBUF_H
@@ -49,9 +50,9 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
                    size_t n, double grow);
 void lightbuf_free(lightbuf *lb);
 
-/* The boxes (indices, nearest the light first) besides lb->near whose grown projections reach the
- * direction the ray from o along d (not zero) takes, seen from the light,
- * over parameters [0, tmax]: 1 and *items, *n. `toward`: the ray goes to
+/* The boxes (indices, nearest the point first) besides lb->near whose
+ * grown projections reach the direction the ray from o along d (not zero)
+ * takes, seen from the point, over parameters [0, tmax]: 1 and *items, *n. `toward`: the ray goes to
  * the light (a shadow ray, seen there as -d), and must stop before its
  * closest point to it or within grow / 2 of it (a distance); else it
  * leaves (a camera ray from an eye there, seen as +d) and must start after
@@ -72,7 +73,8 @@ static inline int lightbuf_lookup(const lightbuf *lb, const double o[3], const d
     rd = r0 * d[0] + r1 * d[1] + r2 * d[2];
     g = toward ? tmax * dd - rd : rd;    /* |d|^2 times the parameter past (or
                                             before) the closest point */
-    if (!lb->start || !(dd > 0) || !(c0 * c0 + c1 * c1 + c2 * c2 <= h * h * dd) || !(g <= 0 || g * g <= h * h * dd))
+    if (!lb->start || !(dd > 0) || !(c0 * c0 + c1 * c1 + c2 * c2 <= h * h * dd)
+        || !(g <= 0 || g * g <= h * h * dd))
         return 0;
     a = a0 >= a1 ? (a0 >= a2 ? 0 : 2) : (a1 >= a2 ? 1 : 2);
     f = 2 * a + ((d[a] > 0) == (toward != 0));    /* the face the ray is seen on */
