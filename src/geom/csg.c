@@ -23,10 +23,20 @@ typedef struct csg_ctx {
                                 parent reads a bound of another object) */
     size_t bdcap;
     int n, cap, b0;
+    /* scratch kept across objects, so compiling one allocates nothing: the
+     * operand lists of the nodes being compiled, one above the other
+     * (lst[0 .. ltop - 1]), csg_gather's stack and csg_balance's keys */
+    int *lst, *stk;
+    struct csg_key *keys;
+    size_t lcap, scap, kcap, ltop;
     diag *err;
 } csg_ctx;
 
 typedef struct csg_key { double key; int idx; } csg_key;
+
+/* Operand lists up to this long are sorted by insertion: most are two or
+ * three operands, where qsort's calls cost more than the sort. */
+#define CSG_SORT_SHORT 16
 
 static int csg_key_cmp(const void *a, const void *b)
 {
@@ -186,7 +196,15 @@ static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
         keys[i].key = x->bd[items[i] - x->b0].c[axis];
         keys[i].idx = items[i];
     }
-    qsort(keys, (size_t)n, sizeof *keys, csg_key_cmp);
+    if (n <= CSG_SORT_SHORT)                 /* the same order, without calls */
+        for (i = 1; i < n; i++) {
+            csg_key k = keys[i];
+            for (j = i; j > 0 && csg_key_cmp(&k, &keys[j - 1]) < 0; j--)
+                keys[j] = keys[j - 1];
+            keys[j] = k;
+        }
+    else
+        qsort(keys, (size_t)n, sizeof *keys, csg_key_cmp);
     for (i = 0; i < n; i++)
         items[i] = keys[i].idx;
     l = csg_balance(x, items, n / 2, op, keys);
@@ -200,73 +218,62 @@ static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
 
 static int csg_compile_node(csg_ctx *x, int sn, int depth);
 
-/* Collects the operands of a chain of op (scene node sn) into *list
- * (scene node indices), following only nodes with the same op. */
-static int csg_gather(csg_ctx *x, int sn, int op, int **list, int *n, size_t *cap)
+/* Appends the operands of a chain of op (scene node sn) to x->lst (scene
+ * node indices) from x->ltop on, following only nodes with the same op;
+ * list holds the operands gathered before (from index base on). */
+static int csg_gather(csg_ctx *x, int sn, int op, size_t base)
 {
-    int *stack = NULL, top = 0;
-    size_t scap = 0;
-    int status = 0;
-    if (mem_grow((void **)&stack, &scap, 1, sizeof *stack))
+    size_t top = 0;
+    if (mem_grow((void **)&x->stk, &x->scap, 1, sizeof *x->stk))
         return csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
-    stack[top++] = sn;
-    while (top > 0 && !status) {
-        int k = stack[--top];
+    x->stk[top++] = sn;
+    while (top > 0) {
+        int k = x->stk[--top];
         const scene_node *nd;
-        if (k < 0 || (size_t)k >= x->sc->nnodes) {
-            status = csg_err(x, DIAG_INPUT, "CSG node index out of range");
-            break;
-        }
+        if (k < 0 || (size_t)k >= x->sc->nnodes)
+            return csg_err(x, DIAG_INPUT, "CSG node index out of range");
         nd = &x->sc->nodes[k];
         if ((int)nd->op == op && op != CSG_LEAF) {
-            if (*n + top + 2 > x->cap) {
-                status = csg_err(x, DIAG_INPUT, "CSG tree has a cycle or shares subtrees too often");
-                break;
-            }
-            if (mem_grow((void **)&stack, &scap, (size_t)top + 2, sizeof *stack)) {
-                status = csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
-                break;
-            }
-            stack[top++] = nd->right;
-            stack[top++] = nd->left;
+            if (x->ltop - base + top + 2 > (size_t)x->cap)
+                return csg_err(x, DIAG_INPUT, "CSG tree has a cycle or shares subtrees too often");
+            if (mem_grow((void **)&x->stk, &x->scap, top + 2, sizeof *x->stk))
+                return csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
+            x->stk[top++] = nd->right;
+            x->stk[top++] = nd->left;
         } else {
-            if (mem_grow((void **)list, cap, (size_t)*n + 1, sizeof **list)) {
-                status = csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
-                break;
-            }
-            (*list)[(*n)++] = k;
+            if (mem_grow((void **)&x->lst, &x->lcap, x->ltop + 1, sizeof *x->lst))
+                return csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
+            x->lst[x->ltop++] = k;
         }
     }
-    mem_free(stack);
-    return status;
+    return 0;
 }
 
-/* Compiles the operands (scene nodes) in list and balances them under op. */
-static int csg_compile_list(csg_ctx *x, int *list, int n, int op, int depth)
+/* Compiles the operands (scene nodes) x->lst[base ..] up to x->ltop, each
+ * replaced by its compiled index, and balances them under op. */
+static int csg_compile_list(csg_ctx *x, size_t base, int op, int depth)
 {
-    int i, res = -1;
-    csg_key *keys = mem_calloc((size_t)n, sizeof *keys);
-    if (!keys) {
+    int i, n = (int)(x->ltop - base);
+    if (mem_grow((void **)&x->keys, &x->kcap, (size_t)n, sizeof *x->keys)) {
         csg_err(x, DIAG_IO, "out of memory compiling the CSG tree");
         return -1;
     }
     for (i = 0; i < n; i++) {
-        list[i] = csg_compile_node(x, list[i], depth + 1);
-        if (list[i] < 0)
-            break;
+        /* the operand's own list goes above ours (x->lst may move) */
+        int r = csg_compile_node(x, x->lst[base + (size_t)i], depth + 1);
+        if (r < 0)
+            return -1;
+        x->lst[base + (size_t)i] = r;
     }
-    if (i == n)
-        res = csg_balance(x, list, n, op, keys);
-    mem_free(keys);
-    return res;
+    return csg_balance(x, x->lst + base, n, op, x->keys);
 }
 
 /* Compiles scene node sn; returns the compiled index or -1 (error set). */
 static int csg_compile_node(csg_ctx *x, int sn, int depth)
 {
     const scene_node *nd;
-    int *list = NULL, n = 0, res = -1;
-    size_t cap = 0;
+    size_t base = x->ltop;
+    int res = -1;
     if (sn < 0 || (size_t)sn >= x->sc->nnodes) {
         csg_err(x, DIAG_INPUT, "CSG node index out of range");
         return -1;
@@ -285,27 +292,27 @@ static int csg_compile_node(csg_ctx *x, int sn, int depth)
         return csg_add(x, CSG_LEAF, -1, -1, nd->prim);
     case CSG_UNION:
     case CSG_INTER:
-        if (!csg_gather(x, sn, nd->op, &list, &n, &cap))
-            res = csg_compile_list(x, list, n, nd->op, depth);
+        if (!csg_gather(x, sn, nd->op, base))
+            res = csg_compile_list(x, base, nd->op, depth);
         break;
     case CSG_DIFF: {
-        int base = sn, steps = 0, b;
+        int b = sn, steps = 0;
         /* a - b - c ... = a - (b u c u ...) */
-        while (base >= 0 && (size_t)base < x->sc->nnodes && x->sc->nodes[base].op == CSG_DIFF) {
+        while (b >= 0 && (size_t)b < x->sc->nnodes && x->sc->nodes[b].op == CSG_DIFF) {
             if (++steps > x->cap) {
                 csg_err(x, DIAG_INPUT, "CSG tree has a cycle or shares subtrees too often");
                 break;
             }
-            if (csg_gather(x, x->sc->nodes[base].right, CSG_UNION, &list, &n, &cap))
+            if (csg_gather(x, x->sc->nodes[b].right, CSG_UNION, base))
                 break;
-            base = x->sc->nodes[base].left;
+            b = x->sc->nodes[b].left;
         }
         if (x->err->status)
             break;
-        b = csg_compile_node(x, base, depth + 1);
+        b = csg_compile_node(x, b, depth + 1);
         if (b < 0)
             break;
-        res = csg_compile_list(x, list, n, CSG_UNION, depth);
+        res = csg_compile_list(x, base, CSG_UNION, depth);
         if (res >= 0)
             res = csg_add(x, CSG_DIFF, b, res, -1);
         break;
@@ -314,7 +321,7 @@ static int csg_compile_node(csg_ctx *x, int sn, int depth)
         csg_err(x, DIAG_INPUT, "CSG node has an unknown operator");
         break;
     }
-    mem_free(list);
+    x->ltop = base;
     return res;
 }
 
@@ -405,12 +412,18 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     out->nbounded = nb;
     out->peak_spans = peak;
     mem_free(x.bd);
+    mem_free(x.lst);
+    mem_free(x.stk);
+    mem_free(x.keys);
     mem_free(lo);
     mem_free(hi);
     return 0;
 fail:
     mem_free(x.nodes);
     mem_free(x.bd);
+    mem_free(x.lst);
+    mem_free(x.stk);
+    mem_free(x.keys);
     mem_free(obj);
     mem_free(hull);
     mem_free(lo);
