@@ -15,50 +15,35 @@ typedef struct lightbuf_rect { double u0, u1, v0, v1; } lightbuf_rect;
 
 /* Face f looks along axis f / 2, towards -1 on it when f is odd; (u, v)
  * are the next two axes over that coordinate's magnitude. */
-static void lightbuf_axes(int f, int *a, int *b, int *c, double *s)
-{
-    *a = f / 2;
-    *b = (*a + 1) % 3;
-    *c = (*a + 2) % 3;
-    *s = f % 2 ? -1 : 1;
-}
+static const int lightbuf_next[3] = {1, 2, 0};
 
-/* The reach on face f of the box [lo, hi] (relative to the light): its
- * corners' projections bound it while the box lies wholly in front of the
- * face's plane through the light (a projection keeps a convex set's
+/* The reach on face f of the box [lo, hi] (relative to the light, lo <= hi):
+ * its corners' projections bound it while the box lies wholly in front of
+ * the face's plane through the light (a projection keeps a convex set's
  * hull); a box across that plane may reach the whole face. */
 static lightbuf_rect lightbuf_reach(int f, const double lo[3], const double hi[3])
 {
     lightbuf_rect r = {1, -1, 1, -1};
-    double s, wmin = HUGE_VAL, wmax = -HUGE_VAL;
-    int a, b, c, k;
-    lightbuf_axes(f, &a, &b, &c, &s);
-    for (k = 0; k < 2; k++) {
-        double w = s * (k ? hi[a] : lo[a]);
-        wmin = w < wmin ? w : wmin;
-        wmax = w > wmax ? w : wmax;
-    }
-    if (!(wmax > 0))
+    int a = f / 2, b = lightbuf_next[a], c = lightbuf_next[b];
+    double wlo = f % 2 ? -hi[a] : lo[a], whi = f % 2 ? -lo[a] : hi[a], e = 1 + LIGHTBUF_EPS;
+    if (!(whi > 0))
         return r;
-    if (!(wmin > 0)) {
-        r.u0 = r.v0 = -1 - LIGHTBUF_EPS;
-        r.u1 = r.v1 = 1 + LIGHTBUF_EPS;
+    if (!(wlo > 0)) {
+        r.u0 = r.v0 = -e;
+        r.u1 = r.v1 = e;
         return r;
     }
-    r.u0 = r.v0 = HUGE_VAL;
-    r.u1 = r.v1 = -HUGE_VAL;
-    for (k = 0; k < 8; k++) {
-        double w = s * (k & 1 ? hi[a] : lo[a]);
-        double u = (k & 2 ? hi[b] : lo[b]) / w, v = (k & 4 ? hi[c] : lo[c]) / w;
-        r.u0 = u < r.u0 ? u : r.u0;
-        r.u1 = u > r.u1 ? u : r.u1;
-        r.v0 = v < r.v0 ? v : r.v0;
-        r.v1 = v > r.v1 ? v : r.v1;
-    }
-    r.u0 = fmax(r.u0 - LIGHTBUF_EPS, -1 - LIGHTBUF_EPS);
-    r.u1 = fmin(r.u1 + LIGHTBUF_EPS, 1 + LIGHTBUF_EPS);
-    r.v0 = fmax(r.v0 - LIGHTBUF_EPS, -1 - LIGHTBUF_EPS);
-    r.v1 = fmin(r.v1 + LIGHTBUF_EPS, 1 + LIGHTBUF_EPS);
+    /* x / w grows with x, and with w where x < 0 (shrinks where x > 0);
+     * rounding keeps that order, so of the 8 corners' quotients these are
+     * the least and greatest, to the bit (a zero's sign is lost below) */
+    r.u0 = lo[b] / (lo[b] < 0 ? wlo : whi) - LIGHTBUF_EPS;
+    r.u1 = hi[b] / (hi[b] < 0 ? whi : wlo) + LIGHTBUF_EPS;
+    r.v0 = lo[c] / (lo[c] < 0 ? wlo : whi) - LIGHTBUF_EPS;
+    r.v1 = hi[c] / (hi[c] < 0 ? whi : wlo) + LIGHTBUF_EPS;
+    r.u0 = r.u0 > -e ? r.u0 : -e;
+    r.u1 = r.u1 < e ? r.u1 : e;
+    r.v0 = r.v0 > -e ? r.v0 : -e;
+    r.v1 = r.v1 < e ? r.v1 : e;
     if (r.u1 < r.u0 || r.v1 < r.v0)
         r.u1 = r.u0 - 1;
     return r;
@@ -75,16 +60,17 @@ static int lightbuf_is_near(const lightbuf *lb, const double lo[3], const double
     return near;
 }
 
-/* The cells of face f that rect r covers: [*i0, *i1] x [*j0, *j1]. */
+/* The cells of face f that rect r covers: [*i0, *i1] x [*j0, *j1]. A cell
+ * is the floor of a coordinate within [0, n], which truncation gives. */
 static void lightbuf_span(const lightbuf *lb, int f, const lightbuf_rect *r, int *i0, int *i1, int *j0, int *j1)
 {
     int n = lb->res[f] - 1;
-    double x0 = floor((r->u0 - lb->u0[f]) * lb->su[f]), x1 = floor((r->u1 - lb->u0[f]) * lb->su[f]);
-    double y0 = floor((r->v0 - lb->v0[f]) * lb->sv[f]), y1 = floor((r->v1 - lb->v0[f]) * lb->sv[f]);
-    *i0 = x0 < 0 ? 0 : x0 > n ? n : (int)x0;
-    *i1 = x1 < 0 ? 0 : x1 > n ? n : (int)x1;
-    *j0 = y0 < 0 ? 0 : y0 > n ? n : (int)y0;
-    *j1 = y1 < 0 ? 0 : y1 > n ? n : (int)y1;
+    double x0 = (r->u0 - lb->u0[f]) * lb->su[f], x1 = (r->u1 - lb->u0[f]) * lb->su[f];
+    double y0 = (r->v0 - lb->v0[f]) * lb->sv[f], y1 = (r->v1 - lb->v0[f]) * lb->sv[f];
+    *i0 = x0 < 0 ? 0 : x0 >= n ? n : (int)x0;
+    *i1 = x1 < 0 ? 0 : x1 >= n ? n : (int)x1;
+    *j0 = y0 < 0 ? 0 : y0 >= n ? n : (int)y0;
+    *j1 = y1 < 0 ? 0 : y1 >= n ? n : (int)y1;
 }
 
 int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
