@@ -17,6 +17,8 @@ typedef struct lightbuf_rect { double u0, u1, v0, v1; } lightbuf_rect;
  * are the next two axes over that coordinate's magnitude. */
 static const int lightbuf_next[3] = {1, 2, 0};
 
+#define LIGHTBUF_NEAR 0x40   /* a box's faces: near the light, on none */
+
 /* The reach on face f of the box [lo, hi] (relative to the light, lo <= hi):
  * its corners' projections bound it while the box lies wholly in front of
  * the face's plane through the light (a projection keeps a convex set's
@@ -60,38 +62,51 @@ static int lightbuf_is_near(const lightbuf *lb, const double lo[3], const double
     return near;
 }
 
-/* The cells of face f that rect r covers: [*i0, *i1] x [*j0, *j1]. A cell
- * is the floor of a coordinate within [0, n], which truncation gives. */
-static void lightbuf_span(const lightbuf *lb, int f, const lightbuf_rect *r, int *i0, int *i1, int *j0, int *j1)
+/* Box `box` in each cell of face f that rect r covers: placed at
+ * item[start[cell]++], or with item NULL counted at start[cell + 1]. A
+ * cell is the floor of a coordinate clamped to [0, n], which truncation
+ * gives. The number of cells. */
+static size_t lightbuf_cover(lightbuf *lb, int f, const lightbuf_rect *r, int box, int *item)
 {
-    int n = lb->res[f] - 1;
+    int n = lb->res[f] - 1, i0, i1, j0, j1, x, y;
     double x0 = (r->u0 - lb->u0[f]) * lb->su[f], x1 = (r->u1 - lb->u0[f]) * lb->su[f];
     double y0 = (r->v0 - lb->v0[f]) * lb->sv[f], y1 = (r->v1 - lb->v0[f]) * lb->sv[f];
-    *i0 = x0 < 0 ? 0 : x0 >= n ? n : (int)x0;
-    *i1 = x1 < 0 ? 0 : x1 >= n ? n : (int)x1;
-    *j0 = y0 < 0 ? 0 : y0 >= n ? n : (int)y0;
-    *j1 = y1 < 0 ? 0 : y1 >= n ? n : (int)y1;
+    int *start = lb->start + lb->first[f];
+    i0 = x0 < 0 ? 0 : x0 >= n ? n : (int)x0;
+    i1 = x1 < 0 ? 0 : x1 >= n ? n : (int)x1;
+    j0 = y0 < 0 ? 0 : y0 >= n ? n : (int)y0;
+    j1 = y1 < 0 ? 0 : y1 >= n ? n : (int)y1;
+    for (y = j0; y <= j1; y++)
+        for (x = i0; x <= i1; x++) {
+            if (item)
+                item[start[y * (n + 1) + x]++] = box;
+            else
+                start[y * (n + 1) + x + 1]++;
+        }
+    return (size_t)(i1 - i0 + 1) * (size_t)(j1 - j0 + 1);
 }
 
 int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
                    size_t n, double grow)
 {
     lightbuf_rect *rc = NULL;
+    unsigned char *faces;
     double ext[6][4];
     size_t i, j, total = 0, cells = 0;
     uint64_t *key;
-    int *order, f, k, pass, m[6] = {0, 0, 0, 0, 0, 0};
+    int *order, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
     memset(lb, 0, sizeof *lb);
     memcpy(lb->at, at, sizeof lb->at);
     lb->grow = grow;
-    if (n > LIGHTBUF_BOXES_MAX)            /* its scratch: 192 bytes a box */
+    if (n > LIGHTBUF_BOXES_MAX)            /* its scratch: 193 bytes a box */
         return 1;
     rc = mem_alloc((n ? n : 1) * 6 * sizeof *rc);
+    faces = mem_alloc(n ? n : 1);
     key = mem_alloc((n ? n : 1) * sizeof *key);
     order = mem_alloc((n ? n : 1) * sizeof *order);
     /* the boxes nearest the light first in every cell: a camera ray's
      * far end then shrinks before the farther ones are tested */
-    for (i = 0; rc && key && order && i < n; i++) {
+    for (i = 0; rc && faces && key && order && i < n; i++) {
         double d2 = 0;
         for (k = 0; k < 3; k++) {
             double g = lo[i][k] > at[k] ? lo[i][k] - at[k] : at[k] > hi[i][k] ? at[k] - hi[i][k] : 0;
@@ -100,38 +115,39 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
         key[i] = radix_key_d(d2);
         order[i] = (int)i;
     }
-    if (!rc || !key || !order || radix_sort(order, n, sizeof *order, key)) {
-        mem_free(rc);
+    if (!rc || !faces || !key || !order || radix_sort(order, n, sizeof *order, key)) {
         mem_free(key);
-        mem_free(order);
-        return -1;
+        goto done;
     }
     mem_free(key);
     for (f = 0; f < 6; f++) {
         ext[f][0] = ext[f][2] = HUGE_VAL;
         ext[f][1] = ext[f][3] = -HUGE_VAL;
     }
-    /* each box's reach on each face; a box near the light reaches all */
+    /* each box's reach on each face, bit f of faces[i] where there is
+     * one; a box near the light is in no cell but in the near list */
     for (i = 0; i < n; i++) {
         double l[3], h[3];
-        int near = lightbuf_is_near(lb, lo[i], hi[i]);
+        faces[i] = lightbuf_is_near(lb, lo[i], hi[i]) ? LIGHTBUF_NEAR : 0;
+        if (faces[i]) {
+            lb->nnear++;
+            continue;
+        }
         for (k = 0; k < 3; k++) {
             l[k] = lo[i][k] - grow - at[k];
             h[k] = hi[i][k] + grow - at[k];
         }
-        lb->nnear += near;
         for (f = 0; f < 6; f++) {
             lightbuf_rect *r = &rc[i * 6 + (size_t)f];
             *r = lightbuf_reach(f, l, h);
-            if (near)
-                r->u1 = r->u0 - 1;
             if (r->u1 < r->u0)
                 continue;
+            faces[i] |= 1 << f;
             m[f]++;
-            ext[f][0] = fmin(ext[f][0], r->u0);
-            ext[f][1] = fmax(ext[f][1], r->u1);
-            ext[f][2] = fmin(ext[f][2], r->v0);
-            ext[f][3] = fmax(ext[f][3], r->v1);
+            ext[f][0] = r->u0 < ext[f][0] ? r->u0 : ext[f][0];
+            ext[f][1] = r->u1 > ext[f][1] ? r->u1 : ext[f][1];
+            ext[f][2] = r->v0 < ext[f][2] ? r->v0 : ext[f][2];
+            ext[f][3] = r->v1 > ext[f][3] ? r->v1 : ext[f][3];
         }
     }
     /* per face a grid over what the boxes reach, about two cells a side
@@ -152,61 +168,41 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     }
     lb->start = mem_calloc(cells + 1, sizeof *lb->start);
     lb->near = mem_alloc((lb->nnear ? (size_t)lb->nnear : 1) * sizeof *lb->near);
-    if (!lb->start || !lb->near) {
-        mem_free(rc);
-        mem_free(order);
-        lightbuf_free(lb);
-        return -1;
-    }
+    if (!lb->start || !lb->near)
+        goto done;
+    /* count each cell's boxes, then place them, nearest first */
+    for (i = 0; i < n; i++)
+        for (f = 0; f < 6 && faces[i] >> f; f++)
+            if (faces[i] >> f & 1)
+                total += lightbuf_cover(lb, f, &rc[i * 6 + (size_t)f], (int)i, NULL);
+    status = 1;
+    if (total > LIGHTBUF_PER_BOX * (n > LIGHTBUF_BOXES_MIN ? n : LIGHTBUF_BOXES_MIN))
+        goto done;
+    for (j = 0; j < cells; j++)
+        lb->start[j + 1] += lb->start[j];
+    lb->item = mem_alloc((total ? total : 1) * sizeof *lb->item);
+    status = -1;
+    if (!lb->item)
+        goto done;
     for (j = 0, k = 0; j < n; j++) {
-        if (lightbuf_is_near(lb, lo[order[j]], hi[order[j]]))
-            lb->near[k++] = order[j];
-    }
-    /* two passes: count each cell's boxes, then place them */
-    for (pass = 0; pass < 2; pass++) {
-        for (j = 0; j < n; j++)
-            for (i = (size_t)order[j], f = 0; f < 6; f++) {
-                const lightbuf_rect *r = &rc[i * 6 + (size_t)f];
-                int i0, i1, j0, j1, x, y;
-                if (r->u1 < r->u0)
-                    continue;
-                lightbuf_span(lb, f, r, &i0, &i1, &j0, &j1);
-                for (y = j0; y <= j1; y++)
-                    for (x = i0; x <= i1; x++) {
-                        size_t cell = (size_t)lb->first[f] + (size_t)y * (size_t)lb->res[f] + (size_t)x;
-                        if (pass == 0)
-                            lb->start[cell + 1]++;
-                        else
-                            lb->item[lb->start[cell]++] = (int)i;
-                    }
-                if (pass == 0)
-                    total += (size_t)(i1 - i0 + 1) * (size_t)(j1 - j0 + 1);
-            }
-        if (pass == 0) {
-            size_t c;
-            if (total > LIGHTBUF_PER_BOX * (n > LIGHTBUF_BOXES_MIN ? n : LIGHTBUF_BOXES_MIN)) {
-                mem_free(rc);
-                mem_free(order);
-                lightbuf_free(lb);
-                return 1;
-            }
-            for (c = 0; c < cells; c++)
-                lb->start[c + 1] += lb->start[c];
-            lb->item = mem_alloc((total ? total : 1) * sizeof *lb->item);
-            if (!lb->item) {
-                mem_free(rc);
-                mem_free(order);
-                lightbuf_free(lb);
-                return -1;
-            }
-        }
+        i = (size_t)order[j];
+        if (faces[i] == LIGHTBUF_NEAR)
+            lb->near[k++] = (int)i;
+        for (f = 0; f < 6 && faces[i] >> f; f++)
+            if (faces[i] >> f & 1)
+                lightbuf_cover(lb, f, &rc[i * 6 + (size_t)f], (int)i, lb->item);
     }
     /* placing advanced each start to the next cell's: shift back */
     memmove(lb->start + 1, lb->start, cells * sizeof *lb->start);
     lb->start[0] = 0;
+    status = 0;
+done:
     mem_free(rc);
+    mem_free(faces);
     mem_free(order);
-    return 0;
+    if (status)
+        lightbuf_free(lb);
+    return status;
 }
 
 void lightbuf_free(lightbuf *lb)
