@@ -9,27 +9,25 @@
  * (relative 2^-53 on values within 1), far below this. */
 #define LIGHTBUF_EPS 1e-9
 
-/* A box's reach on one face, in the face's (u, v): [u0, u1] x [v0, v1],
- * or none (u1 < u0). */
-typedef struct lightbuf_rect { double u0, u1, v0, v1; } lightbuf_rect;
+/* A box's reach on face f, in the face's (u, v): [u0, u1] x [v0, v1], or
+ * none (u1 < u0); f -1: on every face, the box is near the light. */
+typedef struct lightbuf_rect { double u0, u1, v0, v1; int f; } lightbuf_rect;
 
 /* Face f looks along axis f / 2, towards -1 on it when f is odd; (u, v)
  * are the next two axes over that coordinate's magnitude. */
 static const int lightbuf_next[3] = {1, 2, 0};
 
-#define LIGHTBUF_NEAR 0x40   /* a box's faces: near the light, on none */
-
-/* The reach on face f of the box [lo, hi] (relative to the light, lo <= hi):
- * its corners' projections bound it while the box lies wholly in front of
- * the face's plane through the light (a projection keeps a convex set's
- * hull); a box across that plane may reach the whole face. */
+/* The reach on face f of the box [lo, hi] (relative to the light, lo <= hi)
+ * that reaches in front of the face's plane through the light: its
+ * corners' projections bound it while the box lies wholly in front (a
+ * projection keeps a convex set's hull); a box across that plane may
+ * reach the whole face. */
 static lightbuf_rect lightbuf_reach(int f, const double lo[3], const double hi[3])
 {
-    lightbuf_rect r = {1, -1, 1, -1};
+    lightbuf_rect r;
     int a = f / 2, b = lightbuf_next[a], c = lightbuf_next[b];
     double wlo = f % 2 ? -hi[a] : lo[a], whi = f % 2 ? -lo[a] : hi[a], e = 1 + LIGHTBUF_EPS;
-    if (!(whi > 0))
-        return r;
+    r.f = f;
     if (!(wlo > 0)) {
         r.u0 = r.v0 = -e;
         r.u1 = r.v1 = e;
@@ -62,13 +60,13 @@ static int lightbuf_is_near(const lightbuf *lb, const double lo[3], const double
     return near;
 }
 
-/* Box `box` in each cell of face f that rect r covers: placed at
+/* Box `box` in each cell that rect r covers: placed at
  * item[start[cell]++], or with item NULL counted at start[cell + 1]. A
  * cell is the floor of a coordinate clamped to [0, n], which truncation
  * gives. The number of cells. */
-static size_t lightbuf_cover(lightbuf *lb, int f, const lightbuf_rect *r, int box, int *item)
+static size_t lightbuf_cover(lightbuf *lb, const lightbuf_rect *r, int box, int *item)
 {
-    int n = lb->res[f] - 1, i0, i1, j0, j1, x, y;
+    int f = r->f, n = lb->res[f] - 1, i0, i1, j0, j1, x, y;
     double x0 = (r->u0 - lb->u0[f]) * lb->su[f], x1 = (r->u1 - lb->u0[f]) * lb->su[f];
     double y0 = (r->v0 - lb->v0[f]) * lb->sv[f], y1 = (r->v1 - lb->v0[f]) * lb->sv[f];
     int *start = lb->start + lb->first[f];
@@ -90,46 +88,41 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
                    size_t n, double grow)
 {
     lightbuf_rect *rc = NULL;
-    unsigned char *faces;
     double ext[6][4];
-    size_t i, j, total = 0, cells = 0;
+    size_t i, j, nr = 0, total = 0, cells = 0;
     uint64_t *key;
-    int *order, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
+    int *order, *first, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
     memset(lb, 0, sizeof *lb);
     memcpy(lb->at, at, sizeof lb->at);
     lb->grow = grow;
-    if (n > LIGHTBUF_BOXES_MAX)            /* its scratch: 193 bytes a box */
+    if (n > LIGHTBUF_BOXES_MAX)            /* its scratch: 244 bytes a box */
         return 1;
     rc = mem_alloc((n ? n : 1) * 6 * sizeof *rc);
-    faces = mem_alloc(n ? n : 1);
+    first = mem_alloc((n + 1) * sizeof *first);
     key = mem_alloc((n ? n : 1) * sizeof *key);
     order = mem_alloc((n ? n : 1) * sizeof *order);
-    /* the boxes nearest the light first in every cell: a camera ray's
-     * far end then shrinks before the farther ones are tested */
-    for (i = 0; rc && faces && key && order && i < n; i++) {
-        double d2 = 0;
+    if (!rc || !first || !key || !order) {
+        mem_free(key);
+        goto done;
+    }
+    for (f = 0; f < 6; f++) {
+        ext[f][0] = ext[f][2] = HUGE_VAL;
+        ext[f][1] = ext[f][3] = -HUGE_VAL;
+    }
+    /* each box's distance from the light, and its reaches, box i's at
+     * rc[first[i] .. first[i + 1] - 1]; a box near the light is in no cell
+     * but in the near list */
+    for (i = 0; i < n; i++) {
+        double l[3], h[3], d2 = 0;
         for (k = 0; k < 3; k++) {
             double g = lo[i][k] > at[k] ? lo[i][k] - at[k] : at[k] > hi[i][k] ? at[k] - hi[i][k] : 0;
             d2 += g * g;
         }
         key[i] = radix_key_d(d2);
         order[i] = (int)i;
-    }
-    if (!rc || !faces || !key || !order || radix_sort(order, n, sizeof *order, key)) {
-        mem_free(key);
-        goto done;
-    }
-    mem_free(key);
-    for (f = 0; f < 6; f++) {
-        ext[f][0] = ext[f][2] = HUGE_VAL;
-        ext[f][1] = ext[f][3] = -HUGE_VAL;
-    }
-    /* each box's reach on each face, bit f of faces[i] where there is
-     * one; a box near the light is in no cell but in the near list */
-    for (i = 0; i < n; i++) {
-        double l[3], h[3];
-        faces[i] = lightbuf_is_near(lb, lo[i], hi[i]) ? LIGHTBUF_NEAR : 0;
-        if (faces[i]) {
+        first[i] = (int)nr;
+        if (lightbuf_is_near(lb, lo[i], hi[i])) {
+            rc[nr++].f = -1;
             lb->nnear++;
             continue;
         }
@@ -138,11 +131,13 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
             h[k] = hi[i][k] + grow - at[k];
         }
         for (f = 0; f < 6; f++) {
-            lightbuf_rect *r = &rc[i * 6 + (size_t)f];
+            lightbuf_rect *r = &rc[nr];
+            if (!(f % 2 ? l[f / 2] < 0 : h[f / 2] > 0))
+                continue;              /* wholly behind the face's plane */
             *r = lightbuf_reach(f, l, h);
             if (r->u1 < r->u0)
                 continue;
-            faces[i] |= 1 << f;
+            nr++;
             m[f]++;
             ext[f][0] = r->u0 < ext[f][0] ? r->u0 : ext[f][0];
             ext[f][1] = r->u1 > ext[f][1] ? r->u1 : ext[f][1];
@@ -150,6 +145,14 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
             ext[f][3] = r->v1 > ext[f][3] ? r->v1 : ext[f][3];
         }
     }
+    first[n] = (int)nr;
+    /* the boxes nearest the light first in every cell: a camera ray's
+     * far end then shrinks before the farther ones are tested */
+    if (radix_sort(order, n, sizeof *order, key)) {
+        mem_free(key);
+        goto done;
+    }
+    mem_free(key);
     /* per face a grid over what the boxes reach, about two cells a side
      * per square root of the boxes there */
     for (f = 0; f < 6; f++) {
@@ -171,10 +174,9 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     if (!lb->start || !lb->near)
         goto done;
     /* count each cell's boxes, then place them, nearest first */
-    for (i = 0; i < n; i++)
-        for (f = 0; f < 6 && faces[i] >> f; f++)
-            if (faces[i] >> f & 1)
-                total += lightbuf_cover(lb, f, &rc[i * 6 + (size_t)f], (int)i, NULL);
+    for (j = 0; j < nr; j++)
+        if (rc[j].f >= 0)
+            total += lightbuf_cover(lb, &rc[j], 0, NULL);
     status = 1;
     if (total > LIGHTBUF_PER_BOX * (n > LIGHTBUF_BOXES_MIN ? n : LIGHTBUF_BOXES_MIN))
         goto done;
@@ -185,12 +187,13 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     if (!lb->item)
         goto done;
     for (j = 0, k = 0; j < n; j++) {
-        i = (size_t)order[j];
-        if (faces[i] == LIGHTBUF_NEAR)
-            lb->near[k++] = (int)i;
-        for (f = 0; f < 6 && faces[i] >> f; f++)
-            if (faces[i] >> f & 1)
-                lightbuf_cover(lb, f, &rc[i * 6 + (size_t)f], (int)i, lb->item);
+        const lightbuf_rect *r = rc + first[order[j]], *end = rc + first[order[j] + 1];
+        for (; r < end; r++) {
+            if (r->f < 0)
+                lb->near[k++] = order[j];
+            else
+                lightbuf_cover(lb, r, order[j], lb->item);
+        }
     }
     /* placing advanced each start to the next cell's: shift back */
     memmove(lb->start + 1, lb->start, cells * sizeof *lb->start);
@@ -198,7 +201,7 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     status = 0;
 done:
     mem_free(rc);
-    mem_free(faces);
+    mem_free(first);
     mem_free(order);
     if (status)
         lightbuf_free(lb);
