@@ -60,28 +60,32 @@ static int lightbuf_is_near(const lightbuf *lb, const double lo[3], const double
     return near;
 }
 
-/* Box `box` in each cell that rect r covers: placed at
- * item[start[cell]++], or with item NULL counted at start[cell + 1]. A
- * cell is the floor of a coordinate clamped to [0, n], which truncation
- * gives. The number of cells. */
-static size_t lightbuf_cover(lightbuf *lb, const lightbuf_rect *r, int box, int *item)
+/* The cells of face r->f that rect r covers: [c[0], c[1]] x [c[2], c[3]].
+ * A cell is the floor of a coordinate clamped to [0, n], which truncation
+ * gives. */
+static void lightbuf_cells(const lightbuf *lb, const lightbuf_rect *r, int c[4])
 {
-    int f = r->f, n = lb->res[f] - 1, i0, i1, j0, j1, x, y;
+    int f = r->f, n = lb->res[f] - 1;
     double x0 = (r->u0 - lb->u0[f]) * lb->su[f], x1 = (r->u1 - lb->u0[f]) * lb->su[f];
     double y0 = (r->v0 - lb->v0[f]) * lb->sv[f], y1 = (r->v1 - lb->v0[f]) * lb->sv[f];
-    int *start = lb->start + lb->first[f];
-    i0 = x0 < 0 ? 0 : x0 >= n ? n : (int)x0;
-    i1 = x1 < 0 ? 0 : x1 >= n ? n : (int)x1;
-    j0 = y0 < 0 ? 0 : y0 >= n ? n : (int)y0;
-    j1 = y1 < 0 ? 0 : y1 >= n ? n : (int)y1;
-    for (y = j0; y <= j1; y++)
-        for (x = i0; x <= i1; x++) {
+    c[0] = x0 < 0 ? 0 : x0 >= n ? n : (int)x0;
+    c[1] = x1 < 0 ? 0 : x1 >= n ? n : (int)x1;
+    c[2] = y0 < 0 ? 0 : y0 >= n ? n : (int)y0;
+    c[3] = y1 < 0 ? 0 : y1 >= n ? n : (int)y1;
+}
+
+/* Box `box` in the cells c of face f: placed at item[start[cell]++], or
+ * with item NULL counted at start[cell + 1]. */
+static void lightbuf_cover(lightbuf *lb, int f, const int c[4], int box, int *item)
+{
+    int *start = lb->start + lb->first[f], x, y;
+    for (y = c[2]; y <= c[3]; y++)
+        for (x = c[0]; x <= c[1]; x++) {
             if (item)
-                item[start[y * (n + 1) + x]++] = box;
+                item[start[y * lb->res[f] + x]++] = box;
             else
-                start[y * (n + 1) + x + 1]++;
+                start[y * lb->res[f] + x + 1]++;
         }
-    return (size_t)(i1 - i0 + 1) * (size_t)(j1 - j0 + 1);
 }
 
 int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
@@ -91,11 +95,11 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     double ext[6][4];
     size_t i, j, nr = 0, total = 0, cells = 0;
     uint64_t *key;
-    int *order, *first, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
+    int *order, *first, (*cell)[4] = NULL, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
     memset(lb, 0, sizeof *lb);
     memcpy(lb->at, at, sizeof lb->at);
     lb->grow = grow;
-    if (n > LIGHTBUF_BOXES_MAX)            /* its scratch: 244 bytes a box */
+    if (n > LIGHTBUF_BOXES_MAX)            /* scratch: 244 bytes a box, 16 a reach */
         return 1;
     rc = mem_alloc((n ? n : 1) * 6 * sizeof *rc);
     first = mem_alloc((n + 1) * sizeof *first);
@@ -171,12 +175,16 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     }
     lb->start = mem_calloc(cells + 1, sizeof *lb->start);
     lb->near = mem_alloc((lb->nnear ? (size_t)lb->nnear : 1) * sizeof *lb->near);
-    if (!lb->start || !lb->near)
+    cell = mem_alloc((nr ? nr : 1) * sizeof *cell);
+    if (!lb->start || !lb->near || !cell)
         goto done;
     /* count each cell's boxes, then place them, nearest first */
     for (j = 0; j < nr; j++)
-        if (rc[j].f >= 0)
-            total += lightbuf_cover(lb, &rc[j], 0, NULL);
+        if (rc[j].f >= 0) {
+            lightbuf_cells(lb, &rc[j], cell[j]);
+            lightbuf_cover(lb, rc[j].f, cell[j], 0, NULL);
+            total += (size_t)(cell[j][1] - cell[j][0] + 1) * (size_t)(cell[j][3] - cell[j][2] + 1);
+        }
     status = 1;
     if (total > LIGHTBUF_PER_BOX * (n > LIGHTBUF_BOXES_MIN ? n : LIGHTBUF_BOXES_MIN))
         goto done;
@@ -187,12 +195,11 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     if (!lb->item)
         goto done;
     for (j = 0, k = 0; j < n; j++) {
-        const lightbuf_rect *r = rc + first[order[j]], *end = rc + first[order[j] + 1];
-        for (; r < end; r++) {
-            if (r->f < 0)
+        for (i = (size_t)first[order[j]]; i < (size_t)first[order[j] + 1]; i++) {
+            if (rc[i].f < 0)
                 lb->near[k++] = order[j];
             else
-                lightbuf_cover(lb, r, order[j], lb->item);
+                lightbuf_cover(lb, rc[i].f, cell[i], order[j], lb->item);
         }
     }
     /* placing advanced each start to the next cell's: shift back */
@@ -201,6 +208,7 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     status = 0;
 done:
     mem_free(rc);
+    mem_free(cell);
     mem_free(first);
     mem_free(order);
     if (status)
