@@ -38,13 +38,15 @@ static lightbuf_rect lightbuf_reach(int f, const double lo[3], const double hi[3
      * the least and greatest, to the bit (a zero's sign is lost below) */
     r.u0 = lo[b] / (lo[b] < 0 ? wlo : whi) - LIGHTBUF_EPS;
     r.u1 = hi[b] / (hi[b] < 0 ? whi : wlo) + LIGHTBUF_EPS;
-    r.v0 = lo[c] / (lo[c] < 0 ? wlo : whi) - LIGHTBUF_EPS;
-    r.v1 = hi[c] / (hi[c] < 0 ? whi : wlo) + LIGHTBUF_EPS;
     r.u0 = r.u0 > -e ? r.u0 : -e;
     r.u1 = r.u1 < e ? r.u1 : e;
+    if (r.u1 < r.u0)                   /* wholly off the face, whatever v */
+        return r;
+    r.v0 = lo[c] / (lo[c] < 0 ? wlo : whi) - LIGHTBUF_EPS;
+    r.v1 = hi[c] / (hi[c] < 0 ? whi : wlo) + LIGHTBUF_EPS;
     r.v0 = r.v0 > -e ? r.v0 : -e;
     r.v1 = r.v1 < e ? r.v1 : e;
-    if (r.u1 < r.u0 || r.v1 < r.v0)
+    if (r.v1 < r.v0)
         r.u1 = r.u0 - 1;
     return r;
 }
