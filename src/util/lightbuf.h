@@ -42,10 +42,10 @@ typedef struct lightbuf {
 #define LIGHTBUF_BOXES_MIN 1024
 #define LIGHTBUF_BOXES_MAX ((size_t)1 << 20)   /* boxes a buffer is built over */
 
-/* Builds the buffer of the light at `at` over boxes lo[i], hi[i] (i < n),
- * each grown by grow > 0. 0; 1 when there are more than LIGHTBUF_BOXES_MAX
- * boxes or the cells would hold more entries than the limit above
- * (nothing built); -1 when memory runs out. */
+/* Builds the buffer of the light at `at` over the finite boxes lo[i] <=
+ * hi[i] (i < n), each grown by grow > 0. 0; 1 when there are more than
+ * LIGHTBUF_BOXES_MAX boxes or the cells would hold more entries than the
+ * limit above (nothing built); -1 when memory runs out. */
 int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
                    size_t n, double grow);
 void lightbuf_free(lightbuf *lb);
