@@ -617,8 +617,10 @@ static int scene_parse_diff(scene_parser *p, scene_cur *c) { return scene_parse_
  * rec; returns the node index or -1 when a composed transform is unusable
  * (*bad names the primitive). Each primitive copy takes its definition's
  * FACE bindings, and the definition remembers the first OBJECT that placed
- * it. Recursion depth is bounded by SCENE_PARSE_MAX_NEST (checked at
- * definition). */
+ * it. m and every transform of the parser come from scene_xform_identity
+ * or scene_xform_mul, so a product with a transform that is the identity
+ * would be m again and is not formed. Recursion depth is bounded by
+ * SCENE_PARSE_MAX_NEST (checked at definition). */
 static int scene_parse_expand(scene_parser *p, int di, const double m[16], int attr, long rec,
                               const scene_parse_def **bad)
 {
@@ -629,7 +631,10 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int a
     int left = -1;
     if (d->op == CSG_LEAF) {
         scene_prim *pr = &s->prims[s->nprims];
-        scene_xform_mul(pr->world_from_object, m, d->m);
+        if (scene_xform_is_identity(d->m))
+            memcpy(pr->world_from_object, m, sizeof pr->world_from_object);
+        else
+            scene_xform_mul(pr->world_from_object, m, d->m);
         if (!scene_xform_ok(pr->world_from_object)) {
             *bad = d;
             return -1;
@@ -650,9 +655,13 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int a
     }
     for (i = 0; i < d->count; i++) {
         const scene_parse_use *u = &p->operands[d->first + i];
-        double um[16];
+        const double *um = m;
+        double prod[16];
         int r;
-        scene_xform_mul(um, m, u->m);
+        if (!scene_xform_is_identity(u->m)) {
+            scene_xform_mul(prod, m, u->m);
+            um = prod;
+        }
         r = scene_parse_expand(p, u->def, um, u->attr >= 0 ? u->attr : attr, rec, bad);
         if (r < 0)
             return -1;

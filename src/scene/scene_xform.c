@@ -3,6 +3,7 @@
 #include "scene/scene_xform.h"
 #include "util/dmath.h"
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 void scene_xform_identity(double m[16])
@@ -12,19 +13,62 @@ void scene_xform_identity(double m[16])
         m[i] = (i % 5 == 0) ? 1.0 : 0.0;
 }
 
+/* The bits of the first n entries of the top three rows of m (n 3: the
+ * linear part, 4: all) that differ from the identity's; 0 when they are
+ * its entries exactly (+0, not -0). Branch-free: cheaper than comparing. */
+static uint64_t scene_xform_off_identity(const double m[16], int n)
+{
+    static const double one = 1.0;
+    uint64_t acc = 0, u, bone;
+    int i, j;
+    memcpy(&bone, &one, sizeof bone);
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < n; j++) {
+            memcpy(&u, &m[4 * i + j], sizeof u);
+            acc |= i == j ? u ^ bone : u;
+        }
+    return acc;
+}
+
+int scene_xform_is_identity(const double m[16])
+{
+    return m[0] == 1 && scene_xform_off_identity(m, 4) == 0;
+}
+
 /* Only the top three rows are formed, each sum in the order the full
  * product adds it: b's last row (0 0 0 1) contributes a[i][3] to column 3
  * and a[i][3] * 0 elsewhere, which changes no sum (started from +0, a sum
- * is never -0); a's last row gives b's again. */
+ * is never -0); a's last row gives b's again.
+ * Where a factor's linear part is exactly the identity's (a translation,
+ * or the identity itself), each of its sums has one term x times 1, which is x,
+ * and the others finite times a zero, a zero: started from +0, such a sum
+ * is x + 0.0 (x, or +0 for -0), whatever the order. So a's rows then give
+ * b's entries + 0.0, a[i][3] added to column 3 as before; b's columns
+ * give a's entries + 0.0, column 3 formed in full. */
 void scene_xform_mul(double out[16], const double a[16], const double b[16])
 {
     double r[12];
     int i, j;
-    for (i = 0; i < 3; i++) {
-        const double *ai = a + 4 * i;
-        for (j = 0; j < 4; j++)
-            r[4 * i + j] = 0.0 + ai[0] * b[j] + ai[1] * b[4 + j] + ai[2] * b[8 + j];
-        r[4 * i + 3] += ai[3];
+    if (a[0] == 1 && scene_xform_off_identity(a, 3) == 0) {
+        for (i = 0; i < 12; i++)
+            r[i] = b[i] + 0.0;
+        for (i = 0; i < 3; i++)
+            r[4 * i + 3] += a[4 * i + 3];
+    } else if (b[0] == 1 && scene_xform_off_identity(b, 3) == 0) {
+        for (i = 0; i < 3; i++) {
+            const double *ai = a + 4 * i;
+            for (j = 0; j < 3; j++)
+                r[4 * i + j] = ai[j] + 0.0;
+            r[4 * i + 3] = 0.0 + ai[0] * b[3] + ai[1] * b[7] + ai[2] * b[11];
+            r[4 * i + 3] += ai[3];
+        }
+    } else {
+        for (i = 0; i < 3; i++) {
+            const double *ai = a + 4 * i;
+            for (j = 0; j < 4; j++)
+                r[4 * i + j] = 0.0 + ai[0] * b[j] + ai[1] * b[4 + j] + ai[2] * b[8 + j];
+            r[4 * i + 3] += ai[3];
+        }
     }
     memcpy(out, r, sizeof r);
     out[12] = out[13] = out[14] = 0;

@@ -15,8 +15,11 @@
 
 void scene_xform_identity(double m[16]);
 /* out = a * b for affine a and b with finite entries (out may alias a or
- * b); bit for bit the full 4x4 product. */
+ * b); bit for bit the full 4x4 product. out never holds -0, so for any m
+ * made by scene_xform_identity or scene_xform_mul, m * I is m itself. */
 void scene_xform_mul(double out[16], const double a[16], const double b[16]);
+/* 1 if the top three rows of m are exactly the identity's (+0, not -0). */
+int scene_xform_is_identity(const double m[16]);
 /* 1 if m is finite, within SCENE_XFORM_MAX_ABS, no row of its 3x3 linear
  * part is shorter than 1/SCENE_XFORM_MAX_ABS and that part is invertible
  * (|det| above 1e-12 times the product of its row lengths). */
