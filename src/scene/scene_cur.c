@@ -60,13 +60,20 @@ int scene_cur_at_end(const scene_cur *c)
     return c->pos >= c->st->ntok;
 }
 
+/* Items are printable ASCII (scene_lex) and the parser runs in the C
+ * locale, where toupper changes only a-z; this is that, without the call. */
+static unsigned char scene_cur_upper(unsigned char ch)
+{
+    return ch >= 'a' && ch <= 'z' ? (unsigned char)(ch - 'a' + 'A') : ch;
+}
+
 int scene_cur_is(const scene_lex_tok *t, const char *keyword)
 {
     size_t i;
     if (!t)
         return 0;
     for (i = 0; i < t->len; i++)
-        if (toupper((unsigned char)t->text[i]) != (unsigned char)keyword[i])
+        if (scene_cur_upper((unsigned char)t->text[i]) != (unsigned char)keyword[i])
             return 0;
     return keyword[i] == '\0';
 }
@@ -98,32 +105,6 @@ int scene_cur_error(scene_cur *c, const scene_lex_tok *t, const char *fmt, ...)
                    "%s: %s", c->what, msg);
 }
 
-/* 1 if s is [+-] digits [. digits] [E [+-] digits] with a digit in the
- * mantissa (a leading or trailing '.' is allowed: ".5", "2."). */
-static int scene_cur_syntax(const char *s)
-{
-    int digits = 0;
-    if (*s == '+' || *s == '-')
-        s++;
-    while (isdigit((unsigned char)*s)) { s++; digits++; }
-    if (*s == '.') {
-        s++;
-        while (isdigit((unsigned char)*s)) { s++; digits++; }
-    }
-    if (!digits)
-        return 0;
-    if (*s == 'e' || *s == 'E') {
-        s++;
-        if (*s == '+' || *s == '-')
-            s++;
-        if (!isdigit((unsigned char)*s))
-            return 0;
-        while (isdigit((unsigned char)*s))
-            s++;
-    }
-    return *s == '\0';
-}
-
 /* 1 if the item spells NaN or infinity the way strtod would accept it. */
 static int scene_cur_nonfinite(const scene_lex_tok *t)
 {
@@ -139,42 +120,70 @@ static int scene_cur_nonfinite(const scene_lex_tok *t)
            scene_cur_is(&u, "INFINITY");
 }
 
-/* strtod's value of s, a number of scene_cur_syntax, when s has no exponent,
- * its digits make an integer below 2^53 and at most 22 are fractional: the
- * integer and the power of ten are then exact doubles, and their quotient,
- * rounded once to nearest, is the correctly rounded value strtod returns
- * (Clinger's fast path, about a tenth of strtod's work). 0 otherwise. */
-static int scene_cur_decimal(const char *s, double *v)
+/* Reads the run of digits at s into *m (times ten per digit, plus it) and
+ * counts them in *n; clears *fast when *m would reach 2^53. Returns the
+ * end of the run. */
+static const char *scene_cur_digits(const char *s, uint64_t *m, int *n, int *fast)
+{
+    unsigned d;
+    for (; (d = (unsigned)(*s - '0')) < 10; s++, ++*n) {
+        if (*m >= ((uint64_t)1 << 53) / 10)
+            *fast = 0;
+        *m = *m * 10 + d;
+    }
+    return s;
+}
+
+/* Reads s, in one pass, as [+-] digits [. digits] [E [+-] digits] with a
+ * digit in the mantissa (a leading or trailing '.' is allowed: ".5", "2.").
+ * 0 if s is not written so. Else 1 with *v the value when s has no
+ * exponent, its digits make an integer below 2^53 and at most 22 are
+ * fractional: the integer and the power of ten are then exact doubles, and
+ * their quotient, rounded once to nearest, is the correctly rounded value
+ * strtod returns (Clinger's fast path, about a tenth of strtod's work);
+ * 2 when only strtod can convert it. */
+static int scene_cur_scan(const char *s, double *v)
 {
 #if FLT_EVAL_METHOD == 0
     static const double p10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    int fast = 1;
+#else                                     /* wider evaluation could round twice */
+    int fast = 0;
+#endif
     uint64_t m = 0;
-    int neg = *s == '-', frac = -1;
+    int neg = *s == '-', digits = 0, frac = 0;
     if (*s == '+' || *s == '-')
         s++;
-    for (; *s; s++) {
-        if (*s == '.') {
-            frac = 0;
-            continue;
-        }
-        if (*s < '0' || *s > '9' || m >= ((uint64_t)1 << 53) / 10)
-            return 0;                     /* an exponent, or too many digits */
-        m = m * 10 + (uint64_t)(*s - '0');
-        frac += frac >= 0;
+    s = scene_cur_digits(s, &m, &digits, &fast);
+    if (*s == '.') {
+        s = scene_cur_digits(s + 1, &m, &frac, &fast);
+        digits += frac;
     }
-    if (frac > 22)
+    if (!digits)
         return 0;
-    *v = (double)m / p10[frac > 0 ? frac : 0];
-    if (neg)
-        *v = -*v;
-    return 1;
-#else                                     /* wider evaluation could round twice */
-    (void)s;
-    (void)v;
-    return 0;
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-')
+            s++;
+        if ((unsigned)(*s - '0') >= 10)
+            return 0;
+        while ((unsigned)(*s - '0') < 10)
+            s++;
+        fast = 0;
+    }
+    if (*s != '\0')
+        return 0;
+#if FLT_EVAL_METHOD == 0
+    if (fast && frac <= 22) {
+        *v = (double)m / p10[frac];
+        if (neg)
+            *v = -*v;
+        return 1;
+    }
 #endif
+    return 2;
 }
 
 /* Reads the next item as a number, without a magnitude check (a value
@@ -182,15 +191,18 @@ static int scene_cur_decimal(const char *s, double *v)
 static int scene_cur_value(scene_cur *c, double *v, const scene_lex_tok **at)
 {
     const scene_lex_tok *t = scene_cur_peek(c);
+    int r;
     *at = t;
     *v = 0;
     if (!t)
         return scene_cur_error(c, NULL, "missing number");
-    if (scene_cur_nonfinite(t))
-        return scene_cur_error(c, t, "%s is not a finite number", t->text);
-    if (!scene_cur_syntax(t->text))
+    r = scene_cur_scan(t->text, v);
+    if (r == 0) {                         /* NaN and Inf are never a number's syntax */
+        if (scene_cur_nonfinite(t))
+            return scene_cur_error(c, t, "%s is not a finite number", t->text);
         return scene_cur_error(c, t, "expected a number, found %s", t->text);
-    if (!scene_cur_decimal(t->text, v))
+    }
+    if (r == 2)
         *v = strtod(t->text, NULL);   /* syntax checked: always converts fully */
     c->pos++;
     return 0;
@@ -273,7 +285,7 @@ int scene_cur_name(scene_cur *c, char out[SCENE_NAME_MAX + 1], const scene_lex_t
     for (i = 0; i < t->len; i++) {
         if (!scene_cur_namechar(t->text[i]))
             break;
-        up[i] = (char)toupper((unsigned char)t->text[i]);
+        up[i] = (char)scene_cur_upper((unsigned char)t->text[i]);
     }
     up[i < t->len ? 0 : t->len] = '\0';
     if (i < t->len || !isalpha((unsigned char)t->text[0]))
