@@ -10,6 +10,7 @@
  * The language is documented in docs/scene-format.md. */
 #include "util/dmath.h"
 #include "scene/scene_parser.h"
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -754,14 +755,16 @@ static const scene_parse_stmt *const scene_parse_tables[] = {
     NULL
 };
 
-/* The entry for keyword kw in the NULL-terminated list of tables, or NULL. */
+/* The entry for keyword kw in the NULL-terminated list of tables, or NULL.
+ * Only keywords with kw's first letter are compared in full. */
 static const scene_parse_stmt *scene_parse_find(const scene_parse_stmt *const *tables,
                                                 const scene_lex_tok *kw)
 {
+    const char first = (char)toupper((unsigned char)kw->text[0]);
     size_t t, i;
     for (t = 0; tables[t]; t++)
         for (i = 0; tables[t][i].keyword; i++)
-            if (scene_cur_is(kw, tables[t][i].keyword))
+            if (tables[t][i].keyword[0] == first && scene_cur_is(kw, tables[t][i].keyword))
                 return &tables[t][i];
     return NULL;
 }

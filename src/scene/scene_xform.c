@@ -2,6 +2,7 @@
  * scene_xform.h). */
 #include "scene/scene_xform.h"
 #include "util/dmath.h"
+#include <ctype.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -95,11 +96,29 @@ int scene_xform_ok(const double m[16])
     return norms > 0 && fabs(det) > 1e-12 * norms;
 }
 
+enum { SCENE_XFORM_TRANSLATE, SCENE_XFORM_ROTATE, SCENE_XFORM_SCALE, SCENE_XFORM_MATRIX };
+
+/* The transform item t starts (SCENE_XFORM_...), or -1: chosen by the
+ * first letter, then compared in full. */
+static int scene_xform_kind(const scene_lex_tok *t)
+{
+    static const char *const word[] = { "TRANSLATE", "ROTATE", "SCALE", "MATRIX" };
+    int k;
+    if (!t)
+        return -1;
+    switch (toupper((unsigned char)t->text[0])) {
+    case 'T': k = SCENE_XFORM_TRANSLATE; break;
+    case 'R': k = SCENE_XFORM_ROTATE; break;
+    case 'S': k = SCENE_XFORM_SCALE; break;
+    case 'M': k = SCENE_XFORM_MATRIX; break;
+    default: return -1;
+    }
+    return scene_cur_is(t, word[k]) ? k : -1;
+}
+
 int scene_xform_starts(const scene_cur *c)
 {
-    const scene_lex_tok *t = scene_cur_peek(c);
-    return scene_cur_is(t, "TRANSLATE") || scene_cur_is(t, "ROTATE") ||
-           scene_cur_is(t, "SCALE") || scene_cur_is(t, "MATRIX");
+    return scene_xform_kind(scene_cur_peek(c)) >= 0;
 }
 
 /* Rotation by deg degrees about the unit axis u (right-hand rule). */
@@ -132,14 +151,14 @@ int scene_xform_parse(scene_cur *c, double m[16])
     const scene_lex_tok *kw = scene_cur_peek(c);
     const scene_lex_tok *t;
     double t4[16], v[12];
-    int i, rc = 0;
+    int i, rc = 0, kind = scene_xform_kind(kw);
     scene_xform_identity(t4);
     c->pos++;
-    if (scene_cur_is(kw, "TRANSLATE")) {
+    if (kind == SCENE_XFORM_TRANSLATE) {
         if (scene_cur_numbers(c, v, 3))
             return DIAG_INPUT;
         t4[3] = v[0]; t4[7] = v[1]; t4[11] = v[2];
-    } else if (scene_cur_is(kw, "ROTATE")) {
+    } else if (kind == SCENE_XFORM_ROTATE) {
         double u[3] = { 0, 0, 0 }, len;
         t = scene_cur_peek(c);
         if (scene_cur_accept(c, "X")) u[0] = 1;
@@ -160,7 +179,7 @@ int scene_xform_parse(scene_cur *c, double m[16])
         if (scene_cur_number(c, &v[0], NULL))
             return DIAG_INPUT;
         scene_xform_rotation(t4, u, v[0], !scene_cur_is(t, "AXIS"));
-    } else if (scene_cur_is(kw, "SCALE")) {
+    } else if (kind == SCENE_XFORM_SCALE) {
         int n = 1;
         const scene_lex_tok *at[3];
         if (scene_cur_number(c, &v[0], &at[0]))
