@@ -67,42 +67,66 @@ static int scene_lex_col72(scene_lex *lx, const char *rec, size_t n, diag *err)
                    item, (int)(72 - start), rec + start);
 }
 
+/* 1 for a character that is part of an item: printable ASCII but blank. */
+static int scene_lex_item(char c)
+{
+    return (unsigned char)c - 0x21u < 0x5eu;
+}
+
+/* The error for the first character of rec[from..n) outside printable
+ * ASCII and tab, if there is one (DIAG_INPUT); 0 otherwise. */
+static int scene_lex_bad(scene_lex *lx, const char *rec, size_t from, size_t n, diag *err)
+{
+    size_t i;
+    for (i = from; i < n; i++)
+        if (!scene_lex_item(rec[i]) && !scene_lex_blank(rec[i]))
+            return diag_at(err, DIAG_INPUT, lx->src->name, lx->recno, (long)i + 1,
+                           "invalid character X'%02X'", (unsigned char)rec[i]);
+    return 0;
+}
+
 /* Appends the items of one card (already cut to its significant columns)
  * to st. Sets *cont when the card's last item is a lone `-`, which is then
- * not kept. Returns 0 or DIAG_INPUT. */
+ * not kept. Returns 0 or DIAG_INPUT, with st as it was. One pass finds the
+ * items and the first character outside printable ASCII and tab, which is
+ * reported before anything else the card holds. */
 static int scene_lex_card(scene_lex *lx, const char *rec, size_t n,
                           scene_lex_stmt *st, int *cont, diag *err)
 {
+    char card[SCENE_LEX_COLUMNS + 1];     /* ends in NUL, which no item holds */
     size_t i = 0, first = st->ntok;
     *cont = 0;
-    for (i = 0; i < n; i++) {
-        unsigned char c = (unsigned char)rec[i];
-        if (c != '\t' && (c < 0x20 || c > 0x7e))
-            return diag_at(err, DIAG_INPUT, lx->src->name, lx->recno, (long)i + 1,
-                           "invalid character X'%02X'", c);
-    }
-    i = 0;
-    while (i < n) {
+    memcpy(card, rec, n);
+    card[n] = '\0';
+    for (;;) {
         size_t start;
         scene_lex_tok *t;
-        while (i < n && scene_lex_blank(rec[i]))
+        while (scene_lex_blank(card[i]))
             i++;
-        if (i >= n)
-            break;
         start = i;
-        while (i < n && !scene_lex_blank(rec[i]))
+        while (scene_lex_item(card[i]))
             i++;
-        if (st->ntok >= SCENE_LEX_MAX_ITEMS)
+        if (i < n && !scene_lex_blank(card[i])) {
+            st->ntok = first;
+            return scene_lex_bad(lx, card, i, n, err);
+        }
+        if (i == start)
+            break;                        /* the end of the card */
+        if (st->ntok >= SCENE_LEX_MAX_ITEMS) {
+            st->ntok = first;
+            if (scene_lex_bad(lx, card, i, n, err))
+                return DIAG_INPUT;
             return diag_at(err, DIAG_INPUT, lx->src->name, lx->recno, (long)start + 1,
                            "statement has more than %d items", SCENE_LEX_MAX_ITEMS);
+        }
         t = &st->tok[st->ntok++];
         t->line = lx->recno;
         t->col = (long)start + 1;
         t->len = i - start;
-        memcpy(t->text, rec + start, t->len);
+        memcpy(t->text, card + start, t->len);
         t->text[t->len] = '\0';
     }
-    if (st->ntok > first && strcmp(st->tok[st->ntok - 1].text, "-") == 0) {
+    if (st->ntok > first && st->tok[st->ntok - 1].len == 1 && st->tok[st->ntok - 1].text[0] == '-') {
         *cont = 1;
         st->ntok--;
     }
