@@ -1,15 +1,32 @@
 /* cms_recs — host forms of CMS files to records and back (see cms_recs.h). */
 #include "vm_cms_shim/cms_recs.h"
 #include "util/mem.h"
+#include <stdint.h>
 #include <string.h>
 #include <strings.h>
+
+/* Bytes below X'80' at the start of s[0..n), eight at a time while they
+ * last: decks are nearly all ASCII. */
+static size_t cms_recs_ascii_run(const unsigned char *s, size_t n)
+{
+    size_t i = 0;
+    uint64_t w;
+    for (; n - i >= sizeof w; i += sizeof w) {
+        memcpy(&w, s + i, sizeof w);
+        if (w & UINT64_C(0x8080808080808080))
+            break;
+    }
+    while (i < n && s[i] < 0x80)
+        i++;
+    return i;
+}
 
 /* Characters (UTF-8 code points) in n bytes of host text: the column count
  * of a record, which is what LRECL limits. */
 static size_t cms_recs_text_cols(const char *s, size_t n)
 {
-    size_t i, c = 0;
-    for (i = 0; i < n; i++)
+    size_t i = cms_recs_ascii_run((const unsigned char *)s, n), c = i;
+    for (; i < n; i++)
         c += ((unsigned char)s[i] & 0xC0) != 0x80;
     return c;
 }
@@ -238,10 +255,9 @@ static int cms_recs_decode_text(const unsigned char *buf, size_t n, cms_form for
 static int cms_recs_utf8_valid(const unsigned char *b, size_t n)
 {
     size_t i = 0;
-    while (i < n) {
+    while ((i += cms_recs_ascii_run(b + i, n - i)) < n) {
         unsigned c = b[i];
-        size_t k = c < 0x80 ? 0 : (c & 0xE0) == 0xC0 ? 1 : (c & 0xF0) == 0xE0 ? 2
-                 : (c & 0xF8) == 0xF0 ? 3 : 4;
+        size_t k = (c & 0xE0) == 0xC0 ? 1 : (c & 0xF0) == 0xE0 ? 2 : (c & 0xF8) == 0xF0 ? 3 : 4;
         if (k == 4 || (k == 1 && c < 0xC2) || n - i - 1 < k)
             return 0;
         for (i++; k; k--, i++)
