@@ -11,7 +11,8 @@
 #include <string.h>
 
 /* Words of the language that cannot be names, so that an operand list such
- * as "A TRANSLATE 1 0 0 B" has exactly one reading. Sorted for bsearch. */
+ * as "A TRANSLATE 1 0 0 B" has exactly one reading. Sorted (strcmp order)
+ * for the binary search. */
 static const char *const scene_cur_words[] = {
     "AMBIENT", "AMPLITUDE", "ATTR", "AXIS", "BACKGROUND", "BLINN", "BLOCK",
     "BRICK", "BSPLINE", "BUMP", "BUMPS", "CIRCLE", "CODE", "COLOR", "CONE",
@@ -28,16 +29,25 @@ static const char *const scene_cur_words[] = {
     "TRANSPARENT", "TRIANGLE", "UNION", "UP", "WAVES", "WIDTH"
 };
 
-static int scene_cur_cmp(const void *key, const void *elem)
-{
-    return strcmp((const char *)key, *(const char *const *)elem);
-}
-
+/* A binary search whose probes compare first letters before calling
+ * strcmp: most probes of a name differ from the word there at once. */
 int scene_cur_reserved(const char *word)
 {
-    return bsearch(word, scene_cur_words,
-                   sizeof scene_cur_words / sizeof scene_cur_words[0],
-                   sizeof scene_cur_words[0], scene_cur_cmp) != NULL;
+    size_t lo = 0, hi = sizeof scene_cur_words / sizeof scene_cur_words[0];
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        const char *w = scene_cur_words[mid];
+        int d = (unsigned char)word[0] - (unsigned char)w[0];
+        if (d == 0)
+            d = strcmp(word, w);
+        if (d == 0)
+            return 1;
+        if (d < 0)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return 0;
 }
 
 void scene_cur_init(scene_cur *c, const scene_lex_stmt *st, const char *file,

@@ -791,10 +791,17 @@ static const scene_parse_stmt *scene_parse_lookup(scene_parser *p, const scene_l
 {
     const scene_parse_block *b = &p->block;
     const scene_parse_stmt *e;
+    /* the tables searched depend on the body only, and a keyword that is
+     * the last entry's is found there first again */
+    if (p->last && p->last_body == b->body && scene_cur_is(kw, p->last->keyword))
+        return p->last;
     if (b->body) {
         const scene_parse_stmt *const body[] = { b->body, NULL };
-        if ((e = scene_parse_find(body, kw)) != NULL)
+        if ((e = scene_parse_find(body, kw)) != NULL) {
+            p->last = e;
+            p->last_body = b->body;
             return e;
+        }
         if ((e = scene_parse_find(scene_parse_tables, kw)) != NULL)
             diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
                     "%s: not allowed inside %s (END missing?)", e->canon, b->title);
@@ -802,8 +809,11 @@ static const scene_parse_stmt *scene_parse_lookup(scene_parser *p, const scene_l
             diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
                     "%s: not allowed in %s, a %s block", e->canon, b->title, b->kind);
     } else {
-        if ((e = scene_parse_find(scene_parse_tables, kw)) != NULL)
+        if ((e = scene_parse_find(scene_parse_tables, kw)) != NULL) {
+            p->last = e;
+            p->last_body = NULL;
             return e;
+        }
         if ((e = scene_parse_find(scene_pds_bodies, kw)) != NULL)
             diag_at(p->err, DIAG_INPUT, p->file, kw->line, kw->col,
                     "%s: allowed only inside a PDS block", e->canon);

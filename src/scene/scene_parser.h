@@ -95,6 +95,10 @@ struct scene_parser {
     size_t cap_maps, cap_textures, cap_bumps;
     scene_loc view_loc[SCENE_PARSE_VIEW_COUNT];  /* each view statement; line 0 = none */
     scene_parse_block block;
+    /* The entry the last statement found, and the body it was looked up
+     * in (NULL: the statement tables); a deck repeats its keywords. */
+    const scene_parse_stmt *last;
+    const scene_parse_stmt *last_body;
 };
 
 /* Statement tables of the statement files, consulted by scene_parse.c. */
