@@ -108,10 +108,12 @@ int scene_parse_tail(scene_parser *p, scene_cur *c, double m[16], int *attr)
 {
     for (;;) {
         const scene_lex_tok *t = scene_cur_peek(c);
-        if (scene_xform_starts(c)) {
-            if (scene_xform_parse(c, m))
-                return DIAG_INPUT;
-        } else if (scene_cur_is(t, "ATTR")) {
+        int r = scene_xform_parse(c, m);
+        if (r > 0)
+            return DIAG_INPUT;
+        if (r == 0)
+            continue;
+        if (scene_cur_is(t, "ATTR")) {
             if (*attr >= 0)
                 return scene_cur_error(c, t, "ATTR given twice");
             c->pos++;

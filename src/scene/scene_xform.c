@@ -76,12 +76,18 @@ void scene_xform_mul(double out[16], const double a[16], const double b[16])
     out[15] = 1;
 }
 
+/* 1 if x is finite and of magnitude at most SCENE_XFORM_MAX_ABS. */
+static int scene_xform_in_range(double x)
+{
+    return fabs(x) <= SCENE_XFORM_MAX_ABS;
+}
+
 int scene_xform_ok(const double m[16])
 {
     double det, norms = 1;
     int i;
     for (i = 0; i < 16; i++)
-        if (!(fabs(m[i]) <= SCENE_XFORM_MAX_ABS))
+        if (!scene_xform_in_range(m[i]))
             return 0;
     for (i = 0; i < 3; i++) {
         double n = sqrt(m[i * 4] * m[i * 4] + m[i * 4 + 1] * m[i * 4 + 1] +
@@ -116,11 +122,6 @@ static int scene_xform_kind(const scene_lex_tok *t)
     return scene_cur_is(t, word[k]) ? k : -1;
 }
 
-int scene_xform_starts(const scene_cur *c)
-{
-    return scene_xform_kind(scene_cur_peek(c)) >= 0;
-}
-
 /* Rotation by deg degrees about the unit axis u (right-hand rule). */
 static void scene_xform_rotation(double m[16], const double u[3], double deg,
                                  int principal)
@@ -152,6 +153,8 @@ int scene_xform_parse(scene_cur *c, double m[16])
     const scene_lex_tok *t;
     double t4[16], v[12];
     int i, rc = 0, kind = scene_xform_kind(kw);
+    if (kind < 0)
+        return -1;
     scene_xform_identity(t4);
     c->pos++;
     if (kind == SCENE_XFORM_TRANSLATE) {
@@ -204,7 +207,13 @@ int scene_xform_parse(scene_cur *c, double m[16])
             return scene_cur_error(c, kw, "MATRIX is singular");
     }
     scene_xform_mul(t4, t4, m);
-    if (!scene_xform_ok(t4))
+    /* m is the identity or passed this test, and holds no -0: a
+     * translation leaves all but its column 3 as they were, so only that
+     * column can fail */
+    if (kind == SCENE_XFORM_TRANSLATE
+            ? !(scene_xform_in_range(t4[3]) && scene_xform_in_range(t4[7]) &&
+                scene_xform_in_range(t4[11]))
+            : !scene_xform_ok(t4))
         rc = scene_cur_error(c, kw, "transforms give a degenerate or out-of-range matrix");
     else
         memcpy(m, t4, sizeof t4);

@@ -25,12 +25,13 @@ int scene_xform_is_identity(const double m[16]);
  * (|det| above 1e-12 times the product of its row lengths). */
 int scene_xform_ok(const double m[16]);
 
-/* 1 if the next item starts a transform (TRANSLATE, ROTATE, SCALE, MATRIX). */
-int scene_xform_starts(const scene_cur *c);
 /* Parses one transform item at the cursor and composes it after m
- * (m = T * m). Errors (DIAG_INPUT, at the offending item): missing or bad
- * numbers, "ROTATE: expected X, Y, Z or AXIS, found W", "ROTATE: axis must
- * not be zero", "SCALE factor must not be zero", "MATRIX is singular",
- * "transforms give a degenerate or out-of-range matrix". */
+ * (m = T * m); m is the identity or what earlier calls left in it.
+ * Returns 0, -1 when the next item starts no transform (TRANSLATE, ROTATE,
+ * SCALE, MATRIX; nothing is consumed), or DIAG_INPUT for errors at the
+ * offending item: missing or bad numbers, "ROTATE: expected X, Y, Z or
+ * AXIS, found W", "ROTATE: axis must not be zero", "SCALE factor must not
+ * be zero", "MATRIX is singular", "transforms give a degenerate or
+ * out-of-range matrix". */
 int scene_xform_parse(scene_cur *c, double m[16]);
 #endif
