@@ -622,10 +622,12 @@ static int scene_parse_diff(scene_parser *p, scene_cur *c) { return scene_parse_
  * FACE bindings, and the definition remembers the first OBJECT that placed
  * it. m and every transform of the parser come from scene_xform_identity
  * or scene_xform_mul, so a product with a transform that is the identity
- * would be m again and is not formed. Recursion depth is bounded by
+ * would be m again and is not formed; m_ok is 1 when m itself passed
+ * scene_xform_ok (an OBJECT's transforms did), which a primitive placed by
+ * m alone need not ask again. Recursion depth is bounded by
  * SCENE_PARSE_MAX_NEST (checked at definition). */
-static int scene_parse_expand(scene_parser *p, int di, const double m[16], int attr, long rec,
-                              const scene_parse_def **bad)
+static int scene_parse_expand(scene_parser *p, int di, const double m[16], int m_ok, int attr,
+                              long rec, const scene_parse_def **bad)
 {
     scene_parse_def *d = &p->defs[di];
     scene *s = p->s;
@@ -634,11 +636,13 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int a
     int left = -1;
     if (d->op == CSG_LEAF) {
         scene_prim *pr = &s->prims[s->nprims];
-        if (scene_xform_is_identity(d->m))
+        if (scene_xform_is_identity(d->m)) {
             memcpy(pr->world_from_object, m, sizeof pr->world_from_object);
-        else
+        } else {
             scene_xform_mul(pr->world_from_object, m, d->m);
-        if (!scene_xform_ok(pr->world_from_object)) {
+            m_ok = 0;
+        }
+        if (!m_ok && !scene_xform_ok(pr->world_from_object)) {
             *bad = d;
             return -1;
         }
@@ -660,12 +664,13 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int a
         const scene_parse_use *u = &p->operands[d->first + i];
         const double *um = m;
         double prod[16];
-        int r;
+        int r, um_ok = m_ok;
         if (!scene_xform_is_identity(u->m)) {
             scene_xform_mul(prod, m, u->m);
             um = prod;
+            um_ok = 0;
         }
-        r = scene_parse_expand(p, u->def, um, u->attr >= 0 ? u->attr : attr, rec, bad);
+        r = scene_parse_expand(p, u->def, um, um_ok, u->attr >= 0 ? u->attr : attr, rec, bad);
         if (r < 0)
             return -1;
         if (left < 0) {
@@ -708,7 +713,7 @@ static int scene_parse_object(scene_parser *p, scene_cur *c)
                  sizeof *s->nodes) ||
         mem_grow((void **)&s->roots, &p->cap_roots, s->nroots + 1, sizeof *s->roots))
         return scene_parse_oom(p, at);
-    root = scene_parse_expand(p, u.def, u.m, u.attr >= 0 ? u.attr : 0, c->st->tok[0].line, &bad);
+    root = scene_parse_expand(p, u.def, u.m, 1, u.attr >= 0 ? u.attr : 0, c->st->tok[0].line, &bad);
     if (root < 0) {
         s->nprims = np0;
         s->nnodes = nn0;
