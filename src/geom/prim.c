@@ -364,17 +364,17 @@ static int prim_skey_alike(const prim_skey *a, const prim_skey *b)
  * pairs whose keys lie within the window, not n^2 / 2 comparisons. */
 static int prim_share_solids(prim *prims, size_t n, diag *err)
 {
-    prim_skey *sk;
+    prim_skey *sk, *by;
     uint64_t *sort;
-    size_t m = 0, i, p, q;
+    size_t m = 0, i, p, q, *ord = NULL;
     long *match;
     for (i = 0; i < n; i++)
         m += prims[i].bounded && prims[i].kind != PRIM_BLOCK;
     if (m < 2)
         return 0;
-    sk = mem_calloc(m, sizeof *sk);
-    sort = mem_calloc(m, sizeof *sort);
-    match = mem_calloc(n, sizeof *match);
+    sk = mem_alloc(m * sizeof *sk);     /* every entry written below */
+    sort = mem_alloc(m * sizeof *sort);
+    match = mem_alloc(n * sizeof *match);
     m = 0;
     for (i = 0; sk && sort && match && i < n; i++) {
         const prim *a = &prims[i];
@@ -397,13 +397,19 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
         sort[m] = radix_key_d(key);
         sk[m++].i = i;
     }
-    if (!sk || !sort || !match || radix_sort(sk, m, sizeof *sk, sort)) {   /* ties in index order */
+    by = sk && sort && match && (ord = radix_order(sort, m)) ? mem_alloc(m * sizeof *by) : NULL;
+    mem_free(sort);
+    if (!by) {
         mem_free(sk);
-        mem_free(sort);
+        mem_free(ord);
         mem_free(match);
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
     }
-    mem_free(sort);
+    for (p = 0; p < m; p++)             /* by key, ties in index order */
+        by[p] = sk[ord[p]];
+    mem_free(ord);
+    mem_free(sk);
+    sk = by;
     for (p = 0; p < m; p++) {
         size_t bi = sk[p].i;
         for (q = p; q-- > 0 && sk[p].key - sk[q].key <= 2 * sk[p].win;)
@@ -434,14 +440,14 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
 
 int NS(prim_share)(prim *prims, size_t n, diag *err)
 {
-    prim_pref *pr;
+    prim_pref *pr, *by;
     uint64_t *sort;
-    size_t np = 0, i, j;
+    size_t np = 0, i, j, *ord = NULL;
     int k;
     for (i = 0; i < n; i++)
         np += (size_t)prims[i].nplanes;
-    pr = mem_calloc(np ? np : 1, sizeof *pr);
-    sort = mem_calloc(np ? np : 1, sizeof *sort);
+    pr = mem_alloc((np ? np : 1) * sizeof *pr);         /* every entry written below */
+    sort = mem_alloc((np ? np : 1) * sizeof *sort);
     np = 0;
     for (i = 0; pr && sort && i < n; i++)
         for (k = 0; k < prims[i].nplanes; k++) {
@@ -455,12 +461,18 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
      * takes the nearest earlier plane of another primitive that it equals
      * within the tolerance, and that one already holds its group's single
      * representation */
-    if (!pr || !sort || radix_sort(pr, np, sizeof *pr, sort)) {
+    by = pr && sort && (ord = radix_order(sort, np)) ? mem_alloc((np ? np : 1) * sizeof *by) : NULL;
+    mem_free(sort);
+    if (!by) {
         mem_free(pr);
-        mem_free(sort);
+        mem_free(ord);
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
     }
-    mem_free(sort);
+    for (i = 0; i < np; i++)
+        by[i] = pr[ord[i]];
+    mem_free(ord);
+    mem_free(pr);
+    pr = by;
     for (i = 0; i < np; i++) {
         double *q = pr[i].pl, w[4];
         for (j = i; j-- > 0 && pr[i].key - pr[j].key <= PRIM_SAME_TOL;) {

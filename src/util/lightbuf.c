@@ -97,7 +97,8 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     double ext[6][4];
     size_t i, j, nr = 0, total = 0, cells = 0;
     uint64_t *key;
-    int *order, *first, (*cell)[4] = NULL, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
+    size_t *order = NULL;
+    int *first, (*cell)[4] = NULL, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
     memset(lb, 0, sizeof *lb);
     memcpy(lb->at, at, sizeof lb->at);
     lb->grow = grow;
@@ -106,8 +107,7 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     rc = mem_alloc((n ? n : 1) * 6 * sizeof *rc);
     first = mem_alloc((n + 1) * sizeof *first);
     key = mem_alloc((n ? n : 1) * sizeof *key);
-    order = mem_alloc((n ? n : 1) * sizeof *order);
-    if (!rc || !first || !key || !order) {
+    if (!rc || !first || !key) {
         mem_free(key);
         goto done;
     }
@@ -125,7 +125,6 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
             d2 += g * g;
         }
         key[i] = radix_key_d(d2);
-        order[i] = (int)i;
         first[i] = (int)nr;
         if (lightbuf_is_near(lb, lo[i], hi[i])) {
             rc[nr++].f = -1;
@@ -154,7 +153,7 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     first[n] = (int)nr;
     /* the boxes nearest the light first in every cell: a camera ray's
      * far end then shrinks before the farther ones are tested */
-    if (radix_sort(order, n, sizeof *order, key)) {
+    if (!(order = radix_order(key, n))) {
         mem_free(key);
         goto done;
     }
@@ -199,9 +198,9 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     for (j = 0, k = 0; j < n; j++) {
         for (i = (size_t)first[order[j]]; i < (size_t)first[order[j] + 1]; i++) {
             if (rc[i].f < 0)
-                lb->near[k++] = order[j];
+                lb->near[k++] = (int)order[j];
             else
-                lightbuf_cover(lb, rc[i].f, cell[i], order[j], lb->item);
+                lightbuf_cover(lb, rc[i].f, cell[i], (int)order[j], lb->item);
         }
     }
     /* placing advanced each start to the next cell's: shift back */

@@ -9,30 +9,28 @@
 #define RADIX_BUCKETS ((size_t)1 << RADIX_BITS)
 #define RADIX_PASSES ((64 + RADIX_BITS - 1) / RADIX_BITS)
 
-int radix_sort(void *base, size_t n, size_t size, const uint64_t *keys)
+size_t *radix_order(const uint64_t *keys, size_t n)
 {
-    size_t *count = mem_calloc(RADIX_PASSES * RADIX_BUCKETS, sizeof *count), *ord, *tmp, i;
-    unsigned char *copy;
+    size_t *count = mem_calloc(RADIX_PASSES * RADIX_BUCKETS, sizeof *count), *ord, *from, *to, i;
     int b;
-    ord = mem_alloc(2 * n * sizeof *ord);
-    copy = mem_alloc(n * size);
-    if (!count || !ord || !copy) {
+    ord = mem_alloc((n ? 2 * n : 1) * sizeof *ord);
+    if (!count || !ord) {
         mem_free(count);
         mem_free(ord);
-        mem_free(copy);
-        return -1;
+        return NULL;
     }
-    tmp = ord + n;
     for (i = 0; i < n; i++) {
         uint64_t k = keys[i];
-        ord[i] = i;
         for (b = 0; b < RADIX_PASSES; b++)
             count[b * RADIX_BUCKETS + ((k >> RADIX_BITS * b) & (RADIX_BUCKETS - 1))]++;
     }
-    /* one pass per digit, least significant first; a digit all keys share
-     * changes nothing and is skipped */
+    /* one pass per digit, least significant first, from + n to ord and
+     * back; a digit all keys share changes nothing and is skipped. Before
+     * the first pass the order is the identity, read without an array. */
+    from = NULL;
+    to = ord;
     for (b = 0; b < RADIX_PASSES; b++) {
-        size_t *c = count + b * RADIX_BUCKETS, sum = 0, d, *swap;
+        size_t *c = count + b * RADIX_BUCKETS, sum = 0, d;
         if (n == 0 || c[(keys[0] >> RADIX_BITS * b) & (RADIX_BUCKETS - 1)] == n)
             continue;
         for (d = 0; d < RADIX_BUCKETS; d++) {
@@ -40,17 +38,20 @@ int radix_sort(void *base, size_t n, size_t size, const uint64_t *keys)
             c[d] = sum;
             sum += t;
         }
-        for (i = 0; i < n; i++)
-            tmp[c[(keys[ord[i]] >> RADIX_BITS * b) & (RADIX_BUCKETS - 1)]++] = ord[i];
-        swap = ord;
-        ord = tmp;
-        tmp = swap;
+        if (from)
+            for (i = 0; i < n; i++)
+                to[c[(keys[from[i]] >> RADIX_BITS * b) & (RADIX_BUCKETS - 1)]++] = from[i];
+        else
+            for (i = 0; i < n; i++)
+                to[c[(keys[i] >> RADIX_BITS * b) & (RADIX_BUCKETS - 1)]++] = i;
+        from = to;
+        to = to == ord ? ord + n : ord;
     }
-    memcpy(copy, base, n * size);
-    for (i = 0; i < n; i++)
-        memcpy((unsigned char *)base + i * size, copy + ord[i] * size, size);
+    if (!from)
+        for (i = 0; i < n; i++)
+            ord[i] = i;
+    else if (from != ord)
+        memcpy(ord, from, n * sizeof *ord);
     mem_free(count);
-    mem_free(ord < tmp ? ord : tmp);
-    mem_free(copy);
-    return 0;
+    return ord;
 }

@@ -18,7 +18,9 @@ static inline uint64_t radix_key_d(double x)
     return u >> 63 ? ~u : u | (uint64_t)1 << 63;
 }
 
-/* Sorts the n elements of size bytes at base by keys[i], the key of element
- * i, stably. 0, or -1 when memory runs out (then base is unchanged). */
-int radix_sort(void *base, size_t n, size_t size, const uint64_t *keys);
+/* The stable order of the n keys: element i of the result is the index
+ * of the i-th smallest key, equal keys in index order. The caller sorts its
+ * own elements by it, copying each whole with its type's size known, and
+ * frees it with mem_free; NULL when memory runs out. */
+size_t *radix_order(const uint64_t *keys, size_t n);
 #endif

@@ -11,6 +11,7 @@
 #include "util/bvh.h"
 #include "util/lightbuf.h"
 #include "util/radix.h"
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -387,28 +388,31 @@ static int util_rec_cmp(const void *a, const void *b)
     return x->k - y->k;
 }
 
-/* radix_sort gives exactly qsort's order under util_rec_cmp: keys drawn
+/* radix_order gives exactly qsort's order under util_rec_cmp: keys drawn
  * from a small pool (many ties; -0 beside +0, negatives, subnormals,
- * infinities, neighbours one ulp apart) and from all over the doubles, for
- * sizes 0 to 5000; with all keys equal nothing moves. */
-static void test_util_radix_sort_matches_comparator(void **state)
+ * infinities, neighbours one ulp apart), from all over the doubles (six
+ * passes) and from 1 + j ulp, j < 2048 (one pass), for sizes 0 to 5000;
+ * with all keys equal (no pass) it is the identity. */
+static void test_util_radix_order_matches_comparator(void **state)
 {
     static const double pool[] = {0.0, -0.0, 1.0, -1.0, 0.5, 1e-310, -1e-310, 3.0e300,
                                   -HUGE_VAL, HUGE_VAL, 1.0000000000000002, 0.9999999999999999,
                                   2.5, -2.5, 1e-9, 1024.0};
     static const size_t sizes[] = {0, 1, 2, 3, 255, 2048, 5000};
-    size_t t, i;
+    size_t t, i, *ord;
     unsigned seed = 12345;
     (void)state;
-    for (t = 0; t < 2 * sizeof sizes / sizeof sizes[0]; t++) {
-        size_t n = sizes[t / 2];
+    for (t = 0; t < 3 * sizeof sizes / sizeof sizes[0]; t++) {
+        size_t n = sizes[t / 3];
         util_rec *a = mem_alloc(n * sizeof *a), *b = mem_alloc(n * sizeof *b);
         uint64_t *key = mem_alloc(n * sizeof *key);
         assert_true(a && b && key);
         for (i = 0; i < n; i++) {
             seed = seed * 1103515245u + 12345u;
-            if (t % 2 == 0) {
+            if (t % 3 == 0) {
                 a[i].key = pool[(seed >> 16) % (sizeof pool / sizeof pool[0])];
+            } else if (t % 3 == 2) {
+                a[i].key = 1 + (double)(seed >> 21) * DBL_EPSILON;
             } else {
                 uint64_t u = (uint64_t)seed << 32 ^ (uint64_t)(seed * 2654435761u) << 7;
                 memcpy(&a[i].key, &u, sizeof u);
@@ -419,31 +423,32 @@ static void test_util_radix_sort_matches_comparator(void **state)
             a[i].k = (int)(i % 6);
             key[i] = radix_key_d(a[i].key);
         }
-        memcpy(b, a, n * sizeof *a);
-        qsort(a, n, sizeof *a, util_rec_cmp);
-        assert_int_equal(radix_sort(b, n, sizeof *b, key), 0);
-        assert_memory_equal(a, b, n * sizeof *a);
+        qsort(memcpy(b, a, n * sizeof *a), n, sizeof *b, util_rec_cmp);
+        ord = radix_order(key, n);
+        assert_non_null(ord);
+        for (i = 0; i < n; i++)
+            assert_memory_equal(&a[ord[i]], &b[i], sizeof *a);
+        mem_free(ord);
         mem_free(a);
         mem_free(b);
         mem_free(key);
     }
     {
-        util_rec r[300];
         uint64_t k[300];
-        for (i = 0; i < 300; i++) {
-            r[i].key = 2;
-            r[i].prim = (int)i;
-            r[i].k = 0;
-            k[i] = radix_key_d(r[i].key);
-        }
-        assert_int_equal(radix_sort(r, 300, sizeof r[0], k), 0);
         for (i = 0; i < 300; i++)
-            assert_int_equal(r[i].prim, (int)i);
-        mem_fail_after(0);                        /* out of memory: untouched, -1 */
+            k[i] = radix_key_d(2);
+        ord = radix_order(k, 300);
+        assert_non_null(ord);
+        for (i = 0; i < 300; i++)
+            assert_int_equal(ord[i], i);
+        mem_free(ord);
         k[0] = radix_key_d(3);
-        assert_int_equal(radix_sort(r, 300, sizeof r[0], k), -1);
-        mem_fail_after(-1);
-        assert_int_equal(r[0].prim, 0);
+        for (t = 0; t < 2; t++) {                 /* out of memory at either allocation */
+            mem_fail_after((int)t);
+            ord = radix_order(k, 300);
+            mem_fail_after(-1);
+            assert_null(ord);
+        }
     }
 }
 
@@ -490,7 +495,7 @@ int main(void)
         cmocka_unit_test(test_util_diag_first_error_and_forms),
         cmocka_unit_test(test_util_bvh_covers_every_item_once),
         cmocka_unit_test(test_util_lightbuf_lists_every_box_a_ray_meets),
-        cmocka_unit_test(test_util_radix_sort_matches_comparator),
+        cmocka_unit_test(test_util_radix_order_matches_comparator),
         cmocka_unit_test(test_util_frobenius_bounds_spectral_norm),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
