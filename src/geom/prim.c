@@ -37,15 +37,32 @@ static int prim_dot_code(const prim *p, int i)
     return PRIM_DOT_FULL;
 }
 
-/* Rounds plane i of p from its double form to num; then sets how the clip
- * forms its dot products and the next plane's, which may refer to it. */
+/* Rounds plane i of p from its double form to num. */
+static void prim_round_nd(prim *p, int i)
+{
+    p->pl[i].n = vec3_from_d(p->pl_d[i]);
+    p->pl[i].d = num_from_d(p->pl_d[i][3]);
+}
+
+/* Rounds plane i of p again (prim_share replaced it); then sets how the
+ * clip forms its dot products and the next plane's, which may refer to it. */
 static void prim_round_plane(prim *p, int i)
 {
     int k;
-    p->pl[i].n = vec3_from_d(p->pl_d[i]);
-    p->pl[i].d = num_from_d(p->pl_d[i][3]);
+    prim_round_nd(p, i);
     for (k = i; k <= i + 1 && k < p->nplanes; k++)
         p->fast = (p->fast & ~(7u << 3 * k)) | (unsigned)prim_dot_code(p, k) << 3 * k;
+}
+
+/* 1 when the n doubles at x are all finite: x * 0 is a zero for a finite
+ * x and NaN for an infinity or NaN, so one comparison tests the sum. */
+static int prim_finite(const double *x, int n)
+{
+    double z = 0;
+    int i;
+    for (i = 0; i < n; i++)
+        z += x[i] * 0;
+    return z == 0;
 }
 
 /* For prim->fast's top byte: PRIM_COLS | row i's column in bits 2i, 2i + 1
@@ -98,17 +115,14 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     const double *d = sp->dim, *m = sp->world_from_object;
 
     memset(&p, 0, sizeof p);
-    for (i = 0; i < 16; i++)
-        if (!isfinite(m[i]))
-            return prim_fail(err, file, sp, "transform is not finite");
-    for (i = 0; i < 3; i++)
-        if (!isfinite(d[i]))
-            return prim_fail(err, file, sp, "dimension is not finite");
+    if (!prim_finite(m, 16))
+        return prim_fail(err, file, sp, "transform is not finite");
+    if (!prim_finite(d, 3))
+        return prim_fail(err, file, sp, "dimension is not finite");
     p.kind = sp->kind;
     p.pl = pl;
     p.pl_d = pl_d;
-    p.fr = fr;
-    memset(fr, 0, sizeof *fr);
+    p.fr = fr;                  /* every field written below on success */
     p.id = id;
     p.attr = sp->attr;
     p.bounded = 1;
@@ -214,10 +228,6 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     /* planar faces as world planes in double, rounded once (prim_share may
      * replace them by a coincident plane of another primitive) */
     p.nplanes = ncp;
-    /* prim_round_plane also forms the next plane's code from this one:
-     * until that plane is rounded in its turn, let it read zeros */
-    if (ncp)
-        memset(p.pl, 0, (size_t)ncp * sizeof *p.pl);
     for (i = 0; i < ncp; i++) {
         double n[3], pt[3], len;
         dmath_m3_tmul_v(p.fr->ainv_d, cp[i].n, n);
@@ -230,8 +240,11 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
         memcpy(p.pl_d[i], n, sizeof n);
         p.pl_d[i][3] = dmath_dot3(n, pt);
         p.pl[i].face = cp[i].face;
-        prim_round_plane(&p, i);
+        prim_round_nd(&p, i);
     }
+    /* each code once all the planes it may refer to are rounded */
+    for (i = 0; i < ncp; i++)
+        p.fast |= (unsigned)prim_dot_code(&p, i) << 3 * i;
     *out = p;
     return 0;
 }

@@ -274,6 +274,32 @@ static void test_prim_rejects_bad_dimensions(void **state)
     diag_format(&err, buf, sizeof buf);
     assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': transform is singular");
     scene_free(sc);
+    /* a half-space stays out of the scene's extent, so the primitive's own
+     * checks see a non-finite transform: any entry, before the dimensions */
+    sc = tt_parse("EYE 9 -9 7\nLOOKAT 0 0 0\nLIGHT 0 0 20\nHALFSPACE P\nOBJECT P\n");
+    assert_non_null(sc);
+    sc->prims[0].world_from_object[11] = -HUGE_VAL;
+    sc->prims[0].dim[2] = NAN;
+    diag_init(&err);
+    assert_int_equal(q16_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': transform is not finite");
+    sc->prims[0].world_from_object[11] = 0;
+    sc->prims[0].world_from_object[6] = NAN;
+    diag_init(&err);
+    assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': transform is not finite");
+    sc->prims[0].world_from_object[6] = 0;
+    diag_init(&err);
+    assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': dimension is not finite");
+    sc->prims[0].dim[2] = 0;
+    diag_init(&err);
+    assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), 0);
+    f64_probe_ops.free(cs);
+    scene_free(sc);
 }
 
 int main(void)
