@@ -390,15 +390,16 @@ static int util_rec_cmp(const void *a, const void *b)
 
 /* radix_order gives exactly qsort's order under util_rec_cmp: keys drawn
  * from a small pool (many ties; -0 beside +0, negatives, subnormals,
- * infinities, neighbours one ulp apart), from all over the doubles (six
- * passes) and from 1 + j ulp, j < 2048 (one pass), for sizes 0 to 5000;
- * with all keys equal (no pass) it is the identity. */
+ * infinities, neighbours one ulp apart), from all over the doubles (a
+ * pass per digit) and from 1 + j ulp, j < 2048 (one pass), for sizes 0 to
+ * 40,000 (the wide digits from 32,768); with all keys equal (no pass) it
+ * is the identity. */
 static void test_util_radix_order_matches_comparator(void **state)
 {
     static const double pool[] = {0.0, -0.0, 1.0, -1.0, 0.5, 1e-310, -1e-310, 3.0e300,
                                   -HUGE_VAL, HUGE_VAL, 1.0000000000000002, 0.9999999999999999,
                                   2.5, -2.5, 1e-9, 1024.0};
-    static const size_t sizes[] = {0, 1, 2, 3, 255, 2048, 5000};
+    static const size_t sizes[] = {0, 1, 2, 3, 255, 2048, 5000, 40000};
     size_t t, i, *ord;
     unsigned seed = 12345;
     (void)state;
