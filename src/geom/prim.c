@@ -19,7 +19,7 @@
 enum { PRIM_DOT_FULL, PRIM_DOT_FLIP, PRIM_DOT_X, PRIM_DOT_Y, PRIM_DOT_Z,
        PRIM_DOT_NX, PRIM_DOT_NY, PRIM_DOT_NZ };
 
-static int prim_dot_code(const prim *p, int i)
+static inline int prim_dot_code(const prim *p, int i)
 {
     const vec3 *a = &p->pl[i].n, *b;
     num z = NUM_ZERO, one = NUM_ONE, mone = num_neg(NUM_ONE);
