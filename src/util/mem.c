@@ -158,7 +158,7 @@ char *mem_strdup(const char *s)
     return d;
 }
 
-int mem_grow(void **p, size_t *cap, size_t need, size_t elem)
+int mem_grow_realloc(void **p, size_t *cap, size_t need, size_t elem)
 {
     size_t ncap = *cap ? *cap : 8;
     void *np;

@@ -17,8 +17,13 @@ char *mem_strdup(const char *s);
 /* Grows *p (an array of *cap elements of elem bytes) to hold at least need
  * elements (at least one, so that *p is allocated even for need 0), doubling;
  * returns 0 on success, -1 on overflow or failure (then *p
- * and *cap are unchanged). */
-int mem_grow(void **p, size_t *cap, size_t need, size_t elem);
+ * and *cap are unchanged). Inline, as most calls find the room there:
+ * appending one element at a time then costs a compare, not a call. */
+int mem_grow_realloc(void **p, size_t *cap, size_t need, size_t elem);
+static inline int mem_grow(void **p, size_t *cap, size_t need, size_t elem)
+{
+    return need && need <= *cap ? 0 : mem_grow_realloc(p, cap, need, elem);
+}
 
 /* Blocks of MEM_HUGE_MIN bytes or more are advised for transparent huge
  * pages where Linux offers them (mem.c says why). mem_huge_size gives the
