@@ -25,12 +25,14 @@ static void bvh_box_empty(bvh_box *b)
     }
 }
 
+/* Written as selections, not conditional stores: the compiler then emits
+ * min and max instructions (the same values for the finite boxes here). */
 static void bvh_box_grow(bvh_box *b, const double *lo, const double *hi)
 {
     int k;
     for (k = 0; k < 3; k++) {
-        if (lo[k] < b->lo[k]) b->lo[k] = lo[k];
-        if (hi[k] > b->hi[k]) b->hi[k] = hi[k];
+        b->lo[k] = lo[k] < b->lo[k] ? lo[k] : b->lo[k];
+        b->hi[k] = hi[k] > b->hi[k] ? hi[k] : b->hi[k];
     }
 }
 
@@ -53,8 +55,8 @@ static int bvh_split(bvh_ctx *x, int first, int count, int depth)
     for (i = first; i < first + count; i++)
         for (k = 0; k < 3; k++) {
             double c = x->cen[x->items[i]][k];
-            if (c < clo[k]) clo[k] = c;
-            if (c > chi[k]) chi[k] = c;
+            clo[k] = c < clo[k] ? c : clo[k];
+            chi[k] = c > chi[k] ? c : chi[k];
         }
     for (k = 1; k < 3; k++)
         if (chi[k] - clo[k] > chi[axis] - clo[axis])
