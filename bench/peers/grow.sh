@@ -10,7 +10,8 @@
 # minima, the runs a shared machine disturbed least. The scenes are written here, both from the one
 # list of placements. Usage: sh bench/peers/grow.sh [MAPRT [CPUTIME]]
 # sh bench/peers/grow.sh --deck N FILE writes the deck of the n x n grid
-# to FILE and does nothing else (for timing one size alone, tools/ab.sh).
+# to FILE and does nothing else (for timing one size alone, tools/ab.sh);
+# --pov N FILE writes POV-Ray's scene of it likewise.
 dir=$(dirname "$0")
 
 # place N: the grid's scale and translations, one object a line
@@ -27,14 +28,24 @@ deck() {
   awk '{ printf "OBJECT PART SCALE %s TRANSLATE %s %s %s\n", $1, $2, $3, $4 }' "$1"
   echo "OBJECT GROUND"
 }
+# pov PLACEMENTS: the POV-Ray scene of those placements on standard output
+# (it includes csg.inc: render it with +L bench/peers)
+pov() {
+  sed -n '1,/^#include/p' "$dir/csg81.pov"
+  awk '{ printf "object { Part scale %s translate <%s, %s, %s> }\n", $1, $2, $3, $4 }' "$1"
+  echo "object { Floor }"
+}
 
-if [ "${1:-}" = --deck ]; then
-  n=${2:?usage: grow.sh --deck N FILE}; out=${3:?usage: grow.sh --deck N FILE}
+if [ "${1:-}" = --deck ] || [ "${1:-}" = --pov ]; then
+  what=${1#--}
+  n=${2:?usage: grow.sh --deck|--pov N FILE}; out=${3:?usage: grow.sh --deck|--pov N FILE}
   case $n in ''|*[!0-9]*|0) echo "bench-grow: N must be a positive count" >&2; exit 2 ;; esac
-  [ -e "$out" ] && [ "$out" -ef "$dir/csg81.scene" ] && { echo "bench-grow: $out is the deck read" >&2; exit 2; }
+  for read in "$dir/csg81.scene" "$dir/csg81.pov" "$dir/csg.inc"; do
+    [ -e "$out" ] && [ "$out" -ef "$read" ] && { echo "bench-grow: $out is a file read" >&2; exit 2; }
+  done
   p=$(mktemp "${TMPDIR:-/tmp}/maprt-grow-XXXXXX") || exit 3
   o=$(mktemp "$(dirname "$out")/.maprt-grow-XXXXXX") || { rm -f "$p"; exit 3; }
-  place "$n" > "$p" && deck "$p" > "$o" && mv -f "$o" "$out"; status=$?
+  place "$n" > "$p" && "$what" "$p" > "$o" && mv -f "$o" "$out"; status=$?
   rm -f "$p" "$o"
   exit "$status"
 fi
@@ -55,9 +66,7 @@ scenes() {
   n=$1
   place "$n" > "$tmp/place"
   deck "$tmp/place" > "$tmp/g$n.scene"
-  { sed -n '1,/^#include/p' "$dir/csg81.pov"
-    awk '{ printf "object { Part scale %s translate <%s, %s, %s> }\n", $1, $2, $3, $4 }' "$tmp/place"
-    echo "object { Floor }"; } > "$tmp/g$n.pov"
+  pov "$tmp/place" > "$tmp/g$n.pov"
 }
 
 echo "objects,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_growth,f64_growth,pov_growth,pixels_over_8,q16_growth_min,f64_growth_min,pov_growth_min"

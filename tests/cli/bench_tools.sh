@@ -2,8 +2,9 @@
 # The timing tools of the benchmarks: bench/peers/cputime records "cpu
 # wall user system" with cpu = user + system; tools/ab.sh alternates two
 # binaries and reports both and their ratio; bench/peers/grow.sh --deck N
-# writes bench-grow's n x n deck, which maprt reads, and refuses a bad N
-# and the deck it reads from. Exit 77 (skipped) without a C compiler.
+# writes bench-grow's n x n deck, which maprt reads, and --pov N its
+# POV-Ray scene; both refuse a bad N and a file they read as the output.
+# Exit 77 (skipped) without a C compiler.
 set -u
 cc=${CC:-cc}
 command -v "$cc" >/dev/null 2>&1 || { echo "skipped: needs a C compiler ($cc)"; exit 77; }
@@ -26,6 +27,12 @@ sh bench/peers/grow.sh --deck x "$tmp/gx.scene" 2>/dev/null && fail "grow.sh --d
 sh bench/peers/grow.sh --deck 2 bench/peers/csg81.scene 2>/dev/null && fail "grow.sh --deck wrote over the deck it reads"
 cmp -s bench/peers/csg81.scene "$tmp/csg81.before" || fail "bench/peers/csg81.scene changed"
 [ -e "$tmp/g0.scene" ] || [ -e "$tmp/gx.scene" ] && fail "a refused --deck left a file"
+sh bench/peers/grow.sh --pov 3 "$tmp/g3.pov" || fail "grow.sh --pov 3 failed"
+[ "$(grep -c '^object { Part scale ' "$tmp/g3.pov")" -eq 9 ] || fail "the 3 x 3 POV-Ray scene does not hold 9 parts"
+grep -q '^#include "csg.inc"' "$tmp/g3.pov" || fail "the POV-Ray scene does not include csg.inc"
+cp bench/peers/csg81.pov "$tmp/csg81.pov.before"
+sh bench/peers/grow.sh --pov 2 bench/peers/csg81.pov 2>/dev/null && fail "grow.sh --pov wrote over the scene it reads"
+cmp -s bench/peers/csg81.pov "$tmp/csg81.pov.before" || fail "bench/peers/csg81.pov changed"
 
 out=$(CPUTIME="$tmp/cputime" sh tools/ab.sh 2 $MAPRT $MAPRT render "$tmp/g3.scene" -o "$tmp/ab.png" --size 16x12 --threads 1 --quiet) \
   || fail "tools/ab.sh failed"
@@ -35,4 +42,4 @@ done
 err=$(CPUTIME="$tmp/cputime" sh tools/ab.sh x "$MAPRT" "$MAPRT" --version 2>&1 >/dev/null) \
   && fail "tools/ab.sh took a count that is not one"
 printf '%s\n' "$err" | grep -q "N must be a count" || fail "tools/ab.sh on a bad count: $err"
-echo "ok: cputime's record, tools/ab.sh, grow.sh --deck"
+echo "ok: cputime's record, tools/ab.sh, grow.sh --deck and --pov"
