@@ -252,27 +252,32 @@ static void test_prim_face_names(void **state)
     assert_int_equal(prim_face_count(PRIM_BLOCK), 6);
 }
 
+/* Compiling sc in ops fails with DIAG_INPUT and exactly message msg. */
+static void prim_compile_fails(const probe_ops *ops, const scene *sc, const char *msg)
+{
+    void *cs;
+    diag err;
+    char buf[256];
+    diag_init(&err);
+    assert_int_equal(ops->compile(sc, &cs, &err), DIAG_INPUT);
+    diag_format(&err, buf, sizeof buf);
+    assert_string_equal(buf, msg);
+}
+
 /* A scene model built in C with a bad primitive: exact diagnostic. */
 static void test_prim_rejects_bad_dimensions(void **state)
 {
     scene *sc = tt_parse("EYE 9 -9 7\nLOOKAT 0 0 0\nLIGHT 0 0 20\nSPHERE P 1\nOBJECT P\n");
     void *cs;
     diag err;
-    char buf[256];
     (void)state;
     assert_non_null(sc);
     sc->prims[0].dim[0] = -1;
-    diag_init(&err);
-    assert_int_equal(q16_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
-    diag_format(&err, buf, sizeof buf);
-    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': sphere radius must be positive");
+    prim_compile_fails(&q16_probe_ops, sc, "test.scene:4:1: error: primitive 'P': sphere radius must be positive");
     sc->prims[0].dim[0] = 1;
     sc->prims[0].world_from_object[0] = 0;
     sc->prims[0].world_from_object[5] = 0;
-    diag_init(&err);
-    assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
-    diag_format(&err, buf, sizeof buf);
-    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': transform is singular");
+    prim_compile_fails(&f64_probe_ops, sc, "test.scene:4:1: error: primitive 'P': transform is singular");
     scene_free(sc);
     /* a half-space stays out of the scene's extent, so the primitive's own
      * checks see a non-finite transform: any entry, before the dimensions */
@@ -280,21 +285,12 @@ static void test_prim_rejects_bad_dimensions(void **state)
     assert_non_null(sc);
     sc->prims[0].world_from_object[11] = -HUGE_VAL;
     sc->prims[0].dim[2] = NAN;
-    diag_init(&err);
-    assert_int_equal(q16_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
-    diag_format(&err, buf, sizeof buf);
-    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': transform is not finite");
+    prim_compile_fails(&q16_probe_ops, sc, "test.scene:4:1: error: primitive 'P': transform is not finite");
     sc->prims[0].world_from_object[11] = 0;
     sc->prims[0].world_from_object[6] = NAN;
-    diag_init(&err);
-    assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
-    diag_format(&err, buf, sizeof buf);
-    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': transform is not finite");
+    prim_compile_fails(&f64_probe_ops, sc, "test.scene:4:1: error: primitive 'P': transform is not finite");
     sc->prims[0].world_from_object[6] = 0;
-    diag_init(&err);
-    assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);
-    diag_format(&err, buf, sizeof buf);
-    assert_string_equal(buf, "test.scene:4:1: error: primitive 'P': dimension is not finite");
+    prim_compile_fails(&f64_probe_ops, sc, "test.scene:4:1: error: primitive 'P': dimension is not finite");
     sc->prims[0].dim[2] = 0;
     diag_init(&err);
     assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), 0);
