@@ -5,6 +5,7 @@
 #include "util/mem.h"
 #include "util/bvh.h"
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -146,11 +147,7 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
             }
         }
     }
-    nd->bounded = b->bounded;
-    if (op == CSG_LEAF) {
-        nd->bc = x->prims[pi].bc;
-        nd->br = x->prims[pi].br;
-    }
+    nd->bounded = (unsigned char)b->bounded;
     if (b->bounded) {
         csg_set_box(nd, b);
         /* a child with this very box needs no test of its own where it is
@@ -354,7 +351,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     csg_ctx x;
     int *obj = NULL, nb = 0, nu = 0, k;
     int (*hull)[CSG_HULL] = NULL;
-    double (*lo)[3] = NULL, (*hi)[3] = NULL;
+    double (*lo)[3] = NULL, (*hi)[3] = NULL, (*obox)[2][3] = NULL;
     size_t cap, i, peak = 0;
     memset(&x, 0, sizeof x);
     memset(out, 0, sizeof *out);
@@ -369,12 +366,14 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     if (cap > (size_t)1 << 26)
         return csg_err(&x, DIAG_INPUT, "CSG tree too large");
     x.cap = (int)cap;
-    x.nodes = mem_calloc(cap, sizeof *x.nodes);
+    if ((out->nodes_mem = mem_calloc(cap + 1, sizeof *x.nodes)))
+        x.nodes = (csg_node *)(((uintptr_t)out->nodes_mem + 63) & ~(uintptr_t)63);
     obj = mem_calloc(sc->nroots + 1, sizeof *obj);
     hull = mem_calloc(sc->nroots + 1, sizeof *hull);
     lo = mem_calloc(sc->nroots + 1, sizeof *lo);
     hi = mem_calloc(sc->nroots + 1, sizeof *hi);
-    if (!x.nodes || !obj || !hull || !lo || !hi) {
+    obox = mem_alloc((sc->nroots + 1) * sizeof *obox);
+    if (!x.nodes || !obj || !hull || !lo || !hi || !obox) {
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
     }
@@ -411,6 +410,11 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     out->nobjects = nb + nu;
     out->nbounded = nb;
     out->peak_spans = peak;
+    for (k = 0; k < nb; k++) {
+        memcpy(obox[k][0], lo[k], sizeof lo[k]);
+        memcpy(obox[k][1], hi[k], sizeof hi[k]);
+    }
+    out->obox = obox;
     mem_free(x.bd);
     mem_free(x.lst);
     mem_free(x.stk);
@@ -419,7 +423,8 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     mem_free(hi);
     return 0;
 fail:
-    mem_free(x.nodes);
+    mem_free(out->nodes_mem);
+    out->nodes_mem = NULL;
     mem_free(x.bd);
     mem_free(x.lst);
     mem_free(x.stk);
@@ -428,14 +433,16 @@ fail:
     mem_free(hull);
     mem_free(lo);
     mem_free(hi);
+    mem_free(obox);
     return err->status ? err->status : DIAG_IO;
 }
 
 void NS(csg_free)(csg *c)
 {
-    mem_free(c->nodes);
+    mem_free(c->nodes_mem);
     mem_free(c->objects);
     mem_free(c->hull);
+    mem_free(c->obox);
     bvh_free(&c->objtree);
     memset(c, 0, sizeof *c);
 }
@@ -478,7 +485,8 @@ VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, in
         return 0;
     q->st->bound_tests++;
     if ((box && bbox_miss(nd->lo, nd->hi, &q->r->b, num_to_d(lo), num_to_d(hi), &tin))
-        || (nd->op == CSG_LEAF && vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, lo, hi, tc))) {
+        || (nd->op == CSG_LEAF && vec3_sphere_miss(q->prims[nd->prim].bc, q->prims[nd->prim].br, q->r->o, q->r->d,
+                                                   lo, hi, tc))) {
         q->st->pruned++;
         return 1;
     }
@@ -824,13 +832,13 @@ VEC_HOT void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *fou
     int hit;
     if (nd->op == CSG_LEAF) {     /* one primitive: one span, no arena */
         span s;
-        if (nd->bounded && vec3_sphere_miss(nd->bc, nd->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)) {
+        const prim *p = &q->prims[nd->prim];
+        if (nd->bounded && vec3_sphere_miss(p->bc, p->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)) {
             q->st->pruned++;
             return;
         }
         q->st->prim_tests++;
-        hit = NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, &s)
-              && csg_first(&s, 1, q->tmax, &h);
+        hit = NS(prim_intersect_tc)(p, q->r, tc, &s) && csg_first(&s, 1, q->tmax, &h);
     } else {
         hit = csg_object_tree(q, k, ni, tested, &h);
     }
@@ -895,9 +903,8 @@ VEC_HOT int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
             if (lightbuf_lookup(q->lb, q->r->b.o, d, q->tmax_d, q->any, &item, &m)) {
                 for (i = -q->lb->nnear; i < m; i++) {   /* the near list, then the cell */
                     int ob = i < 0 ? q->lb->near[~i] : item[i];
-                    const csg_node *nd = &c->nodes[c->objects[ob]];
                     q->st->bound_tests++;
-                    if (bbox_miss(nd->lo, nd->hi, &q->r->b, 0, q->tmax_d, &tin[0])) {
+                    if (bbox_miss(c->obox[ob][0], c->obox[ob][1], &q->r->b, 0, q->tmax_d, &tin[0])) {
                         q->st->pruned++;
                         continue;
                     }
