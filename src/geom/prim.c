@@ -289,10 +289,12 @@ void NS(prim_box)(const prim *p, double lo_out[3], double hi_out[3])
 
 /* ---- one representation for coincident geometry --------------------- */
 
-/* A plane in the sweep: its value travels with it, so that the scan over
- * neighbours reads the sorted array in order rather than each primitive's
- * planes wherever they lie (a cache miss per neighbour on 10,000 objects). */
-typedef struct prim_pref { double pl[4], key; int prim, k; } prim_pref;
+/* A plane in the sweep: its key, where its value lies and whose it is.
+ * The planes are read where they lie, not copied with their keys: on the
+ * 10,000-object deck the scan misses the cache once per plane either way,
+ * and a copy sorted through radix_order needed the planes twice (unsorted
+ * and sorted, 6 MB each) where 3 MB now hold the sorted references. */
+typedef struct prim_pref { double key; double *pl; int prim, k; } prim_pref;
 
 /* The orientation (+1, -1) in which plane q equals plane r within
  * PRIM_SAME_TOL, or 0. */
@@ -453,39 +455,37 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
 
 int NS(prim_share)(prim *prims, size_t n, diag *err)
 {
-    prim_pref *pr, *by;
+    prim_pref *pr;
     uint64_t *sort;
-    size_t np = 0, i, j, *ord = NULL;
+    size_t np = 0, i, j, *rank = NULL;
     int k;
     for (i = 0; i < n; i++)
         np += (size_t)prims[i].nplanes;
-    pr = mem_alloc((np ? np : 1) * sizeof *pr);         /* every entry written below */
-    sort = mem_alloc((np ? np : 1) * sizeof *sort);
+    sort = mem_alloc((np ? np : 1) * sizeof *sort);     /* every entry written below */
     np = 0;
-    for (i = 0; pr && sort && i < n; i++)
-        for (k = 0; k < prims[i].nplanes; k++) {
-            memcpy(pr[np].pl, prims[i].pl_d[k], sizeof pr[np].pl);
-            pr[np].key = fabs(pr[np].pl[3]);
-            sort[np] = radix_key_d(pr[np].key);
-            pr[np].prim = (int)i;
-            pr[np++].k = k;
-        }
-    /* planes sorted by |offset|, ties in (primitive, plane) order; each
-     * takes the nearest earlier plane of another primitive that it equals
-     * within the tolerance, and that one already holds its group's single
-     * representation */
-    by = pr && sort && (ord = radix_order(sort, np)) ? mem_alloc((np ? np : 1) * sizeof *by) : NULL;
+    for (i = 0; sort && i < n; i++)
+        for (k = 0; k < prims[i].nplanes; k++)
+            sort[np++] = radix_key_d(fabs(prims[i].pl_d[k][3]));
+    /* planes sorted by |offset|, ties in (primitive, plane) order, each
+     * stored straight at its place; each takes the nearest earlier plane
+     * of another primitive that it equals within the tolerance, and that
+     * one already holds its group's single representation */
+    pr = sort && (rank = radix_rank(sort, np)) ? mem_alloc((np ? np : 1) * sizeof *pr) : NULL;
     mem_free(sort);
-    if (!by) {
-        mem_free(pr);
-        mem_free(ord);
+    if (!pr) {
+        mem_free(rank);
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
     }
-    for (i = 0; i < np; i++)
-        by[i] = pr[ord[i]];
-    mem_free(ord);
-    mem_free(pr);
-    pr = by;
+    np = 0;
+    for (i = 0; i < n; i++)
+        for (k = 0; k < prims[i].nplanes; k++) {
+            prim_pref *e = &pr[rank[np++]];
+            e->pl = prims[i].pl_d[k];
+            e->key = fabs(e->pl[3]);
+            e->prim = (int)i;
+            e->k = k;
+        }
+    mem_free(rank);
     for (i = 0; i < np; i++) {
         double *q = pr[i].pl, w[4];
         for (j = i; j-- > 0 && pr[i].key - pr[j].key <= PRIM_SAME_TOL;) {
@@ -497,10 +497,8 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
                 w[k] = s * r[k];
             if (memcmp(q, w, sizeof w)) {   /* else already that plane, bit
                                                for bit: nothing to round */
-                prim *p = &prims[pr[i].prim];
                 memcpy(q, w, sizeof w);
-                memcpy(p->pl_d[pr[i].k], w, sizeof w);
-                prim_round_plane(p, pr[i].k);
+                prim_round_plane(&prims[pr[i].prim], pr[i].k);
             }
             break;
         }

@@ -67,3 +67,14 @@ size_t *radix_order(const uint64_t *keys, size_t n)
 {
     return n >= RADIX_WIDE ? radix_order_in(keys, n, RADIX_BITS_WIDE) : radix_order_in(keys, n, RADIX_BITS);
 }
+
+size_t *radix_rank(const uint64_t *keys, size_t n)
+{
+    size_t *ord = radix_order(keys, n), i;
+    if (!ord || n == 0)
+        return ord;
+    for (i = 0; i < n; i++)             /* radix_order's block holds 2n */
+        ord[n + ord[i]] = i;
+    memcpy(ord, ord + n, n * sizeof *ord);
+    return ord;
+}

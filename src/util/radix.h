@@ -23,4 +23,11 @@ static inline uint64_t radix_key_d(double x)
  * own elements by it, copying each whole with its type's size known, and
  * frees it with mem_free; NULL when memory runs out. */
 size_t *radix_order(const uint64_t *keys, size_t n);
+
+/* The inverse of radix_order: element i of the result is the position of
+ * key i in that order. A caller that can form its elements again in index
+ * order stores each straight at its place, where sorting by radix_order
+ * needs the elements once unsorted and once sorted. mem_free; NULL when
+ * memory runs out. */
+size_t *radix_rank(const uint64_t *keys, size_t n);
 #endif

@@ -388,7 +388,8 @@ static int util_rec_cmp(const void *a, const void *b)
     return x->k - y->k;
 }
 
-/* radix_order gives exactly qsort's order under util_rec_cmp: keys drawn
+/* radix_order gives exactly qsort's order under util_rec_cmp, and
+ * radix_rank each element's place in it: keys drawn
  * from a small pool (many ties; -0 beside +0, negatives, subnormals,
  * infinities, neighbours one ulp apart), from all over the doubles (a
  * pass per digit) and from 1 + j ulp, j < 2048 (one pass), for sizes 0 to
@@ -430,6 +431,11 @@ static void test_util_radix_order_matches_comparator(void **state)
         for (i = 0; i < n; i++)
             assert_memory_equal(&a[ord[i]], &b[i], sizeof *a);
         mem_free(ord);
+        ord = radix_rank(key, n);               /* each element's place */
+        assert_non_null(ord);
+        for (i = 0; i < n; i++)
+            assert_memory_equal(&a[i], &b[ord[i]], sizeof *a);
+        mem_free(ord);
         mem_free(a);
         mem_free(b);
         mem_free(key);
@@ -444,9 +450,9 @@ static void test_util_radix_order_matches_comparator(void **state)
             assert_int_equal(ord[i], i);
         mem_free(ord);
         k[0] = radix_key_d(3);
-        for (t = 0; t < 2; t++) {                 /* out of memory at either allocation */
-            mem_fail_after((int)t);
-            ord = radix_order(k, 300);
+        for (t = 0; t < 4; t++) {                 /* out of memory at either allocation */
+            mem_fail_after((int)t % 2);
+            ord = t < 2 ? radix_order(k, 300) : radix_rank(k, 300);
             mem_fail_after(-1);
             assert_null(ord);
         }
