@@ -122,7 +122,9 @@ kill_rank1() {
   [ -s "$tmp/k.err" ] || fail "$1: no message when a rank died"
 }
 # Kill rank 1 while the ranks render: the job fails, nothing is written.
-mpi $mpibin render $deck -o "$tmp/killed.png" --size 640x480 --aa 3 --threads 1 \
+# The render is sized to last seconds (640x480 at --aa 3 ended within the
+# half second on a fast host, its file written before the kill).
+mpi $mpibin render $deck -o "$tmp/killed.png" --size 1280x960 --aa 4 --threads 1 \
   > "$tmp/k.out" 2> "$tmp/k.err" &
 job=$!
 kill_rank1 render
