@@ -5,7 +5,6 @@
 #include "util/mem.h"
 #include "util/bvh.h"
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -366,8 +365,8 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     if (cap > (size_t)1 << 26)
         return csg_err(&x, DIAG_INPUT, "CSG tree too large");
     x.cap = (int)cap;
-    if ((out->nodes_mem = mem_calloc(cap + 1, sizeof *x.nodes)))
-        x.nodes = (csg_node *)(((uintptr_t)out->nodes_mem + 63) & ~(uintptr_t)63);
+    out->nodes_mem = mem_calloc(cap + 1, sizeof *x.nodes);
+    x.nodes = mem_align_line(out->nodes_mem);
     obj = mem_calloc(sc->nroots + 1, sizeof *obj);
     hull = mem_calloc(sc->nroots + 1, sizeof *hull);
     lo = mem_calloc(sc->nroots + 1, sizeof *lo);

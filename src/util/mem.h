@@ -25,6 +25,16 @@ static inline int mem_grow(void **p, size_t *cap, size_t need, size_t elem)
     return need && need <= *cap ? 0 : mem_grow_realloc(p, cap, need, elem);
 }
 
+/* The first 64-byte boundary (a cache line) at or after p, NULL for NULL:
+ * an array whose elements are read a line at a time is allocated one
+ * element (of at least 64 bytes) longer and used from there, the block
+ * still freed as allocated. */
+#define MEM_LINE ((uintptr_t)64)
+static inline void *mem_align_line(void *p)
+{
+    return p ? (void *)(((uintptr_t)p + MEM_LINE - 1) & ~(MEM_LINE - 1)) : NULL;
+}
+
 /* Blocks of MEM_HUGE_MIN bytes or more are advised for transparent huge
  * pages where Linux offers them (mem.c says why). mem_huge_size gives the
  * bytes asked of malloc for a block of size bytes: for a large block, the

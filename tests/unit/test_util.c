@@ -89,6 +89,12 @@ static void test_util_mem_huge_pages(void **state)
     assert_int_equal(mem_huge_range(3 * M, MEM_HUGE_MIN - 1, &a, &n), 0);
     assert_int_equal(mem_huge_range(UINTPTR_MAX - M, 4 * M, &a, &n), 0);
     assert_int_equal(mem_huge_range(M, SIZE_MAX - M, &a, &n), 0);
+    /* mem_align_line: the first 64-byte boundary at or after p */
+    assert_true(mem_align_line((void *)(3 * M)) == (void *)(3 * M));
+    assert_true(mem_align_line((void *)(3 * M + 1)) == (void *)(3 * M + 64));
+    assert_true(mem_align_line((void *)(3 * M + 63)) == (void *)(3 * M + 64));
+    assert_true(mem_align_line((void *)(3 * M + 64)) == (void *)(3 * M + 64));
+    assert_null(mem_align_line(NULL));
     f = fopen("/sys/kernel/mm/transparent_hugepage/enabled", "r");
     if (!f || !fgets(line, sizeof line, f) || (!strstr(line, "[madvise]") && !strstr(line, "[always]"))) {
         if (f)
