@@ -350,7 +350,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     csg_ctx x;
     int *obj = NULL, nb = 0, nu = 0, k;
     int (*hull)[CSG_HULL] = NULL;
-    double (*lo)[3] = NULL, (*hi)[3] = NULL, (*obox)[2][3] = NULL;
+    double (*lo)[3] = NULL, (*hi)[3] = NULL;
     size_t cap, i, peak = 0;
     memset(&x, 0, sizeof x);
     memset(out, 0, sizeof *out);
@@ -371,8 +371,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     hull = mem_calloc(sc->nroots + 1, sizeof *hull);
     lo = mem_calloc(sc->nroots + 1, sizeof *lo);
     hi = mem_calloc(sc->nroots + 1, sizeof *hi);
-    obox = mem_alloc((sc->nroots + 1) * sizeof *obox);
-    if (!x.nodes || !obj || !hull || !lo || !hi || !obox) {
+    if (!x.nodes || !obj || !hull || !lo || !hi) {
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
     }
@@ -409,17 +408,12 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     out->nobjects = nb + nu;
     out->nbounded = nb;
     out->peak_spans = peak;
-    for (k = 0; k < nb; k++) {
-        memcpy(obox[k][0], lo[k], sizeof lo[k]);
-        memcpy(obox[k][1], hi[k], sizeof hi[k]);
-    }
-    out->obox = obox;
+    out->olo = lo;
+    out->ohi = hi;
     mem_free(x.bd);
     mem_free(x.lst);
     mem_free(x.stk);
     mem_free(x.keys);
-    mem_free(lo);
-    mem_free(hi);
     return 0;
 fail:
     mem_free(out->nodes_mem);
@@ -432,7 +426,6 @@ fail:
     mem_free(hull);
     mem_free(lo);
     mem_free(hi);
-    mem_free(obox);
     return err->status ? err->status : DIAG_IO;
 }
 
@@ -441,7 +434,8 @@ void NS(csg_free)(csg *c)
     mem_free(c->nodes_mem);
     mem_free(c->objects);
     mem_free(c->hull);
-    mem_free(c->obox);
+    mem_free(c->olo);
+    mem_free(c->ohi);
     bvh_free(&c->objtree);
     memset(c, 0, sizeof *c);
 }
@@ -903,7 +897,7 @@ VEC_HOT int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
                 for (i = -q->lb->nnear; i < m; i++) {   /* the near list, then the cell */
                     int ob = i < 0 ? q->lb->near[~i] : item[i];
                     q->st->bound_tests++;
-                    if (bbox_miss(c->obox[ob][0], c->obox[ob][1], &q->r->b, 0, q->tmax_d, &tin[0])) {
+                    if (bbox_miss(c->olo[ob], c->ohi[ob], &q->r->b, 0, q->tmax_d, &tin[0])) {
                         q->st->pruned++;
                         continue;
                     }

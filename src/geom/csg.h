@@ -72,11 +72,14 @@ typedef struct csg {
                                 (reached from its root through intersections
                                 and left operands of differences), -1 after */
     int nobjects, nbounded;
-    double (*obox)[2][3];    /* the bounded objects' boxes (lo, hi), their
-                                roots' boxes again: what a buffered query
-                                tests of each object in its cell, read from
-                                one array (480 KB for 10,000 objects) and
-                                not from the roots among 9 MB of nodes */
+    double (*olo)[3], (*ohi)[3];
+                             /* the bounded objects' boxes (their roots'
+                                again), as objects[]: what the hierarchy and
+                                the light buffers are built over, and what
+                                a buffered query tests of each object in its
+                                cell, read from 240 KB arrays at 10,000
+                                objects, not from the roots among 6 MB of
+                                nodes */
     bvh objtree;             /* over objects[0 .. nbounded - 1] */
     size_t peak_spans;       /* span storage one query needs at most */
     int whole;               /* classify each object whole, without

@@ -369,31 +369,22 @@ void NS(cscene_primary_ray)(const cscene *cs, const cscene_batch *b, int k, prim
 static int cscene_lights(cscene *cs, diag *err)
 {
     const csg *t = &cs->tree;
-    double (*lo)[3], (*hi)[3];
     size_t i;
-    int k, status = 0;
+    int status = 0;
     if (t->nbounded < CSCENE_LBUF_MIN)
         return 0;
-    lo = mem_calloc((size_t)t->nbounded, sizeof *lo);
-    hi = mem_calloc((size_t)t->nbounded, sizeof *hi);
     cs->lbuf = mem_calloc(cs->nlights ? cs->nlights : 1, sizeof *cs->lbuf);
-    if (!lo || !hi || !cs->lbuf)
+    if (!cs->lbuf)
         status = DIAG_IO;
-    for (k = 0; !status && k < t->nbounded; k++) {
-        memcpy(lo[k], t->nodes[t->objects[k]].lo, sizeof lo[k]);
-        memcpy(hi[k], t->nodes[t->objects[k]].hi, sizeof hi[k]);
-    }
     for (i = 0; !status && i <= cs->nlights; i++) {
         double at[3];
         if (i < cs->nlights)
             vec3_to_d(cs->lights[i].pos, at);
         if (lightbuf_build(i < cs->nlights ? &cs->lbuf[i] : &cs->eyebuf, i < cs->nlights ? at : cs->eye,
-                           (const double (*)[3])lo, (const double (*)[3])hi, (size_t)t->nbounded,
+                           (const double (*)[3])t->olo, (const double (*)[3])t->ohi, (size_t)t->nbounded,
                            CSCENE_LBUF_GROW) < 0)
             status = DIAG_IO;
     }
-    mem_free(lo);
-    mem_free(hi);
     return status ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
 }
 
