@@ -92,17 +92,16 @@ static int prim_fail(diag *err, const char *file, const scene_prim *sp, const ch
                    "primitive '%s': %s", sp->name, what);
 }
 
-/* Canonical planes per kind: outward normal, a point, face id; in face
- * order, as prim_face_plane assumes. */
-typedef struct prim_cplane { double n[3], p[3]; int face; } prim_cplane;
+/* Canonical planes per kind: outward normal and a point; in face order
+ * (plane k is face prim_plane_face(kind, k), as prim_face_plane assumes):
+ * the block's XMIN..ZMAX, the caps' TOP and BOTTOM, the half-space's PLANE. */
+typedef struct prim_cplane { double n[3], p[3]; } prim_cplane;
 
 static const prim_cplane prim_block_planes[6] = {
-    {{-1, 0, 0}, {0, 0, 0}, PRIM_FACE_BLOCK_XMIN}, {{1, 0, 0}, {1, 0, 0}, PRIM_FACE_BLOCK_XMAX},
-    {{0, -1, 0}, {0, 0, 0}, PRIM_FACE_BLOCK_YMIN}, {{0, 1, 0}, {0, 1, 0}, PRIM_FACE_BLOCK_YMAX},
-    {{0, 0, -1}, {0, 0, 0}, PRIM_FACE_BLOCK_ZMIN}, {{0, 0, 1}, {0, 0, 1}, PRIM_FACE_BLOCK_ZMAX}};
-static const prim_cplane prim_cap_planes[2] = {
-    {{0, 0, 1}, {0, 0, 1}, PRIM_FACE_CYL_TOP}, {{0, 0, -1}, {0, 0, 0}, PRIM_FACE_CYL_BOTTOM}};
-static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}, PRIM_FACE_HALFSPACE_PLANE}};
+    {{-1, 0, 0}, {0, 0, 0}}, {{1, 0, 0}, {1, 0, 0}}, {{0, -1, 0}, {0, 0, 0}},
+    {{0, 1, 0}, {0, 1, 0}}, {{0, 0, -1}, {0, 0, 0}}, {{0, 0, 1}, {0, 0, 1}}};
+static const prim_cplane prim_cap_planes[2] = {{{0, 0, 1}, {0, 0, 1}}, {{0, 0, -1}, {0, 0, 0}}};
+static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}}};
 
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
                      double (*pl_d)[4], prim_frame *fr, prim *out, const char *file, diag *err)
@@ -239,7 +238,6 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
             pt[j] += p.fr->org_d[j];
         memcpy(p.pl_d[i], n, sizeof n);
         p.pl_d[i][3] = dmath_dot3(n, pt);
-        p.pl[i].face = cp[i].face;
         prim_round_nd(&p, i);
     }
     /* each code once all the planes it may refer to are rounded */
@@ -550,18 +548,24 @@ static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
             nm = num_neg(nm);
             den = num_neg(den);
             if (ad == NUM_ZERO || num_frac_gt(nm, den, an, ad)) {
-                an = nm; ad = den; af = pl->face;
+                an = nm; ad = den; af = k;
                 if (bd != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
                     return 0;
             }
         } else if (bd == NUM_ZERO || num_frac_gt(bn, bd, nm, den)) {
-            bn = nm; bd = den; bf = pl->face;
+            bn = nm; bd = den; bf = k;
             if (ad != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
                 return 0;
         }
     }
-    if (ad != NUM_ZERO && (t = num_div_clamp(an, ad, big)) > s->a.t) { s->a.t = t; s->a.face = af; }
-    if (bd != NUM_ZERO && (t = num_div_clamp(bn, bd, big)) < s->b.t) { s->b.t = t; s->b.face = bf; }
+    if (ad != NUM_ZERO && (t = num_div_clamp(an, ad, big)) > s->a.t) {
+        s->a.t = t;
+        s->a.face = prim_plane_face(p->kind, af);
+    }
+    if (bd != NUM_ZERO && (t = num_div_clamp(bn, bd, big)) < s->b.t) {
+        s->b.t = t;
+        s->b.face = prim_plane_face(p->kind, bf);
+    }
     return s->a.t < s->b.t;
 }
 

@@ -49,11 +49,20 @@ static inline void prim_ray_set(prim_ray *r, vec3 o, vec3 d, int excl_prim, int 
     prim_ray_set_d(r, o, d, od, dd, excl_prim, excl_enter);
 }
 
+/* A planar face: plane k of a primitive is face prim_plane_face(kind, k).
+ * In binary64 the layout is that of double[4], so the planes in double
+ * (prim.pl_d) are the same storage (PRIM_PL_SHARED). */
 typedef struct prim_plane {
     vec3 n;            /* outward unit normal, world */
     num d;             /* plane n.p = d; inside n.p <= d */
-    int face;
 } prim_plane;
+
+#if defined(NUM_MODE_f64)
+#define PRIM_PL_SHARED 1
+typedef char prim_plane_is_4_doubles[sizeof(prim_plane) == 4 * sizeof(double) ? 1 : -1];
+#else
+#define PRIM_PL_SHARED 0
+#endif
 
 /* A primitive's placement in binary64: world_from_canonical (linear part
  * a_d, its inverse ainv_d, origin org_d), read by surface evaluation and
@@ -81,7 +90,8 @@ typedef struct prim {
     prim_frame *fr;    /* the placement in double, for surface evaluation
                           (storage the caller provides, as for pl) */
     double (*pl_d)[4]; /* planes in double (n, d), in pl's order (storage
-                          as pl); n is also the face's shading normal */
+                          as pl, in binary64 pl itself); n is also the
+                          face's shading normal */
 } prim;
 
 /* Two planes, or two placements of one canonical solid, that agree within
@@ -109,8 +119,16 @@ static inline int prim_face_plane(int kind, int face)
     return kind >= 0 && kind < PRIM_KIND_COUNT && face >= 0 && face < 6 ? k[kind][face] : -1;
 }
 
+/* The face of plane k of a primitive of kind `kind` (prim_face_plane's
+ * inverse). */
+static inline int prim_plane_face(int kind, int k)
+{
+    return k + (kind == PRIM_CYLINDER || kind == PRIM_CONE);
+}
+
 /* Compiles scene primitive sp (index id) under the normalisation nm, its
- * planes into pl and pl_d (prim_nplanes(sp->kind) entries each) and its
+ * planes into pl and pl_d (prim_nplanes(sp->kind) entries each; in
+ * binary64 (PRIM_PL_SHARED) pl_d must be pl itself) and its
  * placement into fr, all kept by out. 0 on success; DIAG_INPUT (located at
  * sp->loc in file) for bad dimensions, non-finite or singular transforms,
  * or a primitive outside the range. */

@@ -253,12 +253,13 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
                                "the scene, beyond the %s range of %.0f (docs/numerics.md); use "
                                "--numeric q32 or f64", sp->name, fabs(p->pl_d[0][3]) / (2 * GEOM_W),
                                NUM_NAME, CSCENE_ORIG_MAX / (2 * GEOM_W));
-            p->pl[0].d = num_from_d(p->pl_d[0][3] > 0 ? CSCENE_PLANE_MAX : -CSCENE_PLANE_MAX);
         }
-        if (cs->nplanes < CSCENE_MAX_PLANES)
+        if (cs->nplanes < CSCENE_MAX_PLANES)   /* as placed, before the move */
             memcpy(cs->planes[cs->nplanes++], p->pl_d[0], sizeof cs->planes[0]);
         else
             cs->advance = 0;
+        if (fabs(p->pl_d[0][3]) > CSCENE_PLANE_MAX)   /* in binary64 pl_d too */
+            p->pl[0].d = num_from_d(p->pl_d[0][3] > 0 ? CSCENE_PLANE_MAX : -CSCENE_PLANE_MAX);
     }
     /* the cube [-GEOM_W, GEOM_W]^3 holds every bounded primitive's box */
     cs->bound_r = bounded ? GEOM_W * sqrt(3.0) * (1 + 1e-9) : 0;
@@ -438,7 +439,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     if (sc->nprims) {
         cs->prims = mem_calloc(sc->nprims, sizeof *cs->prims);
         cs->prim_pl = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl);
-        cs->prim_pl_d = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
+        cs->prim_pl_d = PRIM_PL_SHARED ? (double (*)[4])cs->prim_pl
+                                       : mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
         cs->prim_fr = mem_calloc(sc->nprims, sizeof *cs->prim_fr);
         if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
@@ -525,7 +527,8 @@ void NS(cscene_free)(cscene *cs)
     NS(csg_free)(&cs->tree);
     mem_free(cs->prims);
     mem_free(cs->prim_pl);
-    mem_free(cs->prim_pl_d);
+    if (!PRIM_PL_SHARED)
+        mem_free(cs->prim_pl_d);
     mem_free(cs->prim_fr);
     for (i = 0; cs->lbuf && i < cs->nlights; i++)
         lightbuf_free(&cs->lbuf[i]);

@@ -425,6 +425,28 @@ static void test_cscene_primary_batch_skips_nothing(void **state)
     assert_true(c.hits > 10000 && c.none > 1000 && c.bad > 1000);
 }
 
+/* A half-space the eye is inside whose plane lies beyond the binary64
+ * range (2^28 normalised units): the primitive's plane is moved to the
+ * range's end, in binary64 in the one storage its planes in double share,
+ * while the plane primary rays are started from keeps the placed offset. */
+static void test_cscene_far_halfspace_moved(void **state)
+{
+    scene *sc = tt_parse("EYE 0.0004 -0.0006 0.0003\nLOOKAT 0 0 0\nUP 0 0 1\nLIGHT 0 0 0.001\n"
+                         "SPHERE BALL 0.0001\nHALFSPACE CEIL TRANSLATE 0 0 1e6\n"
+                         "OBJECT BALL\nOBJECT CEIL\n");
+    cscene *cs = cscene_test_compile(sc);
+    const prim *p = &cs->prims[1];
+    (void)state;
+    assert_int_equal(p->kind, PRIM_HALFSPACE);
+    assert_ptr_equal((const void *)p->pl_d, (const void *)p->pl);
+    assert_true(p->pl[0].d > 2.6e8 && p->pl[0].d < 2.7e8);
+    assert_int_equal(cs->nplanes, 1);
+    assert_true(cs->planes[0][3] > 1e10);
+    assert_true(cs->planes[0][2] == p->pl[0].n.z);
+    f64_cscene_free(cs);
+    scene_free(sc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -432,6 +454,7 @@ int main(void)
         cmocka_unit_test(test_cscene_bounding_radius_from_all_corners),
         cmocka_unit_test(test_cscene_object_hull),
         cmocka_unit_test(test_cscene_primary_batch_skips_nothing),
+        cmocka_unit_test(test_cscene_far_halfspace_moved),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
