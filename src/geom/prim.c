@@ -361,14 +361,49 @@ static int prim_same_solid(const prim *a, const prim *b)
  * solid can lie apart: prim_same_solid bounds the canonical offsets by 1.5
  * PRIM_SAME_TOL, which row k of the map stretches by at most its L1 norm,
  * below sqrt(3) times its L2 norm, weighted by |w_k|. */
-typedef struct prim_skey { double key, win; size_t i; num cone_a, cone_k; int kind; } prim_skey;
+typedef struct prim_skey {
+    double key, win;
+    size_t i;
+    num cone_a, cone_k;
+    float ax[3];       /* the axis, a unit vector; zeros: not compared */
+    int kind;
+} prim_skey;
+
+/* The world axis (the map's third column) of cylinder or cone a as a unit
+ * vector, or zeros for a sphere and for a solid so much wider than long
+ * (largest radius column R over length L 2^20 or more) that the axes of two
+ * placements of it prim_same_solid takes for one could lie far apart.
+ * Elsewhere its test (third column of a^-1 b within PRIM_SAME_TOL of
+ * (0, 0, +-1), formed with a relative rounding of about (R / L) 2^-52, at
+ * most 2^-32) leaves the two axes within an angle whose sine is 2 R / L
+ * times 2^-30 plus that rounding, below 2^-8: axes more than 60 degrees
+ * apart tell solids apart (prim_skey_alike). */
+static void prim_skey_axis(const prim *a, float ax[3])
+{
+    const double *m = a->fr->a_d;
+    double l = sqrt(m[2] * m[2] + m[5] * m[5] + m[8] * m[8]);
+    double r0 = sqrt(m[0] * m[0] + m[3] * m[3] + m[6] * m[6]);
+    double r1 = sqrt(m[1] * m[1] + m[4] * m[4] + m[7] * m[7]);
+    int k;
+    for (k = 0; k < 3; k++)
+        ax[k] = 0;
+    if (a->kind == PRIM_SPHERE || !(l > 0) || !((r0 > r1 ? r0 : r1) < 1048576.0 * l))
+        return;
+    for (k = 0; k < 3; k++)
+        ax[k] = (float)(m[3 * k + 2] / l);
+}
 
 /* What prim_same_solid compares first, from the sweep's own records:
  * neighbours by key that differ here (a sphere and the cylinders through
- * its centre) are told apart without reading either primitive. */
+ * its centre, or three bores through one point along three axes) are told
+ * apart without reading either primitive. |cos| >= 1/2 between the axes,
+ * or an axis not given (zeros: the test then holds). */
 static int prim_skey_alike(const prim_skey *a, const prim_skey *b)
 {
-    return a->kind == b->kind && a->cone_a == b->cone_a && a->cone_k == b->cone_k;
+    float c = a->ax[0] * b->ax[0] + a->ax[1] * b->ax[1] + a->ax[2] * b->ax[2];
+    float na = a->ax[0] * a->ax[0] + a->ax[1] * a->ax[1] + a->ax[2] * a->ax[2];
+    float nb = b->ax[0] * b->ax[0] + b->ax[1] * b->ax[1] + b->ax[2] * b->ax[2];
+    return a->kind == b->kind && a->cone_a == b->cone_a && a->cone_k == b->cone_k && c * c >= 0.25f * na * nb;
 }
 
 /* Identical curved solids: the later one intersects through the earliest
@@ -407,6 +442,7 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
         sk[m].kind = a->kind;
         sk[m].cone_a = a->cone_a;
         sk[m].cone_k = a->cone_k;
+        prim_skey_axis(a, sk[m].ax);
         sort[m] = radix_key_d(key);
         sk[m++].i = i;
     }

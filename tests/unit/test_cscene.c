@@ -447,6 +447,58 @@ static void test_cscene_far_halfspace_moved(void **state)
     scene_free(sc);
 }
 
+/* 1 when the compile gave primitives a and b one set of curved-face data
+ * (prim_share): b then intersects through a's placement. */
+static int cscene_test_shared(const cscene *cs, const scene *sc, const char *a, const char *b)
+{
+    const prim *p = &cs->prims[tt_find_prim(sc, a)], *q = &cs->prims[tt_find_prim(sc, b)];
+    return !memcmp(&p->org, &q->org, sizeof p->org) && !memcmp(&p->minv_s, &q->minv_s, sizeof p->minv_s);
+}
+
+/* 300 random rigid placements of one cluster: a cylinder, the same
+ * cylinder turned end for end, the same through its other axis order
+ * (three bores through one centre, which are not the same solid), a cone
+ * and its copy, a sphere and its turned copy, a disc 1,000 times wider
+ * than thick and its turned copy. Every copy shares its original's
+ * curved-face data; the bores share nothing with each other. */
+static void test_cscene_same_solids_shared(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_same_solids_shared");
+    int n;
+    (void)state;
+    for (n = 0; n < 300; n++) {
+        static const char *const body[][3] = {
+            {"CYLINDER", "C1", "1 2 TRANSLATE 0 0 -1"}, {"CYLINDER", "C2", "1 2 ROTATE X 180 TRANSLATE 0 0 1"},
+            {"CYLINDER", "BX", "1 2 TRANSLATE 0 0 -1 ROTATE Y 90"},
+            {"CYLINDER", "BY", "1 2 TRANSLATE 0 0 -1 ROTATE X 90"},
+            {"CONE", "K1", "1 0.5 2"}, {"CONE", "K2", "1 0.5 2 ROTATE Z 77"},
+            {"SPHERE", "S1", "1"}, {"SPHERE", "S2", "1 ROTATE AXIS 1 2 3 40"},
+            {"CYLINDER", "D1", "10 0.01"},
+            {"CYLINDER", "D2", "10 0.01 ROTATE X 180 TRANSLATE 0 0 0.01"}};
+        char deck[4096], tail[256];
+        size_t len, i;
+        scene *sc;
+        cscene *cs;
+        tt_random_tail(&seed, tail, sizeof tail);
+        len = (size_t)snprintf(deck, sizeof deck, "EYE 9 -9 7\nLOOKAT 0 0 0\nLIGHT 0 0 20\n");
+        for (i = 0; i < sizeof body / sizeof body[0]; i++)
+            len += (size_t)snprintf(deck + len, sizeof deck - len, "%s %s %s %s\nOBJECT %s\n", body[i][0],
+                                    body[i][1], body[i][2], tail, body[i][1]);
+        assert_true(len < sizeof deck);
+        sc = tt_parse(deck);
+        cs = cscene_test_compile(sc);
+        assert_true(cscene_test_shared(cs, sc, "C1", "C2"));
+        assert_true(cscene_test_shared(cs, sc, "K1", "K2"));
+        assert_true(cscene_test_shared(cs, sc, "S1", "S2"));
+        assert_true(cscene_test_shared(cs, sc, "D1", "D2"));
+        assert_false(cscene_test_shared(cs, sc, "C1", "BX"));
+        assert_false(cscene_test_shared(cs, sc, "C1", "BY"));
+        assert_false(cscene_test_shared(cs, sc, "BX", "BY"));
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -455,6 +507,7 @@ int main(void)
         cmocka_unit_test(test_cscene_object_hull),
         cmocka_unit_test(test_cscene_primary_batch_skips_nothing),
         cmocka_unit_test(test_cscene_far_halfspace_moved),
+        cmocka_unit_test(test_cscene_same_solids_shared),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
