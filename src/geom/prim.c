@@ -238,6 +238,9 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
             pt[j] += p.fr->org_d[j];
         memcpy(p.pl_d[i], n, sizeof n);
         p.pl_d[i][3] = dmath_dot3(n, pt);
+#if !PRIM_PL_SHARED
+        p.pl[i].face = prim_plane_face(p.kind, i);
+#endif
         prim_round_nd(&p, i);
     }
     /* each code once all the planes it may refer to are rounded */
@@ -543,6 +546,19 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
 
 /* ---- intersection (num) -------------------------------------------- */
 
+/* What the clip records for plane k (pl) as it goes, and the face that
+ * makes at its end: the plane's own face where it holds one (the clip's
+ * instructions as before the planes in double were shared); in binary64
+ * the index, turned into the face for the two ends that win (+0.3 to 0.6 %
+ * instructions in f64 renders, tools/icount.sh). */
+#if PRIM_PL_SHARED
+static inline int prim_clip_face(const prim_plane *pl, int k) { (void)pl; return k; }
+static inline int prim_clip_face_end(int kind, int f) { return prim_plane_face(kind, f); }
+#else
+static inline int prim_clip_face(const prim_plane *pl, int k) { (void)k; return pl->face; }
+static inline int prim_clip_face_end(int kind, int f) { (void)kind; return f; }
+#endif
+
 /* Intersects the span s with the half-spaces of p's planes. 0 if empty.
  * The entry and exit candidates are kept as fractions (positive
  * denominators) and compared by cross products, so only the two winners
@@ -584,23 +600,23 @@ static int prim_clip_planes(const prim *p, const prim_ray *r, span *s)
             nm = num_neg(nm);
             den = num_neg(den);
             if (ad == NUM_ZERO || num_frac_gt(nm, den, an, ad)) {
-                an = nm; ad = den; af = k;
+                an = nm; ad = den; af = prim_clip_face(pl, k);
                 if (bd != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
                     return 0;
             }
         } else if (bd == NUM_ZERO || num_frac_gt(bn, bd, nm, den)) {
-            bn = nm; bd = den; bf = k;
+            bn = nm; bd = den; bf = prim_clip_face(pl, k);
             if (ad != NUM_ZERO && !num_frac_gt(bn, bd, an, ad))
                 return 0;
         }
     }
     if (ad != NUM_ZERO && (t = num_div_clamp(an, ad, big)) > s->a.t) {
         s->a.t = t;
-        s->a.face = prim_plane_face(p->kind, af);
+        s->a.face = prim_clip_face_end(p->kind, af);
     }
     if (bd != NUM_ZERO && (t = num_div_clamp(bn, bd, big)) < s->b.t) {
         s->b.t = t;
-        s->b.face = prim_plane_face(p->kind, bf);
+        s->b.face = prim_clip_face_end(p->kind, bf);
     }
     return s->a.t < s->b.t;
 }

@@ -51,17 +51,24 @@ static inline void prim_ray_set(prim_ray *r, vec3 o, vec3 d, int excl_prim, int 
 
 /* A planar face: plane k of a primitive is face prim_plane_face(kind, k).
  * In binary64 the layout is that of double[4], so the planes in double
- * (prim.pl_d) are the same storage (PRIM_PL_SHARED). */
+ * (prim.pl_d) are the same storage (PRIM_PL_SHARED) and the clip derives
+ * the face; in the other modes the plane holds it (prim.c, prim_clip_face). */
+#if defined(NUM_MODE_f64)
+#define PRIM_PL_SHARED 1
+#else
+#define PRIM_PL_SHARED 0
+#endif
+
 typedef struct prim_plane {
     vec3 n;            /* outward unit normal, world */
     num d;             /* plane n.p = d; inside n.p <= d */
+#if !PRIM_PL_SHARED
+    int face;          /* prim_plane_face of its index, read by the clip */
+#endif
 } prim_plane;
 
-#if defined(NUM_MODE_f64)
-#define PRIM_PL_SHARED 1
+#if PRIM_PL_SHARED
 typedef char prim_plane_is_4_doubles[sizeof(prim_plane) == 4 * sizeof(double) ? 1 : -1];
-#else
-#define PRIM_PL_SHARED 0
 #endif
 
 /* A primitive's placement in binary64: world_from_canonical (linear part
@@ -120,10 +127,13 @@ static inline int prim_face_plane(int kind, int face)
 }
 
 /* The face of plane k of a primitive of kind `kind` (prim_face_plane's
- * inverse). */
+ * inverse): k, after the curved side of a cylinder or a cone, the two odd
+ * kinds (checked below), so one AND and one add in the plane clip. */
+typedef char prim_odd_kinds_curved[PRIM_CYLINDER % 2 && PRIM_CONE % 2 && !(PRIM_SPHERE % 2)
+                                   && !(PRIM_BLOCK % 2) && !(PRIM_HALFSPACE % 2) ? 1 : -1];
 static inline int prim_plane_face(int kind, int k)
 {
-    return k + (kind == PRIM_CYLINDER || kind == PRIM_CONE);
+    return k + (kind & 1);
 }
 
 /* Compiles scene primitive sp (index id) under the normalisation nm, its
