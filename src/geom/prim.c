@@ -103,14 +103,86 @@ static const prim_cplane prim_block_planes[6] = {
 static const prim_cplane prim_cap_planes[2] = {{{0, 0, 1}, {0, 0, 1}}, {{0, 0, -1}, {0, 0, 0}}};
 static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}}};
 
+/* What prim_compile derives from p's kind, dimensions (c: the canonical
+ * solid's scale; cc, lo, hi: its box's centre and corners) and the linear
+ * part of the placement alone, into p: the canonical map a_d and its
+ * inverse, minv_s with its scale and the shortcuts of its columns, the
+ * plane normals (pl_d[k][0..2]) and, into *r, the bounding radius. */
+static int prim_compile_linear(prim *p, const scene_prim *sp, const geom_norm *nm, const double *c,
+                               const double *cc, const double *lo, const double *hi,
+                               const prim_cplane *cp, double *r, const char *file, diag *err)
+{
+    const double *m = sp->world_from_object;
+    double frob = 0;
+    int i, j;
+    /* canonical -> normalised world: A = scale * M3 * diag(c) */
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            p->fr->a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
+    if (dmath_m3_inverse(p->fr->a_d, p->fr->ainv_d))
+        return prim_fail(err, file, sp, "transform is singular");
+    for (i = 0; i < 9; i++)
+        frob += p->fr->ainv_d[i] * p->fr->ainv_d[i];
+    frob = sqrt(frob);
+    for (i = 0; i < 9; i++)
+        p->minv_s.m[i] = num_from_d(p->fr->ainv_d[i] / frob);
+    p->fast = prim_cols(&p->minv_s) << 24;
+    p->smin = num_from_d(1.0 / frob);
+    p->inv_smin = num_from_d(frob);
+    if (p->bounded && (p->smin == NUM_ZERO || num_to_d(p->inv_smin) < frob * (1 - 1e-3)))
+        return prim_fail(err, file, sp, "too small for the numeric range");
+    *r = 0;
+    if (sp->kind == PRIM_SPHERE) {
+        *r = dmath_m3_spectral_norm(p->fr->a_d);
+    } else if (p->bounded) {
+        int k;
+        /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
+         * and its image as long to the bit: four corners give the radius */
+        for (k = 0; k < 4; k++) {
+            double corner[3], w[3], len;
+            for (i = 0; i < 3; i++)
+                corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
+            dmath_m3_mul_v(p->fr->a_d, corner, w);
+            len = dmath_len3(w);
+            if (len > *r)
+                *r = len;
+        }
+    }
+    for (i = 0; i < p->nplanes; i++) {
+        double len;
+        dmath_m3_tmul_v(p->fr->ainv_d, cp[i].n, p->pl_d[i]);
+        len = dmath_len3(p->pl_d[i]);
+        for (j = 0; j < 3; j++)
+            p->pl_d[i][j] /= len;
+    }
+    return 0;
+}
+
+/* prim_compile_linear's results taken from twin, compiled before from a
+ * primitive of the same kind, dimensions and linear part (prim_twin): the
+ * same operations on the same numbers, so the same values. */
+static void prim_compile_twin(prim *p, const prim *twin)
+{
+    int i;
+    memcpy(p->fr->a_d, twin->fr->a_d, sizeof p->fr->a_d);
+    memcpy(p->fr->ainv_d, twin->fr->ainv_d, sizeof p->fr->ainv_d);
+    p->minv_s = twin->minv_s;
+    p->fast = twin->fast & ~0xffffffu;
+    p->smin = twin->smin;
+    p->inv_smin = twin->inv_smin;
+    for (i = 0; i < p->nplanes; i++)
+        memcpy(p->pl_d[i], twin->pl_d[i], 3 * sizeof p->pl_d[i][0]);
+}
+
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
-                     double (*pl_d)[4], prim_frame *fr, prim *out, const char *file, diag *err)
+                     double (*pl_d)[4], prim_frame *fr, const prim *twin, double *radius, prim *out,
+                     const char *file, diag *err)
 {
     prim p;
     double c[3] = {1, 1, 1}, cc[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
-    double frob = 0, r = 0, bc[3];
+    double r = 0, bc[3];
     const prim_cplane *cp = NULL;
-    int i, j, ncp = 0;
+    int i, j, ncp = 0, st;
     const double *d = sp->dim, *m = sp->world_from_object;
 
     memset(&p, 0, sizeof p);
@@ -173,49 +245,21 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     default:
         return prim_fail(err, file, sp, "unknown primitive kind");
     }
-    /* canonical -> normalised world: A = scale * M3 * diag(c), org likewise */
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            p.fr->a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
-            frob += p.fr->a_d[3 * i + j] * p.fr->a_d[3 * i + j];
-        }
-        p.fr->org_d[i] = nm->scale * m[4 * i + 3] + nm->off[i];
+    p.nplanes = ncp;
+    if (twin) {
+        prim_compile_twin(&p, twin);
+        r = *radius;
+    } else if ((st = prim_compile_linear(&p, sp, nm, c, cc, lo, hi, cp, &r, file, err))) {
+        return st;
     }
-    if (dmath_m3_inverse(p.fr->a_d, p.fr->ainv_d))
-        return prim_fail(err, file, sp, "transform is singular");
-    frob = 0;
-    for (i = 0; i < 9; i++)
-        frob += p.fr->ainv_d[i] * p.fr->ainv_d[i];
-    frob = sqrt(frob);
-    for (i = 0; i < 9; i++)
-        p.minv_s.m[i] = num_from_d(p.fr->ainv_d[i] / frob);
-    p.fast = prim_cols(&p.minv_s) << 24;
-    p.smin = num_from_d(1.0 / frob);
-    p.inv_smin = num_from_d(frob);
+    for (i = 0; i < 3; i++)
+        p.fr->org_d[i] = nm->scale * m[4 * i + 3] + nm->off[i];
     p.org = vec3_from_d(p.fr->org_d);
-    if (p.bounded && (p.smin == NUM_ZERO || num_to_d(p.inv_smin) < frob * (1 - 1e-3)))
-        return prim_fail(err, file, sp, "too small for the numeric range");
 
     /* bounding sphere */
     dmath_m3_mul_v(p.fr->a_d, cc, bc);
     for (i = 0; i < 3; i++)
         bc[i] += p.fr->org_d[i];
-    if (sp->kind == PRIM_SPHERE) {
-        r = dmath_m3_spectral_norm(p.fr->a_d);
-    } else if (p.bounded) {
-        int k;
-        /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
-         * and its image as long to the bit: four corners give the radius */
-        for (k = 0; k < 4; k++) {
-            double corner[3], w[3], len;
-            for (i = 0; i < 3; i++)
-                corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
-            dmath_m3_mul_v(p.fr->a_d, corner, w);
-            len = dmath_len3(w);
-            if (len > r)
-                r = len;
-        }
-    }
     if (p.bounded) {
         for (i = 0; i < 3; i++)
             if (fabs(bc[i]) + r > 4 * GEOM_W)
@@ -226,18 +270,12 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
 
     /* planar faces as world planes in double, rounded once (prim_share may
      * replace them by a coincident plane of another primitive) */
-    p.nplanes = ncp;
     for (i = 0; i < ncp; i++) {
-        double n[3], pt[3], len;
-        dmath_m3_tmul_v(p.fr->ainv_d, cp[i].n, n);
-        len = dmath_len3(n);
-        for (j = 0; j < 3; j++)
-            n[j] /= len;
+        double pt[3];
         dmath_m3_mul_v(p.fr->a_d, cp[i].p, pt);
         for (j = 0; j < 3; j++)
             pt[j] += p.fr->org_d[j];
-        memcpy(p.pl_d[i], n, sizeof n);
-        p.pl_d[i][3] = dmath_dot3(n, pt);
+        p.pl_d[i][3] = dmath_dot3(p.pl_d[i], pt);
 #if !PRIM_PL_SHARED
         p.pl[i].face = prim_plane_face(p.kind, i);
 #endif
@@ -246,6 +284,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     /* each code once all the planes it may refer to are rounded */
     for (i = 0; i < ncp; i++)
         p.fast |= (unsigned)prim_dot_code(&p, i) << 3 * i;
+    *radius = r;
     *out = p;
     return 0;
 }

@@ -139,11 +139,17 @@ static inline int prim_plane_face(int kind, int k)
 /* Compiles scene primitive sp (index id) under the normalisation nm, its
  * planes into pl and pl_d (prim_nplanes(sp->kind) entries each; in
  * binary64 (PRIM_PL_SHARED) pl_d must be pl itself) and its
- * placement into fr, all kept by out. 0 on success; DIAG_INPUT (located at
- * sp->loc in file) for bad dimensions, non-finite or singular transforms,
- * or a primitive outside the range. */
+ * placement into fr, all kept by out; *radius receives its bounding
+ * radius. twin: NULL, or a primitive compiled before (and not yet shared)
+ * from a scene primitive of sp's kind, dimensions and linear part, bit for
+ * bit (model/prim_twin.h), with *radius the radius that compile gave:
+ * what depends on those alone is then taken from it, with the values the
+ * compile would form. 0 on success; DIAG_INPUT (located at sp->loc in
+ * file) for bad dimensions, non-finite or singular transforms, or a
+ * primitive outside the range. */
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
-                     double (*pl_d)[4], prim_frame *fr, prim *out, const char *file, diag *err);
+                     double (*pl_d)[4], prim_frame *fr, const prim *twin, double *radius, prim *out,
+                     const char *file, diag *err);
 
 /* Gives coincident geometry of the compiled primitives one representation
  * (docs/numerics.md, "Coincident surfaces"): every plane equal within

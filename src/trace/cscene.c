@@ -1,6 +1,7 @@
 /* cscene — scene analysis and per-mode compilation (see cscene.h). */
 #include "trace/cscene.h"
 #include "util/dmath.h"
+#include "model/prim_twin.h"
 #include "model/scene_map.h"
 #include "util/mem.h"
 #include <float.h>
@@ -395,6 +396,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
     size_t i, npl = 0;
+    prim_twin tw = {NULL, 0};
     int status = DIAG_IO;
 
     if (!cscene_finite3(v->eye) || !cscene_finite3(v->look) || !cscene_finite3(v->up)
@@ -448,18 +450,32 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         }
     }
     cs->nprims = sc->nprims;
+    if (prim_twin_init(&tw, sc->nprims)) {
+        diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+        goto fail;
+    }
+    /* each primitive with the linear results of its first twin, if any */
     for (i = 0, npl = 0; i < sc->nprims; i++) {
         const scene_prim *sp = &sc->prims[i];
+        prim_twin_entry *e = prim_twin_at(&tw, sc->prims, sp);
+        int known = e->index != PRIM_TWIN_NONE;
+        double radius = known ? e->note : 0;
         if (sp->attr < 0 || (size_t)sp->attr >= sc->nattrs) {
             status = diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                              "primitive '%s': attribute index out of range", sp->name);
             goto fail;
         }
         if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl, cs->prim_fr + i,
-                                       &cs->prims[i], cscene_file(sc), err)))
+                                       known ? &cs->prims[e->index] : NULL, &radius, &cs->prims[i],
+                                       cscene_file(sc), err)))
             goto fail;
+        if (!known) {
+            e->index = i;
+            e->note = radius;
+        }
         npl += (size_t)prim_nplanes(sp->kind);
     }
+    prim_twin_free(&tw);
     if ((status = NS(prim_share)(cs->prims, cs->nprims, err)) || (status = cscene_ranges(sc, cs, err)))
         goto fail;
     for (i = 0; i < sc->nattrs; i++) {
@@ -510,6 +526,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     *out = cs;
     return 0;
 fail:
+    prim_twin_free(&tw);
     NS(cscene_free)(cs);
     return status ? status : DIAG_IO;
 }

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "geom/prim.h"
+#include "model/prim_twin.h"
 #include "trace/cscene.h"
 #include "util/dmath.h"
 #include "tracer_test.h"
@@ -172,7 +173,10 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
                 continue;
             if (sp->kind == PRIM_BLOCK)
                 lo[0] = lo[1] = 0, cc[0] = cc[1] = 0.5;
-            assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &fr, &p, "test", &err), 0);
+            {
+                double radius;
+                assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &fr, NULL, &radius, &p, "test", &err), 0);
+            }
             for (k = 0; k < 8; k++) {
                 double corner[3], w[3], len;
                 for (i = 0; i < 3; i++)
@@ -499,6 +503,136 @@ static void test_cscene_same_solids_shared(void **state)
     }
 }
 
+/* The fields of two compiled primitives and their storage that the compile
+ * writes, bit for bit (not the pointers). */
+static int cscene_test_alike(const prim *a, const prim *b, double ra, double rb)
+{
+    int k;
+    if (a->kind != b->kind || a->id != b->id || a->attr != b->attr || a->bounded != b->bounded
+        || a->nplanes != b->nplanes || a->fast != b->fast || memcmp(&a->bc, &b->bc, sizeof a->bc)
+        || memcmp(&a->br, &b->br, sizeof a->br) || memcmp(&a->org, &b->org, sizeof a->org)
+        || memcmp(&a->minv_s, &b->minv_s, sizeof a->minv_s) || memcmp(&a->smin, &b->smin, sizeof a->smin)
+        || memcmp(&a->inv_smin, &b->inv_smin, sizeof a->inv_smin)
+        || memcmp(&a->cone_a, &b->cone_a, sizeof a->cone_a) || memcmp(&a->cone_k, &b->cone_k, sizeof a->cone_k)
+        || memcmp(a->fr, b->fr, sizeof *a->fr) || memcmp(&ra, &rb, sizeof ra))
+        return 0;
+    for (k = 0; k < a->nplanes; k++)
+        if (memcmp(a->pl_d[k], b->pl_d[k], sizeof a->pl_d[k]) || memcmp(&a->pl[k], &b->pl[k], sizeof a->pl[k]))
+            return 0;
+    return 1;
+}
+
+/* 200 random decks, each a part of every bounded kind under random
+ * transforms (every other deck turned by right angles only), placed seven
+ * times: four times moved only (twins of the
+ * first placement), once turned, once mirrored, once scaled. Every
+ * primitive compiled with its first twin's linear results (prim_twin, as
+ * the scene compiler does) equals the one compiled on its own, bit for bit,
+ * and the twins are found: three of every four moved placements. */
+static void test_cscene_twins_compile_alike(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_twins_compile_alike");
+    int deck;
+    (void)state;
+    for (deck = 0; deck < 200; deck++) {
+        static const char *const body[][2] = {
+            {"BLOCK", "1 2 0.5"}, {"SPHERE", "0.8"}, {"CYLINDER", "0.4 2.5"}, {"CONE", "0.7 0.2 1.5"}};
+        static const char *const place[7] = {"", "", "", "", "ROTATE Z 90", "SCALE -1 1 1", "SCALE 2"};
+        char text[8192], tail[256];
+        size_t len = 0, n, found = 0;
+        scene *sc;
+        cscene *cs;
+        prim_twin tw;
+        prim *ref, *got;
+        prim_plane (*pl)[6];
+        double (*pld)[6][4], *rad;
+        prim_frame *fr;
+        diag err;
+        int i;
+        len += (size_t)snprintf(text + len, sizeof text - len, "EYE 30 -40 20\nLOOKAT 0 0 0\nLIGHT 0 0 50\n");
+        for (i = 0; i < 4; i++) {
+            if (deck % 2)       /* turned by right angles: minv_s's column shortcuts */
+                snprintf(tail, sizeof tail, "ROTATE %c 90 SCALE %.4f TRANSLATE %.4f 0 %.4f", "XYZ"[i % 3],
+                         test_uniform(&seed, 0.5, 2), test_uniform(&seed, -2, 2), test_uniform(&seed, -2, 2));
+            else
+                tt_random_tail(&seed, tail, sizeof tail);
+            len += (size_t)snprintf(text + len, sizeof text - len, "%s Q%d %s %s\n", body[i][0], i, body[i][1], tail);
+        }
+        len += (size_t)snprintf(text + len, sizeof text - len, "UNION P Q0 Q1 Q2 Q3\n");
+        for (i = 0; i < 7; i++)
+            len += (size_t)snprintf(text + len, sizeof text - len, "OBJECT P %s TRANSLATE %.4f %.4f %.4f\n",
+                                    place[i], test_uniform(&seed, -9, 9), test_uniform(&seed, -9, 9),
+                                    test_uniform(&seed, -9, 9));
+        assert_true(len < sizeof text);
+        sc = tt_parse(text);
+        cs = cscene_test_compile(sc);
+        n = sc->nprims;
+        ref = test_malloc(2 * n * sizeof *ref);
+        got = ref + n;
+        pl = test_malloc(2 * n * sizeof *pl);
+        pld = test_malloc(2 * n * sizeof *pld);
+        fr = test_malloc(2 * n * sizeof *fr);
+        rad = test_malloc(2 * n * sizeof *rad);
+        assert_int_equal(prim_twin_init(&tw, n), 0);
+        diag_init(&err);
+        for (i = 0; i < (int)n; i++) {
+            const scene_prim *sp = &sc->prims[i];
+            prim_twin_entry *e = prim_twin_at(&tw, sc->prims, sp);
+            int known = e->index != PRIM_TWIN_NONE;
+            assert_int_equal(f64_prim_compile(sp, i, &cs->nm, pl[i], pld[i], &fr[i], NULL, &rad[i], &ref[i], "test",
+                                              &err), 0);
+            rad[n + i] = known ? e->note : 0;
+            assert_int_equal(f64_prim_compile(sp, i, &cs->nm, pl[n + i], pld[n + i], &fr[n + i],
+                                              known ? &got[e->index] : NULL, &rad[n + i], &got[i], "test", &err), 0);
+            if (!known) {
+                e->index = (size_t)i;
+                e->note = rad[n + i];
+            }
+            found += (size_t)known;
+            assert_true(cscene_test_alike(&ref[i], &got[i], rad[i], rad[n + i]));
+        }
+        assert_true(found >= 12);
+        prim_twin_free(&tw);
+        test_free(ref);
+        test_free(pl);
+        test_free(pld);
+        test_free(fr);
+        test_free(rad);
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+}
+
+/* Twins are primitives whose kind, dimensions and linear part agree bit
+ * for bit: a zero of the other sign, or the other kind, is none. */
+static void test_cscene_twins_bit_for_bit(void **state)
+{
+    scene_prim p[4];
+    prim_twin tw;
+    prim_twin_entry *e;
+    int i;
+    (void)state;
+    memset(p, 0, sizeof p);
+    for (i = 0; i < 4; i++) {
+        p[i].kind = PRIM_CYLINDER;
+        p[i].dim[0] = 1;
+        p[i].dim[1] = 2;
+        p[i].world_from_object[0] = p[i].world_from_object[5] = p[i].world_from_object[10] = 1;
+        p[i].world_from_object[15] = 1;
+    }
+    p[1].world_from_object[3] = 7;         /* moved: a twin */
+    p[2].world_from_object[1] = -0.0;      /* the other zero: none */
+    p[3].kind = PRIM_CONE;
+    assert_int_equal(prim_twin_init(&tw, 4), 0);
+    e = prim_twin_at(&tw, p, &p[0]);
+    assert_int_equal(e->index, PRIM_TWIN_NONE);
+    e->index = 0;
+    assert_int_equal(prim_twin_at(&tw, p, &p[1])->index, 0);
+    assert_int_equal(prim_twin_at(&tw, p, &p[2])->index, PRIM_TWIN_NONE);
+    assert_int_equal(prim_twin_at(&tw, p, &p[3])->index, PRIM_TWIN_NONE);
+    prim_twin_free(&tw);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -508,6 +642,8 @@ int main(void)
         cmocka_unit_test(test_cscene_primary_batch_skips_nothing),
         cmocka_unit_test(test_cscene_far_halfspace_moved),
         cmocka_unit_test(test_cscene_same_solids_shared),
+        cmocka_unit_test(test_cscene_twins_compile_alike),
+        cmocka_unit_test(test_cscene_twins_bit_for_bit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,68 @@
+/* prim_twin — scene primitives that differ only in where they are (see
+ * prim_twin.h). Open addressing with linear probing, at most half full. */
+#include "model/prim_twin.h"
+#include "util/mem.h"
+#include <stdint.h>
+#include <string.h>
+
+/* The words compared: the dimensions, then the linear part of the row-major
+ * 4x4 world_from_object (its translation column left out). */
+static const int prim_twin_lin[9] = {0, 1, 2, 4, 5, 6, 8, 9, 10};
+
+static int prim_twin_same(const scene_prim *a, const scene_prim *b)
+{
+    int k;
+    if (a->kind != b->kind || memcmp(a->dim, b->dim, sizeof a->dim))
+        return 0;
+    for (k = 0; k < 9; k++)
+        if (memcmp(&a->world_from_object[prim_twin_lin[k]], &b->world_from_object[prim_twin_lin[k]],
+                   sizeof(double)))
+            return 0;
+    return 1;
+}
+
+/* A hash of exactly the bits prim_twin_same compares (FNV-1a over 64-bit
+ * words, then a final mix of the high bits into the low ones). */
+static uint64_t prim_twin_hash(const scene_prim *sp)
+{
+    uint64_t h = 0xcbf29ce484222325u ^ (uint64_t)sp->kind, w;
+    int k;
+    for (k = 0; k < 12; k++) {
+        const double *v = k < 3 ? &sp->dim[k] : &sp->world_from_object[prim_twin_lin[k - 3]];
+        memcpy(&w, v, sizeof w);
+        h = (h ^ w) * 0x100000001b3u;
+    }
+    h ^= h >> 32;
+    h *= 0xd6e8feb86659fd93u;
+    return h ^ (h >> 32);
+}
+
+int prim_twin_init(prim_twin *t, size_t n)
+{
+    size_t cap = 16, i;
+    while (cap / 2 < n) {
+        if (cap > SIZE_MAX / 2 / sizeof *t->e)
+            return -1;
+        cap *= 2;
+    }
+    if (!(t->e = mem_alloc(cap * sizeof *t->e)))
+        return -1;
+    for (i = 0; i < cap; i++)
+        t->e[i].index = PRIM_TWIN_NONE;
+    t->mask = cap - 1;
+    return 0;
+}
+
+void prim_twin_free(prim_twin *t)
+{
+    mem_free(t->e);
+    t->e = NULL;
+}
+
+prim_twin_entry *prim_twin_at(const prim_twin *t, const scene_prim *prims, const scene_prim *sp)
+{
+    size_t i = (size_t)prim_twin_hash(sp) & t->mask;
+    while (t->e[i].index != PRIM_TWIN_NONE && !prim_twin_same(&prims[t->e[i].index], sp))
+        i = (i + 1) & t->mask;
+    return &t->e[i];
+}
