@@ -203,6 +203,16 @@ $(BUILD)/bench/cputime: bench/peers/cputime.c
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(CFLAGS) -o $@ $<
 
+# Every input of the fixed-point reciprocal square root against long
+# double (the bound fx.h states; docs/numerics.md).
+$(BUILD)/tools/rsqrt_bound: tools/rsqrt_bound.c src/num/fx.c src/num/fx.h
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(CFLAGS) -fopenmp -Isrc -o $@ tools/rsqrt_bound.c src/num/fx.c $(LDFLAGS) -lm
+
+.PHONY: check-rsqrt
+check-rsqrt: $(BUILD)/tools/rsqrt_bound
+	$(BUILD)/tools/rsqrt_bound
+
 .PHONY: bench-peers
 bench-peers: deps all $(BUILD)/bench/minimal $(if $(ISA_V3),$(BUILD)/bench/minimal-v3) $(BUILD)/bench/cputime
 	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal $(BUILD)/bench/cputime

@@ -261,6 +261,34 @@ static void test_fx16_rsqrt_rounds_to_nearest(void **state)
     assert_true(fx_overflows == before + 1);
 }
 
+/* fx_rsqrt_q30's knots are 2^30/sqrt(j/512) rounded, and its value is
+ * within 1.35 units of 2^46/sqrt(xs) (the bound tools/rsqrt_bound.c finds
+ * over every xs) at the knots and the 256 inputs either side of each, the
+ * ends of the range, and random inputs. */
+static void test_fx_rsqrt_q30_bound(void **state)
+{
+    uint64_t s = test_seed("test_fx_rsqrt_q30_bound");
+    int j, d, i;
+    (void)state;
+    for (j = 0; j <= 384; j++)
+        assert_true((long double)fx_rsqrt_tab[j] == ref_round(1073741824.0L / sqrtl((128.0L + j) / 512.0L)));
+    for (i = 0; i < 1000000 + 385 * 512; i++) {
+        uint64_t xs;
+        long double e;
+        if (i < 385 * 512) {
+            j = i / 512;
+            d = i % 512 - 256;
+            xs = ((uint64_t)(128 + j) << 23) + (uint64_t)(int64_t)d;
+            if (xs < (uint64_t)1 << 30 || xs >= (uint64_t)1 << 32)
+                continue;
+        } else {
+            xs = ((uint64_t)1 << 30) + test_rand(&s) % ((uint64_t)3 << 30);
+        }
+        e = (long double)fx_rsqrt_q30(xs) - 70368744177664.0L / sqrtl((long double)xs);
+        assert_true(e > -1.35L && e < 1.35L);
+    }
+}
+
 /* num_div_clamp's saturating form in Q16.16, the reference for
  * fx16_div_clamp. */
 static fx16 ref_div_clamp(fx16 a, fx16 b, fx16 lim)
@@ -410,6 +438,7 @@ int main(void)
         cmocka_unit_test(test_fx32_div_sqrt_full_range),
         cmocka_unit_test(test_fx32_native_matches_portable),
         cmocka_unit_test(test_fx16_rsqrt_rounds_to_nearest),
+        cmocka_unit_test(test_fx_rsqrt_q30_bound),
         cmocka_unit_test(test_fx16_div_clamp_matches_saturating_form),
         cmocka_unit_test(test_fx16_from_double_rounds_like_reference),
     };
