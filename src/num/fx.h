@@ -78,11 +78,18 @@ static inline fx16 fx16_sub(fx16 a, fx16 b) { return fx16_sat((int64_t)a - b); }
 static inline fx16 fx16_neg(fx16 a) { return fx16_sat(-(int64_t)a); }
 static inline fx16 fx16_abs(fx16 a) { return a < 0 ? fx16_neg(a) : a; }
 
-/* v / 2^k rounded to nearest, ties away from zero (k >= 1). */
+/* floor(x / 2^k) (0 <= k < 63), without C's implementation-defined shift
+ * of a negative value: GCC and Clang make one arithmetic shift of it. */
+static inline int64_t fx_sar(int64_t x, int k) { return x < 0 ? ~(~x >> k) : x >> k; }
+
+/* v / 2^k rounded to nearest, ties away from zero (1 <= k < 63, |v| <
+ * 2^62): floor((v + 2^(k-1) - [v < 0]) / 2^k), which for v < 0 is
+ * -floor((-v + 2^(k-1)) / 2^k). No branch on the sign: the signs of
+ * direction and normal components are as good as random, and a branch
+ * on them is mispredicted half the time. */
 static inline int64_t fx_shr_round(int64_t v, int k)
 {
-    int64_t h = (int64_t)1 << (k - 1);
-    return v >= 0 ? (v + h) >> k : -((-v + h) >> k);
+    return fx_sar(v + ((int64_t)1 << (k - 1)) - (v < 0), k);
 }
 
 /* Q16.16 product, rounded to nearest (ties away from zero), not saturated:

@@ -261,6 +261,29 @@ static void test_fx16_rsqrt_rounds_to_nearest(void **state)
     assert_true(fx_overflows == before + 1);
 }
 
+/* fx_shr_round against its definition on magnitudes (round half away
+ * from zero), for every shift, ties either side of zero and random values
+ * below 2^62 in size. */
+static void test_fx_shr_round_ties_away(void **state)
+{
+    uint64_t s = test_seed("test_fx_shr_round_ties_away");
+    int i, k;
+    (void)state;
+    for (k = 1; k < 63; k++) {
+        int64_t h = (int64_t)1 << (k - 1);
+        for (i = 0; i < 20000; i++) {
+            int64_t v = (int64_t)(test_rand(&s) >> (2 + test_rand(&s) % 62)), m, want;
+            if (i % 4 == 1)
+                v = (v >> k << k) + h;            /* a tie */
+            if (i % 2)
+                v = -v;
+            m = v < 0 ? -v : v;
+            want = (m + h) >> k;
+            assert_true(fx_shr_round(v, k) == (v < 0 ? -want : want));
+        }
+    }
+}
+
 /* fx_rsqrt_q30's knots are 2^30/sqrt(j/512) rounded, and its value is
  * within 1.35 units of 2^46/sqrt(xs) (the bound tools/rsqrt_bound.c finds
  * over every xs) at the knots and the 256 inputs either side of each, the
@@ -439,6 +462,7 @@ int main(void)
         cmocka_unit_test(test_fx32_native_matches_portable),
         cmocka_unit_test(test_fx16_rsqrt_rounds_to_nearest),
         cmocka_unit_test(test_fx_rsqrt_q30_bound),
+        cmocka_unit_test(test_fx_shr_round_ties_away),
         cmocka_unit_test(test_fx16_div_clamp_matches_saturating_form),
         cmocka_unit_test(test_fx16_from_double_rounds_like_reference),
     };
