@@ -2,6 +2,8 @@
 #include "support.h"
 #include "util/mem.h"
 #include <dirent.h>
+#include <float.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,4 +63,10 @@ int test_dir_entries(const char *path)
         n += strcmp(e->d_name, ".") && strcmp(e->d_name, "..");
     closedir(d);
     return n;
+}
+
+int test_long_double_ok(void)
+{
+    volatile long double one = 1.0L, tiny = ldexpl(1.0L, -63);
+    return LDBL_MANT_DIG >= 64 && one + tiny != one;
 }

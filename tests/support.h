@@ -16,4 +16,8 @@ char *test_read_file(const char *path, size_t *len);
 /* Number of entries other than . and .. in directory path; -1 if it
  * cannot be opened. */
 int test_dir_entries(const char *path);
+/* 1 when long double arithmetic really carries 64 bits, as references
+ * computed in it need: LDBL_MANT_DIG says so on x86-64, but valgrind runs
+ * x87 code with 53. */
+int test_long_double_ok(void);
 #endif

@@ -82,11 +82,11 @@ static inline fx16 fx16_abs(fx16 a) { return a < 0 ? fx16_neg(a) : a; }
  * of a negative value: GCC and Clang make one arithmetic shift of it. */
 static inline int64_t fx_sar(int64_t x, int k) { return x < 0 ? ~(~x >> k) : x >> k; }
 
-/* v / 2^k rounded to nearest, ties away from zero (1 <= k < 63, |v| <
- * 2^62): floor((v + 2^(k-1) - [v < 0]) / 2^k), which for v < 0 is
- * -floor((-v + 2^(k-1)) / 2^k). No branch on the sign: the signs of
- * direction and normal components are as good as random, and a branch
- * on them is mispredicted half the time. */
+/* v / 2^k rounded to nearest, ties away from zero (1 <= k <= 62,
+ * |v| <= INT64_MAX - 2^(k-1)): floor((v + 2^(k-1) - [v < 0]) / 2^k),
+ * which for v < 0 is -floor((-v + 2^(k-1)) / 2^k). No branch on the
+ * sign: the signs of direction and normal components are data, and a
+ * branch on them is often mispredicted. */
 static inline int64_t fx_shr_round(int64_t v, int k)
 {
     return fx_sar(v + ((int64_t)1 << (k - 1)) - (v < 0), k);

@@ -19,7 +19,6 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <cmocka.h>
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -424,21 +423,12 @@ static int check_one(uint64_t *st, enum op op, int nd, uint64_t *shown_a, uint64
     return got == ref && exc_same(before, want);
 }
 
-/* 1 when long double arithmetic really carries 64 bits, as the reference's
- * conversions need: LDBL_MANT_DIG says so on x86-64, but valgrind runs x87
- * code with 53. */
-static int ref_long_double_ok(void)
-{
-    volatile long double one = 1.0L, tiny = ldexpl(1.0L, -63);
-    return LDBL_MANT_DIG >= 64 && one + tiny != one;
-}
-
 static void check_random(const char *test, int nd)
 {
     uint64_t s = test_seed(test);
     long n = hfp_n(), k, bad[OP_N] = {0};
     int op, total = 0;
-    if (!ref_long_double_ok()) {
+    if (!test_long_double_ok()) {
         printf("# %s: SKIPPED, long double arithmetic has fewer than 64 bits here "
                "(the reference needs 64; valgrind emulates 53)\n", test);
         return;
@@ -668,7 +658,7 @@ static void test_hfp_data_round_trips(void **state)
     long n = hfp_n(), k;
     diag err;
     (void)state;
-    if (!ref_long_double_ok()) {
+    if (!test_long_double_ok()) {
         printf("# test_hfp_data_round_trips: SKIPPED, long double has fewer than 64 bits here\n");
         return;
     }
