@@ -136,7 +136,8 @@ static inline fx16 fx16_sqrt(fx16 a)
 /* 1/sqrt(a) in Q16.16 for a > 0, rounded to nearest: round(2^24/sqrt(raw)).
  * fx_rsqrt_q30 (a table of 385 knots and one Newton step in integers)
  * gives it to well under one unit; an exact integer test then settles the
- * last unit. No divide and no floating point. a <= 0 counts an overflow and gives FX16_MAX. */
+ * last unit. No divide and no floating point. a <= 0 counts an overflow
+ * and gives FX16_MAX. */
 fx16 fx16_rsqrt(fx16 a);
 
 extern const uint32_t fx_rsqrt_tab[385];
