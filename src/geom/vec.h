@@ -147,6 +147,29 @@ VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
 
 static inline int vec3_normalize(vec3 v, vec3 *unit, num *len) { return vec3_unit(v, unit, len, NULL); }
 
+/* Unit vector along v where |v| is close to 1 (a mirror or refracted
+ * direction formed from unit vectors); -1 for v = 0, as vec3_unit.
+ * q16: with x = |v|^2 - 1 within 2^-10 (|v|^2 summed exactly), 1/|v| is
+ * the series 1 - x/2 + 3x^2/8 of (1 + x)^-1/2 in Q.32, which leaves out
+ * less than 5/16 |x|^3 <= 2^-31.6 and rounds below 2^-31; each component is
+ * then rounded once: within 0.50003 units of its exact value (vec3_unit's
+ * table and Newton step: 0.50006), with three multiplies where the table
+ * needs seven in a chain (docs/numerics.md). Else, and in every other mode,
+ * vec3_unit. */
+VEC_HOT int vec3_unit_near(vec3 v, vec3 *unit)
+{
+#if defined(NUM_MODE_q16)
+    int64_t s = (int64_t)v.x * v.x + (int64_t)v.y * v.y + (int64_t)v.z * v.z, x = s - ((int64_t)1 << 32);
+    if (x >= -((int64_t)1 << 22) && x <= ((int64_t)1 << 22)) {
+        int64_t y = ((int64_t)1 << 32) - x / 2 + (3 * (x * x >> 16) >> 19);     /* Q.32 */
+        *unit = vec3_make((num)fx_shr_round(v.x * y, 32), (num)fx_shr_round(v.y * y, 32),
+                          (num)fx_shr_round(v.z * y, 32));
+        return 0;
+    }
+#endif
+    return vec3_unit(v, unit, NULL, NULL);
+}
+
 /* a + t*d - c: a point along a ray, measured from c. q16: each component
  * summed in 64 bits from the rounded product and saturated once, the value
  * of vec3_sub(vec3_madd(a, t, d), c) unless a + t*d leaves the range

@@ -4,7 +4,7 @@
 int NS(optics_reflect)(vec3 d, vec3 n, vec3 *r)
 {
     num two_dn = num_mul(num_from_i(2), vec3_dot(d, n));
-    return vec3_normalize(vec3_sub(d, vec3_scale(n, two_dn)), r, NULL) ? -1 : 0;
+    return vec3_unit_near(vec3_sub(d, vec3_scale(n, two_dn)), r) ? -1 : 0;
 }
 
 int NS(optics_refract)(vec3 d, vec3 n, double eta, vec3 *t)
@@ -18,5 +18,5 @@ int NS(optics_refract)(vec3 d, vec3 n, double eta, vec3 *t)
         return 1;
     ne = num_from_d(eta);
     nk = num_sub(num_mul(ne, num_from_d(cosi)), num_sqrt(num_from_d(k)));
-    return vec3_normalize(vec3_add(vec3_scale(d, ne), vec3_scale(n, nk)), t, NULL) ? -1 : 0;
+    return vec3_unit_near(vec3_add(vec3_scale(d, ne), vec3_scale(n, nk)), t) ? -1 : 0;
 }

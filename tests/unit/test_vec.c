@@ -187,6 +187,42 @@ static void test_vec_unit_matches_loops(void **state)
     }
 }
 
+/* vec3_unit_near against the exact unit vector (long double): near-unit
+ * vectors up to and past the edge of its series' window, each component
+ * within 0.50004 units of 2^-16 (the series without its x^2 term misses by
+ * up to 0.023 units at the window's edge); outside the window exactly
+ * vec3_unit's; the zero vector refused. */
+static void test_vec_unit_near_exact(void **state)
+{
+    uint64_t s = test_seed("test_vec_unit_near_exact");
+    long i, inside = 0;
+    vec3 u;
+    (void)state;
+    if (!test_long_double_ok())
+        skip();
+    assert_int_equal(vec3_unit_near(vec3_make(0, 0, 0), &u), -1);
+    for (i = 0; i < 3000000; i++) {
+        double a = vt_uniform(&s, 1), b = vt_uniform(&s, 3.141592653589793), r = sqrt(1 - a * a);
+        double len = 1 + vt_uniform(&s, 1) * ldexp(1, -9 - (int)(i % 8));    /* |v|^2 - 1 up to 2^-8 */
+        vec3 v = vec3_make(num_from_d(r * cos(b) * len), num_from_d(r * sin(b) * len), num_from_d(a * len)), w;
+        int64_t ss = (int64_t)v.x * v.x + (int64_t)v.y * v.y + (int64_t)v.z * v.z;
+        long double l = sqrtl((long double)ss), c[3], g[3];
+        int k;
+        assert_int_equal(vec3_unit_near(v, &u), 0);
+        if (ss < ((int64_t)1 << 32) - ((int64_t)1 << 22) || ss > ((int64_t)1 << 32) + ((int64_t)1 << 22)) {
+            assert_int_equal(vec3_unit(v, &w, NULL, NULL), 0);
+            vt_assert_vec_equal(u, w);
+            continue;
+        }
+        inside++;
+        c[0] = v.x; c[1] = v.y; c[2] = v.z;
+        g[0] = u.x; g[1] = u.y; g[2] = u.z;
+        for (k = 0; k < 3; k++)
+            assert_true(fabsl(g[k] - c[k] / l * 65536) <= 0.50004L);
+    }
+    assert_true(inside > 1000000);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -194,6 +230,7 @@ int main(void)
         cmocka_unit_test(test_vec_mat3_mul_single_entries),
         cmocka_unit_test(test_vec_madd_sub_matches_chained),
         cmocka_unit_test(test_vec_unit_matches_loops),
+        cmocka_unit_test(test_vec_unit_near_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
