@@ -1,11 +1,9 @@
 /* optics — reflected and refracted ray directions (see optics.h). */
 #include "trace/optics.h"
 
-int NS(optics_reflect)(vec3 d, vec3 n, vec3 *r)
-{
-    num two_dn = num_mul(num_from_i(2), vec3_dot(d, n));
-    return vec3_unit_near(vec3_sub(d, vec3_scale(n, two_dn)), r) ? -1 : 0;
-}
+#if !defined(NUM_MODE_q16)
+int NS(optics_reflect)(vec3 d, vec3 n, vec3 *r) { return optics_reflect_dir(d, n, r); }
+#endif
 
 int NS(optics_refract)(vec3 d, vec3 n, double eta, vec3 *t)
 {

@@ -199,8 +199,10 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
     if (!(depth == 0 && cs->eyebuf.start
               ? NS(csg_intersect_from)(&cs->tree, &cs->eyebuf, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)
               : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h))) {
-        for (i = 0; i < 3; i++)
-            rgb[i] = sc->background[i];
+        /* copied whole, as the colour is at the end: stored element by
+         * element, it was read back by the caller's wider loads, which
+         * wait until the stores retire (docs/performance.md, run AE) */
+        memcpy(rgb, sc->background, sizeof c);
         if (pid)
             *pid = -1;
         return;
@@ -273,6 +275,5 @@ void NS(trace_ray)(const cscene *cs, trace_ctx *tc, const prim_ray *r, int depth
      * have a weight. */
     if (!far && depth < cs->max_depth && shade_spawns(at))
         trace_secondary(cs, tc, r, &h, p, sf.n, ns, at, color, depth, weight, c);
-    for (i = 0; i < 3; i++)
-        rgb[i] = c[i];
+    memcpy(rgb, c, sizeof c);
 }
