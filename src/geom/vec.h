@@ -51,35 +51,18 @@ static inline vec3 vec3_cross(vec3 a, vec3 b)
 }
 static inline num vec3_maxabs(vec3 a) { return num_max(num_abs(a.x), num_max(num_abs(a.y), num_abs(a.z))); }
 
-#if defined(NUM_MODE_q16)
-/* vec3_unit's last steps for the scaled vector w (sum of squares ss, scale
- * 2^e), with k a constant in each of its two calls so that every shift
- * count is too. */
-VEC_HOT void vec3_unit_q16(const int64_t *w, int64_t ss, int e, int k, vec3 *unit, num *len, num *rlen)
-{
-    uint64_t xs = (uint64_t)ss >> (2 * k);
-    uint64_t y = fx_rsqrt_q30(xs);                      /* 2^k / sqrt(S), Q.30 */
-    if (unit)
-        *unit = vec3_make((num)fx_shr_round(w[0] * (int64_t)y, 30 + k),
-                          (num)fx_shr_round(w[1] * (int64_t)y, 30 + k),
-                          (num)fx_shr_round(w[2] * (int64_t)y, 30 + k));
-    if (len)      /* sqrt(S) 2^-e = xs y 2^(k - 46 - e) in Q16.16 */
-        *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - k + e));
-    if (rlen) {   /* 2^e / sqrt(S) = y 2^(e - k - 30) in Q16.16 */
-        int sh = 14 + k - e;
-        *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
-    }
-}
-#endif
-
 /* Unit vector along v, its length and the reciprocal of its length (each
  * output may be NULL). Returns 0, or -1 (outputs untouched) for v = 0.
- * No large component is ever squared and nothing is divided:
- *   q16: v is scaled by a power of two 2^e (exactly, or rounded when
- *        shifting right) so its largest component lies in [1, 2); the sum
- *        of squares S of the scaled vector is formed exactly in 64 bits
- *        and 1/sqrt(S) comes from fx_rsqrt_q30 (2^-29 relative), so each
- *        unit component is w_i/sqrt(S) rounded once.
+ * Nothing overflows and nothing is divided:
+ *   q16: the sum of squares S of v's raw components is formed exactly
+ *        (each square below 2^62, the sum below 3 2^62 in 64 unsigned
+ *        bits) and shifted by an even count 2j so that its top bit lies at
+ *        bit 30 or 31 (exact when shifting left, the bits below 2^30
+ *        dropped when shifting right); fx_rsqrt_q30 gives the reciprocal
+ *        square root of that (2^-29 relative), so each unit component is
+ *        v_i/sqrt(S) rounded once, within 0.5 + 2^-13 units of 2^-16 of
+ *        its exact value, and the length and its reciprocal within 0.5
+ *        units plus 2^-29 of the value (test_vec_unit_exact).
  *   f32/f64: one square root and one reciprocal when the largest component
  *        is in [2^-30, 2^30] (no overflow or underflow), else v is first
  *        divided by it.
@@ -87,39 +70,36 @@ VEC_HOT void vec3_unit_q16(const int64_t *w, int64_t ss, int e, int k, vec3 *uni
  *        reciprocal (native 128-bit divides where the compiler has them). */
 VEC_HOT int vec3_unit(vec3 v, vec3 *unit, num *len, num *rlen)
 {
+#if defined(NUM_MODE_q16)
+    uint64_t ss = (uint64_t)((int64_t)v.x * v.x) + (uint64_t)((int64_t)v.y * v.y)
+                  + (uint64_t)((int64_t)v.z * v.z), xs, y;
+    int t = 63, j;
+    if (ss == 0)
+        return -1;
+#if defined(__GNUC__)
+    t = 63 - __builtin_clzll(ss);                       /* ss's top bit */
+#else
+    while (!(ss >> t))
+        t--;
+#endif
+    j = (t + 34) / 2 - 32;                              /* floor((t - 30) / 2), -15 to 16 */
+    xs = j >= 0 ? ss >> 2 * j : ss << -2 * j;           /* in [2^30, 2^32) */
+    y = fx_rsqrt_q30(xs);                               /* 2^(46 + j) / sqrt(S), Q.30 */
+    if (unit)
+        *unit = vec3_make((num)fx_shr_round(v.x * (int64_t)y, 30 + j),
+                          (num)fx_shr_round(v.y * (int64_t)y, 30 + j),
+                          (num)fx_shr_round(v.z * (int64_t)y, 30 + j));
+    if (len)      /* sqrt(S) = xs y 2^(j - 46), xs y below 2^63 */
+        *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - j));
+    if (rlen) {   /* 2^32 / sqrt(S) = y 2^(-14 - j) in Q16.16 */
+        int sh = 14 + j;
+        *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
+    }
+    return 0;
+#else
     num m = vec3_maxabs(v);
     if (m == NUM_ZERO)
         return -1;
-#if defined(NUM_MODE_q16)
-    {
-        int64_t w[3], ss;
-        int e = 0;
-#if defined(__GNUC__)
-        e = __builtin_clz((unsigned)m) - 15;         /* top bit of m to bit 16 */
-#else
-        while (((int64_t)m << e) < FX16_ONE)         /* m >= 1 unit, so e <= 16 */
-            e++;
-        while ((m >> -e) >= 2 * FX16_ONE)            /* m < 2^31, so e >= -15 */
-            e--;
-#endif
-        if (e >= 0) {
-            w[0] = (int64_t)v.x * ((int64_t)1 << e);
-            w[1] = (int64_t)v.y * ((int64_t)1 << e);
-            w[2] = (int64_t)v.z * ((int64_t)1 << e);
-        } else {
-            w[0] = fx_shr_round(v.x, -e);
-            w[1] = fx_shr_round(v.y, -e);
-            w[2] = fx_shr_round(v.z, -e);
-        }
-        /* exact: the largest |w_i| is in [2^16, 2^17], so ss in [2^32, 3 2^34] */
-        ss = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
-        if (ss < ((int64_t)1 << 34))                    /* ss/4^k in [2^30, 2^32) */
-            vec3_unit_q16(w, ss, e, 1, unit, len, rlen);
-        else
-            vec3_unit_q16(w, ss, e, 2, unit, len, rlen);
-        return 0;
-    }
-#else
     {
         num s, inv;
         vec3 w = v;

@@ -1,7 +1,8 @@
 /* test_vec — the Q16.16 forms of the geom/vec.h helpers that sum in 64
  * bits and saturate once, against the step-by-step saturating forms they
  * replace (one num_* operation at a time): the same values over random
- * inputs within the ranges of docs/numerics.md. Checked in the q16 build. */
+ * inputs within the ranges of docs/numerics.md; and the unit vectors
+ * against their exact values. Checked in the q16 build. */
 #define NUM_MODE q16
 #define NUM_MODE_q16
 #include <stdarg.h>
@@ -111,37 +112,6 @@ static void test_vec_madd_sub_matches_chained(void **state)
     }
 }
 
-/* vec3_unit's Q16.16 form before its scaling was unrolled and its k found
- * from the size of the sum (the loops below). */
-static int ref_unit(vec3 v, vec3 *unit, num *len, num *rlen)
-{
-    num m = vec3_maxabs(v), raw[3];
-    int64_t w[3], ss = 0;
-    uint64_t xs, y;
-    int e = 0, k = 1, i, sh;
-    if (m == 0)
-        return -1;
-    raw[0] = v.x; raw[1] = v.y; raw[2] = v.z;
-    while (((int64_t)m << e) < FX16_ONE)
-        e++;
-    while (e <= 0 && (m >> -e) >= 2 * FX16_ONE)   /* e > 0: m << e is below 2^17 */
-        e--;
-    for (i = 0; i < 3; i++) {
-        w[i] = e >= 0 ? (int64_t)raw[i] * ((int64_t)1 << e) : fx_shr_round(raw[i], -e);
-        ss += w[i] * w[i];
-    }
-    while ((ss >> (2 * k)) >= ((int64_t)1 << 32))
-        k++;
-    xs = (uint64_t)ss >> (2 * k);
-    y = fx_rsqrt_q30(xs);
-    *unit = vec3_make((num)fx_shr_round(w[0] * (int64_t)y, 30 + k), (num)fx_shr_round(w[1] * (int64_t)y, 30 + k),
-                      (num)fx_shr_round(w[2] * (int64_t)y, 30 + k));
-    *len = fx16_sat(fx_shr_round((int64_t)(xs * y >> 1), 45 - k + e));
-    sh = 14 + k - e;
-    *rlen = sh > 0 ? fx16_sat(fx_shr_round((int64_t)y, sh)) : fx16_sat((int64_t)y << -sh);
-    return 0;
-}
-
 /* A component of random size: any bit length, sign, sometimes 0 or an end
  * of the range. */
 static num vt_any(uint64_t *s)
@@ -156,34 +126,60 @@ static num vt_any(uint64_t *s)
     }
 }
 
-/* vec3_unit: unit vector, length and reciprocal against the loop form, for
- * vectors of every size (powers of two and equal components included). */
-static void test_vec_unit_matches_loops(void **state)
+/* One output of vec3_unit against its exact value x (long double): within
+ * 0.5 units plus rel times x, or, where x is beyond the range by more than
+ * that, saturated. *sat counts the saturations expected; returns 1 where x
+ * lies so near the end of the range that either may happen. */
+static int vt_assert_near(num got, long double x, long double rel, unsigned long *sat)
 {
-    uint64_t s = test_seed("test_vec_unit_matches_loops");
+    long double tol = 0.5L + rel * x;
+    if (x > (long double)FX16_MAX + tol) {
+        assert_int_equal(got, FX16_MAX);
+        ++*sat;
+        return 0;
+    }
+    assert_true(fabsl((long double)got - x) <= tol || (got == FX16_MAX && x > (long double)FX16_MAX - tol));
+    return x > (long double)FX16_MAX - tol;
+}
+
+/* vec3_unit against the exact values (long double) for vectors of every
+ * size, powers of two, equal components and the ends of the range
+ * included: each unit component within 0.5 + 2^-13 units, the length and
+ * its reciprocal within 0.5 units plus 2^-29 of the value, saturated (and
+ * counted) exactly where the value is out of range; the zero vector
+ * refused with the outputs untouched. */
+static void test_vec_unit_exact(void **state)
+{
+    uint64_t s = test_seed("test_vec_unit_exact");
+    vec3 u = vec3_make(7, 7, 7);
+    num l = 7, r = 7;
     int i;
     (void)state;
+    if (!test_long_double_ok())
+        skip();
+    assert_int_equal(vec3_unit(vec3_make(0, 0, 0), &u, &l, &r), -1);
+    assert_true(u.x == 7 && u.y == 7 && u.z == 7 && l == 7 && r == 7);
     for (i = 0; i < 2000000; i++) {
-        vec3 v = vec3_make(vt_any(&s), vt_any(&s), vt_any(&s)), u1, u2;
-        num l1 = 0, l2 = 0, r1 = 0, r2 = 0;
-        unsigned long before, count;
-        int k1, k2;
+        vec3 v = vec3_make(vt_any(&s), vt_any(&s), vt_any(&s));
+        long double c[3], g[3], len;
+        unsigned long before, sat = 0;
+        int k, edge;
         if (i % 8 == 0)
             v.y = v.z = v.x;
         else if (i % 8 == 1)
             v = vec3_make((num)1 << (i / 8 % 31), 0, -((num)1 << (i / 16 % 31)));
+        if (v.x == 0 && v.y == 0 && v.z == 0)
+            continue;
         before = fx_overflows;
-        k1 = ref_unit(v, &u1, &l1, &r1);
-        count = fx_overflows - before;
-        before = fx_overflows;
-        k2 = vec3_unit(v, &u2, &l2, &r2);
-        assert_int_equal(k1, k2);
-        assert_true(fx_overflows - before == count);
-        if (k1 == 0) {
-            vt_assert_vec_equal(u1, u2);
-            assert_int_equal(l1, l2);
-            assert_int_equal(r1, r2);
-        }
+        assert_int_equal(vec3_unit(v, &u, &l, &r), 0);
+        c[0] = v.x; c[1] = v.y; c[2] = v.z;
+        g[0] = u.x; g[1] = u.y; g[2] = u.z;
+        len = sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        for (k = 0; k < 3; k++)
+            assert_true(fabsl(g[k] - c[k] / len * 65536) <= 0.5L + 0x1p-13L);
+        edge = vt_assert_near(l, len, 0x1p-29L, &sat);
+        edge |= vt_assert_near(r, 0x1p32L / len, 0x1p-29L, &sat);
+        assert_true(edge || fx_overflows - before == sat);
     }
 }
 
@@ -229,7 +225,7 @@ int main(void)
         cmocka_unit_test(test_vec_mat3_mul_matches_chained),
         cmocka_unit_test(test_vec_mat3_mul_single_entries),
         cmocka_unit_test(test_vec_madd_sub_matches_chained),
-        cmocka_unit_test(test_vec_unit_matches_loops),
+        cmocka_unit_test(test_vec_unit_exact),
         cmocka_unit_test(test_vec_unit_near_exact),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
