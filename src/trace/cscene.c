@@ -342,22 +342,49 @@ void NS(cscene_primary_batch)(const cscene *cs, cscene_batch *b, int n, double a
             for (m = 0; m < n; m++)
                 b->rcp[i][m] = bbox_rcp(num_to_d(num_from_d(b->u[i][m])));
     }
+#elif CSCENE_BATCH_NUM
+    {   /* the rays rounded to num, and the reciprocals from that: |u| <= 1,
+         * and |o| <= CSCENE_ORIG_MAX < 2^15 in the lanes that become rays
+         * (CSCENE_RAY), where num_from_d would give the same values (no
+         * lane saturates); the other lanes' values are never read */
+        double s[2][3][CSCENE_BATCH];
+        int i;
+        for (i = 0; i < 3; i++)
+            for (m = 0; m < n; m++) {
+                s[0][i][m] = fx16_lane_scale(b->u[i][m]);
+                s[1][i][m] = fx16_lane_scale(b->o[i][m]);
+            }
+        for (i = 0; i < 3; i++)
+            for (m = 0; m < n; m++) {
+                num q = fx16_from_lane(s[0][i][m]);
+                b->un[i][m] = q;
+                b->on[i][m] = fx16_from_lane(s[1][i][m]);
+                b->rcp[i][m] = bbox_rcp(num_to_d(q));
+            }
+    }
 #endif
 }
 
 void NS(cscene_primary_ray)(const cscene *cs, const cscene_batch *b, int k, prim_ray *r)
 {
-    double d[3];
     int i;
     /* u is a unit vector in double: rounding each component keeps it unit
      * to the mode's resolution, as a normalisation in num would */
+#if CSCENE_BATCH_NUM
+    r->d = vec3_make(b->un[0][k], b->un[1][k], b->un[2][k]);
+    r->o = b->t0[k] == 0 && cs->eye_ok ? cs->eye_n : vec3_make(b->on[0][k], b->on[1][k], b->on[2][k]);
+    for (i = 0; i < 3; i++)
+        r->b.rcp[i] = b->rcp[i][k];
+#else
+    double d[3];
     r->d = vec3_make(num_from_d(b->u[0][k]), num_from_d(b->u[1][k]), num_from_d(b->u[2][k]));
     r->o = b->t0[k] == 0 && cs->eye_ok ? cs->eye_n
            : vec3_make(num_from_d(b->o[0][k]), num_from_d(b->o[1][k]), num_from_d(b->o[2][k]));
-    vec3_to_d(r->o, r->b.o);
     vec3_to_d(r->d, d);
     for (i = 0; i < 3; i++)
         r->b.rcp[i] = NUM_IS_NATIVE ? b->rcp[i][k] : bbox_rcp(d[i]);
+#endif
+    vec3_to_d(r->o, r->b.o);
     r->excl_prim = -1;
     r->excl_enter = 0;
 }

@@ -100,6 +100,16 @@ void NS(cscene_free)(cscene *cs);
  * of one ray's set-up overlap with the next one's. */
 #define CSCENE_BATCH 32
 enum { CSCENE_BAD = -2, CSCENE_CUT = -1, CSCENE_NONE = 0, CSCENE_RAY = 1 };
+/* 1 where the batch rounds the rays to num for all its lanes at once (q16,
+ * whose rounding of a value in range vectorises: fx16_lane_scale and
+ * fx16_from_lane);
+ * the other non-native modes round in cscene_primary_ray, ray by ray. */
+#if defined(NUM_MODE_q16)
+#define CSCENE_BATCH_NUM 1
+#else
+#define CSCENE_BATCH_NUM 0
+#endif
+
 typedef struct cscene_batch {
     double d[3][CSCENE_BATCH];     /* in: direction from the eye, any length */
     double u[3][CSCENE_BATCH];     /* d made unit (d / |d|, in double) */
@@ -107,6 +117,10 @@ typedef struct cscene_batch {
     double o[3][CSCENE_BATCH];     /* that point, eye + t0 u */
     double rcp[3][CSCENE_BATCH];   /* the box test's reciprocals of the
                                       direction (bbox_ray) */
+#if CSCENE_BATCH_NUM
+    num un[3][CSCENE_BATCH];       /* u and o rounded to num */
+    num on[3][CSCENE_BATCH];
+#endif
     signed char st[CSCENE_BATCH];  /* CSCENE_RAY: a ray; CSCENE_NONE:
                                       nothing remains to be hit; CSCENE_CUT:
                                       the start lies beyond the mode's range

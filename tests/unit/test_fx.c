@@ -384,7 +384,8 @@ static void test_fx16_div_clamp_matches_saturating_form(void **state)
 }
 
 /* fx16_from_double(x) = round(x 2^16), ties away from zero, saturated,
- * NaN 0; one overflow counted for each saturation or NaN. The reference
+ * NaN 0; one overflow counted for each saturation or NaN. The same values
+ * in range by fx16_lane_scale and fx16_from_lane. The reference
  * rounds with floorl/ceill and an exact remainder test in long double. */
 static fx16 ref_from_double(double x, unsigned long *count)
 {
@@ -412,9 +413,14 @@ static void check_from_double(double x)
 {
     unsigned long before = fx_overflows, want_count;
     fx16 want = ref_from_double(x, &want_count), got = fx16_from_double(x);
+    double r = fx16_lane_scale(x);
     if (got != want || fx_overflows - before != want_count)
         fail_msg("fx16_from_double(%.17g) = %ld, want %ld (overflows %lu, want %lu)", x,
                  (long)got, (long)want, fx_overflows - before, want_count);
+    /* the two steps for lanes: the same value in range, 0 beyond it */
+    if (want_count ? r != 0 : fx16_from_lane(r) != want)
+        fail_msg("fx16_from_lane(fx16_lane_scale(%.17g)) = %ld from %.17g, want %ld", x,
+                 want_count ? 0L : (long)fx16_from_lane(r), r, want_count ? 0L : (long)want);
 }
 
 /* Random magnitudes from 2^-1074 to 2^1023, exact ties n + 1/2 ulps of
