@@ -51,17 +51,34 @@ static void fuzz_put(const char *name, const void *data, size_t len)
         abort();
 }
 
-/* Restores the directory to its fixtures: every file a run made is removed. */
-static void fuzz_reset(void)
+/* Removes every file in the private directory. */
+static void fuzz_empty(void)
 {
-    DIR *d = opendir(".");
+    DIR *d = opendir(fuzz_dir);
     struct dirent *e;
+    char path[sizeof fuzz_dir + 256];
     if (!d)
         abort();
     while ((e = readdir(d)))
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, ".."))
-            unlink(e->d_name);
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")
+            && (size_t)snprintf(path, sizeof path, "%s/%s", fuzz_dir, e->d_name) < sizeof path)
+            unlink(path);
     closedir(d);
+}
+
+/* At exit: the private directory goes too (a crash leaves it, with what
+ * the crashing vector made). */
+static void fuzz_leave(void)
+{
+    fuzz_empty();
+    if (chdir("/") == 0)
+        rmdir(fuzz_dir);
+}
+
+/* Restores the directory to its fixtures: every file a run made is removed. */
+static void fuzz_reset(void)
+{
+    fuzz_empty();
     fuzz_put("d.scene", fuzz_deck, sizeof fuzz_deck - 1);
     fuzz_put("a.png", fuzz_png, sizeof fuzz_png);
     fuzz_put("a.dl", fuzz_dl, sizeof fuzz_dl);
@@ -74,7 +91,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     (void)argc;
     (void)argv;
     strcpy(fuzz_dir, "/tmp/maprt-fuzz-cli-XXXXXX");
-    if (!mkdtemp(fuzz_dir) || chdir(fuzz_dir) != 0)
+    if (!mkdtemp(fuzz_dir) || chdir(fuzz_dir) != 0 || atexit(fuzz_leave) != 0)
         abort();
     for (L = 'A'; L <= 'Z'; L++) {
         char v[] = "MAPRT_DISK_X";
