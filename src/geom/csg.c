@@ -644,8 +644,8 @@ static void csg_canon_at(const csg_query *q, const prim *p, num t0, csg_canon *k
     vec3_to_d(q->r->d, d);
     for (i = 0; i < 3; i++)
         v[i] = q->r->b.o[i] + td * d[i] - fr->org_d[i];
-    dmath_m3_mul_v(fr->ainv_d, v, k->c0);
-    dmath_m3_mul_v(fr->ainv_d, d, k->g);
+    dmath_m3_mul_v(fr->lin->ainv_d, v, k->c0);
+    dmath_m3_mul_v(fr->lin->ainv_d, d, k->g);
     k->glen = dmath_len3(k->g);
     k->t0 = t0;
 }

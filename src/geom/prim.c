@@ -108,8 +108,8 @@ static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}}};
  * part of the placement alone, into p: the canonical map a_d and its
  * inverse, minv_s with its scale and the shortcuts of its columns, the
  * plane normals (pl_d[k][0..2]) and, into *r, the bounding radius. */
-static int prim_compile_linear(prim *p, const scene_prim *sp, const geom_norm *nm, const double *c,
-                               const double *cc, const double *lo, const double *hi,
+static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, const geom_norm *nm,
+                               const double *c, const double *cc, const double *lo, const double *hi,
                                const prim_cplane *cp, double *r, const char *file, diag *err)
 {
     const double *m = sp->world_from_object;
@@ -118,14 +118,15 @@ static int prim_compile_linear(prim *p, const scene_prim *sp, const geom_norm *n
     /* canonical -> normalised world: A = scale * M3 * diag(c) */
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++)
-            p->fr->a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
-    if (dmath_m3_inverse(p->fr->a_d, p->fr->ainv_d))
+            lin->a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
+    if (dmath_m3_inverse(lin->a_d, lin->ainv_d))
         return prim_fail(err, file, sp, "transform is singular");
+    p->fr->lin = lin;
     for (i = 0; i < 9; i++)
-        frob += p->fr->ainv_d[i] * p->fr->ainv_d[i];
+        frob += p->fr->lin->ainv_d[i] * p->fr->lin->ainv_d[i];
     frob = sqrt(frob);
     for (i = 0; i < 9; i++)
-        p->minv_s.m[i] = num_from_d(p->fr->ainv_d[i] / frob);
+        p->minv_s.m[i] = num_from_d(p->fr->lin->ainv_d[i] / frob);
     p->fast = prim_cols(&p->minv_s) << 24;
     p->smin = num_from_d(1.0 / frob);
     p->inv_smin = num_from_d(frob);
@@ -133,7 +134,7 @@ static int prim_compile_linear(prim *p, const scene_prim *sp, const geom_norm *n
         return prim_fail(err, file, sp, "too small for the numeric range");
     *r = 0;
     if (sp->kind == PRIM_SPHERE) {
-        *r = dmath_m3_spectral_norm(p->fr->a_d);
+        *r = dmath_m3_spectral_norm(p->fr->lin->a_d);
     } else if (p->bounded) {
         int k;
         /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
@@ -142,7 +143,7 @@ static int prim_compile_linear(prim *p, const scene_prim *sp, const geom_norm *n
             double corner[3], w[3], len;
             for (i = 0; i < 3; i++)
                 corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
-            dmath_m3_mul_v(p->fr->a_d, corner, w);
+            dmath_m3_mul_v(p->fr->lin->a_d, corner, w);
             len = dmath_len3(w);
             if (len > *r)
                 *r = len;
@@ -150,7 +151,7 @@ static int prim_compile_linear(prim *p, const scene_prim *sp, const geom_norm *n
     }
     for (i = 0; i < p->nplanes; i++) {
         double len;
-        dmath_m3_tmul_v(p->fr->ainv_d, cp[i].n, p->pl_d[i]);
+        dmath_m3_tmul_v(p->fr->lin->ainv_d, cp[i].n, p->pl_d[i]);
         len = dmath_len3(p->pl_d[i]);
         for (j = 0; j < 3; j++)
             p->pl_d[i][j] /= len;
@@ -160,12 +161,12 @@ static int prim_compile_linear(prim *p, const scene_prim *sp, const geom_norm *n
 
 /* prim_compile_linear's results taken from twin, compiled before from a
  * primitive of the same kind, dimensions and linear part (prim_twin): the
- * same operations on the same numbers, so the same values. */
+ * same operations on the same numbers, so the same values; its linear part
+ * itself is shared. */
 static void prim_compile_twin(prim *p, const prim *twin)
 {
     int i;
-    memcpy(p->fr->a_d, twin->fr->a_d, sizeof p->fr->a_d);
-    memcpy(p->fr->ainv_d, twin->fr->ainv_d, sizeof p->fr->ainv_d);
+    p->fr->lin = twin->fr->lin;
     p->minv_s = twin->minv_s;
     p->fast = twin->fast & ~0xffffffu;
     p->smin = twin->smin;
@@ -175,8 +176,8 @@ static void prim_compile_twin(prim *p, const prim *twin)
 }
 
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
-                     double (*pl_d)[4], prim_frame *fr, const prim *twin, double *radius, prim *out,
-                     const char *file, diag *err)
+                     double (*pl_d)[4], prim_frame *fr, prim_lin *lin, const prim *twin, double *radius,
+                     prim *out, const char *file, diag *err)
 {
     prim p;
     double c[3] = {1, 1, 1}, cc[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
@@ -249,7 +250,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     if (twin) {
         prim_compile_twin(&p, twin);
         r = *radius;
-    } else if ((st = prim_compile_linear(&p, sp, nm, c, cc, lo, hi, cp, &r, file, err))) {
+    } else if ((st = prim_compile_linear(&p, lin, sp, nm, c, cc, lo, hi, cp, &r, file, err))) {
         return st;
     }
     for (i = 0; i < 3; i++)
@@ -257,7 +258,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     p.org = vec3_from_d(p.fr->org_d);
 
     /* bounding sphere */
-    dmath_m3_mul_v(p.fr->a_d, cc, bc);
+    dmath_m3_mul_v(p.fr->lin->a_d, cc, bc);
     for (i = 0; i < 3; i++)
         bc[i] += p.fr->org_d[i];
     if (p.bounded) {
@@ -272,7 +273,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
      * replace them by a coincident plane of another primitive) */
     for (i = 0; i < ncp; i++) {
         double pt[3];
-        dmath_m3_mul_v(p.fr->a_d, cp[i].p, pt);
+        dmath_m3_mul_v(p.fr->lin->a_d, cp[i].p, pt);
         for (j = 0; j < 3; j++)
             pt[j] += p.fr->org_d[j];
         p.pl_d[i][3] = dmath_dot3(p.pl_d[i], pt);
@@ -294,7 +295,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
  * than stored: only the CSG compile needs it. */
 void NS(prim_box)(const prim *p, double lo_out[3], double hi_out[3])
 {
-    const double *a = p->fr->a_d;
+    const double *a = p->fr->lin->a_d;
     int i, k, kind = p->kind;
     if (!p->bounded) {
         memset(lo_out, 0, 3 * sizeof *lo_out);
@@ -367,7 +368,7 @@ static int prim_same_solid(const prim *a, const prim *b)
         for (i = 0; i < 3; i++) {
             s[3 * i + 2] = 0;
             for (k = 0; k < 3; k++)
-                s[3 * i + 2] += a->fr->ainv_d[3 * i + k] * b->fr->a_d[3 * k + 2];
+                s[3 * i + 2] += a->fr->lin->ainv_d[3 * i + k] * b->fr->lin->a_d[3 * k + 2];
         }
         if (fabs(s[2]) > e || fabs(s[5]) > e || fabs(fabs(s[8]) - 1) > e)
             return 0;
@@ -376,10 +377,10 @@ static int prim_same_solid(const prim *a, const prim *b)
         for (j = 0; j < 3; j++) {
             s[3 * i + j] = 0;
             for (k = 0; k < 3; k++)
-                s[3 * i + j] += a->fr->ainv_d[3 * i + k] * b->fr->a_d[3 * k + j];
+                s[3 * i + j] += a->fr->lin->ainv_d[3 * i + k] * b->fr->lin->a_d[3 * k + j];
         }
     dmath_sub3(b->fr->org_d, a->fr->org_d, w);
-    dmath_m3_mul_v(a->fr->ainv_d, w, t);
+    dmath_m3_mul_v(a->fr->lin->ainv_d, w, t);
     for (i = 0; i < 3; i++)                 /* s orthogonal: s s^T = I */
         for (j = 0; j < 3; j++) {
             double dot = s[3 * i] * s[3 * j] + s[3 * i + 1] * s[3 * j + 1] + s[3 * i + 2] * s[3 * j + 2];
@@ -422,7 +423,7 @@ typedef struct prim_skey {
  * apart tell solids apart (prim_skey_alike). */
 static void prim_skey_axis(const prim *a, float ax[3])
 {
-    const double *m = a->fr->a_d;
+    const double *m = a->fr->lin->a_d;
     double l = sqrt(m[2] * m[2] + m[5] * m[5] + m[8] * m[8]);
     double r0 = sqrt(m[0] * m[0] + m[3] * m[3] + m[6] * m[6]);
     double r1 = sqrt(m[1] * m[1] + m[4] * m[4] + m[7] * m[7]);
@@ -475,7 +476,7 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
         if (!a->bounded || a->kind == PRIM_BLOCK)
             continue;
         for (k = 0; k < 3; k++) {
-            const double *row = a->fr->a_d + 3 * k;
+            const double *row = a->fr->lin->a_d + 3 * k;
             key += w[k] * (a->fr->org_d[k] + row[2] * cz);
             win += w[k] * sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
         }
@@ -879,7 +880,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     }
     for (i = 0; i < 3; i++)
         w[i] -= p->fr->org_d[i];
-    dmath_m3_mul_v(p->fr->ainv_d, w, l);
+    dmath_m3_mul_v(p->fr->lin->ainv_d, w, l);
     /* the sphere's normal alone needs no angle */
     if (need_uv || p->kind != PRIM_SPHERE) {
         rho = sqrt(l[0] * l[0] + l[1] * l[1]);
@@ -944,14 +945,14 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     if (need_uv) {
         out->u = prim_clamp01(u);
         out->v = prim_clamp01(v);
-        dmath_m3_mul_v(p->fr->a_d, du, out->dpdu);
-        dmath_m3_mul_v(p->fr->a_d, dv, out->dpdv);
+        dmath_m3_mul_v(p->fr->lin->a_d, du, out->dpdu);
+        dmath_m3_mul_v(p->fr->lin->a_d, dv, out->dpdv);
     }
     if ((fn = prim_flat_normal(p, face)) != NULL) {
         for (i = 0; i < 3; i++)
             out->n[i] = fn[i];
     } else {
-        dmath_m3_tmul_v(p->fr->ainv_d, nl, out->n);
+        dmath_m3_tmul_v(p->fr->lin->ainv_d, nl, out->n);
         len = dmath_len3(out->n);
         if (len > 0)
             for (i = 0; i < 3; i++)

@@ -71,11 +71,20 @@ typedef struct prim_plane {
 typedef char prim_plane_is_4_doubles[sizeof(prim_plane) == 4 * sizeof(double) ? 1 : -1];
 #endif
 
-/* A primitive's placement in binary64: world_from_canonical (linear part
- * a_d, its inverse ainv_d, origin org_d), read by surface evaluation and
- * the compile, kept apart from what every intersection reads. */
+/* The linear part of a primitive's placement in binary64: the canonical
+ * map a_d (world_from_canonical) and its inverse ainv_d. Twins (a kind,
+ * dimensions and linear part alike bit for bit: model/prim_twin.h) share
+ * one. */
+typedef struct prim_lin {
+    double a_d[9], ainv_d[9];
+} prim_lin;
+
+/* A primitive's placement in binary64: its linear part and its origin
+ * org_d, read by surface evaluation and the compile, kept apart from what
+ * every intersection reads. */
 typedef struct prim_frame {
-    double a_d[9], ainv_d[9], org_d[3];
+    const prim_lin *lin;
+    double org_d[3];
 } prim_frame;
 
 typedef struct prim {
@@ -144,12 +153,13 @@ static inline int prim_plane_face(int kind, int k)
  * from a scene primitive of sp's kind, dimensions and linear part, bit for
  * bit (model/prim_twin.h), with *radius the radius that compile gave:
  * what depends on those alone is then taken from it, with the values the
- * compile would form. 0 on success; DIAG_INPUT (located at sp->loc in
+ * compile would form, and the twin's linear part is shared. Without a
+ * twin the linear part is formed in lin, which out then keeps. 0 on success; DIAG_INPUT (located at sp->loc in
  * file) for bad dimensions, non-finite or singular transforms, or a
  * primitive outside the range. */
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
-                     double (*pl_d)[4], prim_frame *fr, const prim *twin, double *radius, prim *out,
-                     const char *file, diag *err);
+                     double (*pl_d)[4], prim_frame *fr, prim_lin *lin, const prim *twin, double *radius,
+                     prim *out, const char *file, diag *err);
 
 /* Gives coincident geometry of the compiled primitives one representation
  * (docs/numerics.md, "Coincident surfaces"): every plane equal within

@@ -238,8 +238,8 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
              * more than rounding (dmath_m3_frobenius): a primitive it keeps
              * 1e-9 under the limit needs no eigenvalues */
             if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK
-                && dmath_m3_frobenius(p->fr->a_d) * dmath_m3_frobenius(p->fr->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
-                && (aspect = dmath_m3_spectral_norm(p->fr->a_d) * dmath_m3_spectral_norm(p->fr->ainv_d))
+                && dmath_m3_frobenius(p->fr->lin->a_d) * dmath_m3_frobenius(p->fr->lin->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
+                && (aspect = dmath_m3_spectral_norm(p->fr->lin->a_d) * dmath_m3_spectral_norm(p->fr->lin->ainv_d))
                        > CSCENE_ASPECT_MAX)
                 return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                                "primitive '%s': aspect ratio %.3g is beyond the %s limit of %g "
@@ -422,7 +422,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     cscene *cs;
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
-    size_t i, npl = 0;
+    size_t i, npl = 0, nlin = 0;
     prim_twin tw = {NULL, 0};
     int status = DIAG_IO;
 
@@ -471,7 +471,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         cs->prim_pl_d = PRIM_PL_SHARED ? (double (*)[4])cs->prim_pl
                                        : mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
         cs->prim_fr = mem_calloc(sc->nprims, sizeof *cs->prim_fr);
-        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr) {
+        cs->prim_lin = mem_calloc(sc->nprims, sizeof *cs->prim_lin);
+        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr || !cs->prim_lin) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
         }
@@ -493,12 +494,13 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
             goto fail;
         }
         if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl, cs->prim_fr + i,
-                                       known ? &cs->prims[e->index] : NULL, &radius, &cs->prims[i],
-                                       cscene_file(sc), err)))
+                                       cs->prim_lin + nlin, known ? &cs->prims[e->index] : NULL, &radius,
+                                       &cs->prims[i], cscene_file(sc), err)))
             goto fail;
         if (!known) {
             e->index = i;
             e->note = radius;
+            nlin++;
         }
         npl += (size_t)prim_nplanes(sp->kind);
     }
@@ -574,6 +576,7 @@ void NS(cscene_free)(cscene *cs)
     if (!PRIM_PL_SHARED)
         mem_free(cs->prim_pl_d);
     mem_free(cs->prim_fr);
+    mem_free(cs->prim_lin);
     for (i = 0; cs->lbuf && i < cs->nlights; i++)
         lightbuf_free(&cs->lbuf[i]);
     mem_free(cs->lbuf);

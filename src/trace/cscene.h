@@ -43,6 +43,9 @@ typedef struct cscene {
     prim_plane *prim_pl;
     double (*prim_pl_d)[4];
     prim_frame *prim_fr;
+    prim_lin *prim_lin;            /* the distinct linear parts (twins share
+                                      one): the first entries of room for
+                                      nprims, the rest never touched */
     csg tree;
     cscene_light *lights;
     size_t nlights;

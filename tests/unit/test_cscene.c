@@ -168,6 +168,7 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
             prim_plane pl[6];
             double pl_d[6][4];
             prim_frame fr;
+            prim_lin lin;
             int i, k;
             if (sp->kind == PRIM_SPHERE)
                 continue;
@@ -175,13 +176,13 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
                 lo[0] = lo[1] = 0, cc[0] = cc[1] = 0.5;
             {
                 double radius;
-                assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &fr, NULL, &radius, &p, "test", &err), 0);
+                assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &fr, &lin, NULL, &radius, &p, "test", &err), 0);
             }
             for (k = 0; k < 8; k++) {
                 double corner[3], w[3], len;
                 for (i = 0; i < 3; i++)
                     corner[i] = ((k >> i) & 1 ? 1 : lo[i]) - cc[i];
-                dmath_m3_mul_v(p.fr->a_d, corner, w);
+                dmath_m3_mul_v(p.fr->lin->a_d, corner, w);
                 len = dmath_len3(w);
                 if (len > r)
                     r = len;
@@ -514,7 +515,8 @@ static int cscene_test_alike(const prim *a, const prim *b, double ra, double rb)
         || memcmp(&a->minv_s, &b->minv_s, sizeof a->minv_s) || memcmp(&a->smin, &b->smin, sizeof a->smin)
         || memcmp(&a->inv_smin, &b->inv_smin, sizeof a->inv_smin)
         || memcmp(&a->cone_a, &b->cone_a, sizeof a->cone_a) || memcmp(&a->cone_k, &b->cone_k, sizeof a->cone_k)
-        || memcmp(a->fr, b->fr, sizeof *a->fr) || memcmp(&ra, &rb, sizeof ra))
+        || memcmp(a->fr->lin, b->fr->lin, sizeof *a->fr->lin)
+        || memcmp(a->fr->org_d, b->fr->org_d, sizeof a->fr->org_d) || memcmp(&ra, &rb, sizeof ra))
         return 0;
     for (k = 0; k < a->nplanes; k++)
         if (memcmp(a->pl_d[k], b->pl_d[k], sizeof a->pl_d[k]) || memcmp(&a->pl[k], &b->pl[k], sizeof a->pl[k]))
@@ -547,6 +549,7 @@ static void test_cscene_twins_compile_alike(void **state)
         prim_plane (*pl)[6];
         double (*pld)[6][4], *rad;
         prim_frame *fr;
+        prim_lin *lin;
         diag err;
         int i;
         len += (size_t)snprintf(text + len, sizeof text - len, "EYE 30 -40 20\nLOOKAT 0 0 0\nLIGHT 0 0 50\n");
@@ -572,6 +575,7 @@ static void test_cscene_twins_compile_alike(void **state)
         pl = test_malloc(2 * n * sizeof *pl);
         pld = test_malloc(2 * n * sizeof *pld);
         fr = test_malloc(2 * n * sizeof *fr);
+        lin = test_malloc(2 * n * sizeof *lin);
         rad = test_malloc(2 * n * sizeof *rad);
         assert_int_equal(prim_twin_init(&tw, n), 0);
         diag_init(&err);
@@ -579,11 +583,13 @@ static void test_cscene_twins_compile_alike(void **state)
             const scene_prim *sp = &sc->prims[i];
             prim_twin_entry *e = prim_twin_at(&tw, sc->prims, sp);
             int known = e->index != PRIM_TWIN_NONE;
-            assert_int_equal(f64_prim_compile(sp, i, &cs->nm, pl[i], pld[i], &fr[i], NULL, &rad[i], &ref[i], "test",
-                                              &err), 0);
+            assert_int_equal(f64_prim_compile(sp, i, &cs->nm, pl[i], pld[i], &fr[i], &lin[i], NULL, &rad[i], &ref[i],
+                                              "test", &err), 0);
             rad[n + i] = known ? e->note : 0;
-            assert_int_equal(f64_prim_compile(sp, i, &cs->nm, pl[n + i], pld[n + i], &fr[n + i],
+            assert_int_equal(f64_prim_compile(sp, i, &cs->nm, pl[n + i], pld[n + i], &fr[n + i], &lin[n + i],
                                               known ? &got[e->index] : NULL, &rad[n + i], &got[i], "test", &err), 0);
+            /* a twin shares its first twin's linear part, else has its own */
+            assert_true(got[i].fr->lin == (known ? got[e->index].fr->lin : &lin[n + i]));
             if (!known) {
                 e->index = (size_t)i;
                 e->note = rad[n + i];
@@ -597,6 +603,7 @@ static void test_cscene_twins_compile_alike(void **state)
         test_free(pl);
         test_free(pld);
         test_free(fr);
+        test_free(lin);
         test_free(rad);
         f64_cscene_free(cs);
         scene_free(sc);
