@@ -105,9 +105,10 @@ static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}}};
 
 /* What prim_compile derives from p's kind, dimensions (c: the canonical
  * solid's scale; cc, lo, hi: its box's centre and corners) and the linear
- * part of the placement alone, into p: the canonical map a_d and its
- * inverse, minv_s with its scale and the shortcuts of its columns, the
- * plane normals (pl_d[k][0..2]) and, into *r, the bounding radius. */
+ * part of the placement alone: into lin the canonical map a_d and its
+ * inverse (p's frame then points at it), into p minv_s with its scale and
+ * the shortcuts of its columns and the plane normals (pl_d[k][0..2]), and
+ * into *r the bounding radius. */
 static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, const geom_norm *nm,
                                const double *c, const double *cc, const double *lo, const double *hi,
                                const prim_cplane *cp, double *r, const char *file, diag *err)
@@ -123,10 +124,10 @@ static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, con
         return prim_fail(err, file, sp, "transform is singular");
     p->fr->lin = lin;
     for (i = 0; i < 9; i++)
-        frob += p->fr->lin->ainv_d[i] * p->fr->lin->ainv_d[i];
+        frob += lin->ainv_d[i] * lin->ainv_d[i];
     frob = sqrt(frob);
     for (i = 0; i < 9; i++)
-        p->minv_s.m[i] = num_from_d(p->fr->lin->ainv_d[i] / frob);
+        p->minv_s.m[i] = num_from_d(lin->ainv_d[i] / frob);
     p->fast = prim_cols(&p->minv_s) << 24;
     p->smin = num_from_d(1.0 / frob);
     p->inv_smin = num_from_d(frob);
@@ -134,7 +135,7 @@ static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, con
         return prim_fail(err, file, sp, "too small for the numeric range");
     *r = 0;
     if (sp->kind == PRIM_SPHERE) {
-        *r = dmath_m3_spectral_norm(p->fr->lin->a_d);
+        *r = dmath_m3_spectral_norm(lin->a_d);
     } else if (p->bounded) {
         int k;
         /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
@@ -143,7 +144,7 @@ static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, con
             double corner[3], w[3], len;
             for (i = 0; i < 3; i++)
                 corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
-            dmath_m3_mul_v(p->fr->lin->a_d, corner, w);
+            dmath_m3_mul_v(lin->a_d, corner, w);
             len = dmath_len3(w);
             if (len > *r)
                 *r = len;
@@ -151,7 +152,7 @@ static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, con
     }
     for (i = 0; i < p->nplanes; i++) {
         double len;
-        dmath_m3_tmul_v(p->fr->lin->ainv_d, cp[i].n, p->pl_d[i]);
+        dmath_m3_tmul_v(lin->ainv_d, cp[i].n, p->pl_d[i]);
         len = dmath_len3(p->pl_d[i]);
         for (j = 0; j < 3; j++)
             p->pl_d[i][j] /= len;

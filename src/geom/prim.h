@@ -154,9 +154,9 @@ static inline int prim_plane_face(int kind, int k)
  * bit (model/prim_twin.h), with *radius the radius that compile gave:
  * what depends on those alone is then taken from it, with the values the
  * compile would form, and the twin's linear part is shared. Without a
- * twin the linear part is formed in lin, which out then keeps. 0 on success; DIAG_INPUT (located at sp->loc in
- * file) for bad dimensions, non-finite or singular transforms, or a
- * primitive outside the range. */
+ * twin the linear part is formed in lin, which out then keeps. 0 on
+ * success; DIAG_INPUT (located at sp->loc in file) for bad dimensions,
+ * non-finite or singular transforms, or a primitive outside the range. */
 int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_plane *pl,
                      double (*pl_d)[4], prim_frame *fr, prim_lin *lin, const prim *twin, double *radius,
                      prim *out, const char *file, diag *err);
