@@ -168,17 +168,30 @@ static int cscene_face_bound(const scene_prim *sp)
     return 0;
 }
 
+/* A face_row entry that cscene_faces replaces by a row of the primitive's
+ * own (a face bound by FACE). */
+#define CSCENE_ROW_OWN ((size_t)-1)
+
+/* Primitive sp's entry in face_row as the primitive compile leaves it: the
+ * shared row of its kind and attribute, or CSCENE_ROW_OWN. Set while the
+ * compile reads sp, not in a pass of its own: at 10,000 objects a pass
+ * over the parsed primitives' face bindings was 40 % of the compile's
+ * own cycles (docs/performance.md, run AG). */
+static size_t cscene_face_row_of(const scene_prim *sp)
+{
+    return cscene_face_bound(sp) ? CSCENE_ROW_OWN
+                                 : ((size_t)sp->attr * PRIM_KIND_COUNT + (size_t)sp->kind) * (SCENE_MAX_FACES + 1);
+}
+
 /* The face table (cscene_face_at), after the maps and primitives are
- * compiled (every kind is known). */
-static int cscene_faces(const scene *sc, cscene *cs, diag *err)
+ * compiled (every kind is known, and face_row set by cscene_face_row_of;
+ * nown of its entries CSCENE_ROW_OWN). */
+static int cscene_faces(const scene *sc, cscene *cs, size_t nown, diag *err)
 {
     const size_t row = SCENE_MAX_FACES + 1, nshared = sc->nattrs * PRIM_KIND_COUNT;
-    size_t i, nrows = nshared;
-    for (i = 0; i < sc->nprims; i++)
-        nrows += (size_t)cscene_face_bound(&sc->prims[i]);
-    cs->face_row = mem_calloc(sc->nprims ? sc->nprims : 1, sizeof *cs->face_row);
+    size_t i, nrows = nshared + nown;
     cs->faces = mem_calloc(nrows ? nrows : 1, row * sizeof *cs->faces);
-    if (!cs->face_row || !cs->faces)
+    if (!cs->faces)
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
     for (i = 0; i < nshared; i++)
         cscene_face_row(sc, cs, (int)(i % PRIM_KIND_COUNT), (int)(i / PRIM_KIND_COUNT), NULL,
@@ -186,10 +199,8 @@ static int cscene_faces(const scene *sc, cscene *cs, diag *err)
     nrows = nshared;
     for (i = 0; i < sc->nprims; i++) {
         const scene_prim *sp = &sc->prims[i];
-        if (!cscene_face_bound(sp)) {
-            cs->face_row[i] = ((size_t)sp->attr * PRIM_KIND_COUNT + (size_t)sp->kind) * row;
+        if (cs->face_row[i] != CSCENE_ROW_OWN)
             continue;
-        }
         cs->face_row[i] = nrows++ * row;
         cscene_face_row(sc, cs, sp->kind, sp->attr, sp->face_map, &cs->faces[cs->face_row[i]]);
     }
@@ -422,7 +433,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     cscene *cs;
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
-    size_t i, npl = 0, nlin = 0;
+    size_t i, npl = 0, nlin = 0, nown = 0;
     prim_twin tw = {NULL, 0};
     int status = DIAG_IO;
 
@@ -472,7 +483,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
                                        : mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
         cs->prim_fr = mem_calloc(sc->nprims, sizeof *cs->prim_fr);
         cs->prim_lin = mem_calloc(sc->nprims, sizeof *cs->prim_lin);
-        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr || !cs->prim_lin) {
+        cs->face_row = mem_calloc(sc->nprims, sizeof *cs->face_row);
+        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr || !cs->prim_lin || !cs->face_row) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
         }
@@ -502,6 +514,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
             e->note = radius;
             nlin++;
         }
+        cs->face_row[i] = cscene_face_row_of(sp);
+        nown += cs->face_row[i] == CSCENE_ROW_OWN;
         npl += (size_t)prim_nplanes(sp->kind);
     }
     prim_twin_free(&tw);
@@ -550,7 +564,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
             cs->lights[i].rgb[j] = l->color[j] * l->intensity;
     }
     if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)) || (status = cscene_lights(cs, err)) ||
-        (status = cscene_maps(sc, cs, err)) || (status = cscene_faces(sc, cs, err)))
+        (status = cscene_maps(sc, cs, err)) || (status = cscene_faces(sc, cs, nown, err)))
         goto fail;
     *out = cs;
     return 0;
