@@ -37,20 +37,23 @@ static uint64_t prim_twin_hash(const scene_prim *sp)
     return h ^ (h >> 32);
 }
 
-int prim_twin_init(prim_twin *t, size_t n)
+/* A table of cap entries (a power of two), all empty. */
+static prim_twin_entry *prim_twin_table(size_t cap)
 {
-    size_t cap = 16, i;
-    while (cap / 2 < n) {
-        if (cap > SIZE_MAX / 2 / sizeof *t->e)
-            return -1;
-        cap *= 2;
-    }
-    if (!(t->e = mem_alloc(cap * sizeof *t->e)))
-        return -1;
+    prim_twin_entry *e;
+    size_t i;
+    if (cap > SIZE_MAX / sizeof *e || !(e = mem_alloc(cap * sizeof *e)))
+        return NULL;
     for (i = 0; i < cap; i++)
-        t->e[i].index = PRIM_TWIN_NONE;
-    t->mask = cap - 1;
-    return 0;
+        e[i].index = PRIM_TWIN_NONE;
+    return e;
+}
+
+int prim_twin_init(prim_twin *t)
+{
+    t->mask = 15;
+    t->used = 0;
+    return (t->e = prim_twin_table(t->mask + 1)) ? 0 : -1;
 }
 
 void prim_twin_free(prim_twin *t)
@@ -65,4 +68,26 @@ prim_twin_entry *prim_twin_at(const prim_twin *t, const scene_prim *prims, const
     while (t->e[i].index != PRIM_TWIN_NONE && !prim_twin_same(&prims[t->e[i].index], sp))
         i = (i + 1) & t->mask;
     return &t->e[i];
+}
+
+int prim_twin_add(prim_twin *t, const scene_prim *prims, prim_twin_entry *e, size_t index, double note)
+{
+    prim_twin_entry *old = t->e, *grown;
+    size_t cap = t->mask + 1, i;
+    e->index = index;
+    e->note = note;
+    if (++t->used <= cap / 2)
+        return 0;
+    if (cap > SIZE_MAX / 2 || !(grown = prim_twin_table(2 * cap))) {
+        e->index = PRIM_TWIN_NONE;
+        t->used--;
+        return -1;
+    }
+    t->e = grown;
+    t->mask = 2 * cap - 1;
+    for (i = 0; i < cap; i++)
+        if (old[i].index != PRIM_TWIN_NONE)
+            *prim_twin_at(t, prims, &prims[old[i].index]) = old[i];
+    mem_free(old);
+    return 0;
 }

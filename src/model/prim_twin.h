@@ -22,16 +22,24 @@ typedef struct prim_twin_entry {
 typedef struct prim_twin {
     prim_twin_entry *e;
     size_t mask;               /* entries - 1, a power of two less one */
+    size_t used;               /* entries filled, at most half of them */
 } prim_twin;
 
-/* An empty index for up to n primitives. 0, or -1 when n is beyond what
- * can be allocated or memory runs out. */
-int prim_twin_init(prim_twin *t, size_t n);
+/* An empty index. It grows with the sets of twins entered, not with the
+ * primitives looked up: a grid of 10,000 copies of one part holds a few
+ * sets, in a table that stays in the L1 cache (docs/performance.md, run
+ * AH). 0, or -1 when memory runs out. */
+int prim_twin_init(prim_twin *t);
 void prim_twin_free(prim_twin *t);
 
 /* The entry of sp among primitives of prims: an earlier primitive's, whose
  * kind, dimensions and linear part are sp's bit for bit, or the empty one
- * where sp belongs, which the caller fills (index, note) to enter sp. At
- * most n primitives may be entered (prim_twin_init). */
+ * where sp belongs, which prim_twin_add fills to enter sp. */
 prim_twin_entry *prim_twin_at(const prim_twin *t, const scene_prim *prims, const scene_prim *sp);
+
+/* Enters primitive `index` of prims with its note in e, the empty entry
+ * prim_twin_at gave for it. The table doubles once it is half full, which
+ * moves every entry: no entry pointer outlives this call. 0, or -1 when
+ * memory runs out (the index is then unchanged but for e). */
+int prim_twin_add(prim_twin *t, const scene_prim *prims, prim_twin_entry *e, size_t index, double note);
 #endif

@@ -428,13 +428,30 @@ static int cscene_lights(cscene *cs, diag *err)
     return status ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
 }
 
+/* Room for linear part k (the next one), in a new block when the last is
+ * full: a grid of copies of one part needs a few of nprims, and a block
+ * of room for them all would be touched at its start alone. NULL when
+ * memory runs out. */
+static prim_lin *cscene_lin_room(cscene *cs, size_t k)
+{
+    if (k % CSCENE_LIN_BLOCK == 0) {
+        prim_lin *b;
+        if (mem_grow((void **)&cs->lin_blk, &cs->cap_lin_blk, cs->nlin_blk + 1, sizeof *cs->lin_blk)
+            || !(b = mem_alloc(CSCENE_LIN_BLOCK * sizeof *b)))
+            return NULL;
+        cs->lin_blk[cs->nlin_blk++] = b;
+    }
+    return &cs->lin_blk[k / CSCENE_LIN_BLOCK][k % CSCENE_LIN_BLOCK];
+}
+
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
 {
     cscene *cs;
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
     size_t i, npl = 0, nlin = 0, nown = 0;
-    prim_twin tw = {NULL, 0};
+    prim_twin tw = {NULL, 0, 0};
+    prim_lin *lin = NULL;
     int status = DIAG_IO;
 
     if (!cscene_finite3(v->eye) || !cscene_finite3(v->look) || !cscene_finite3(v->up)
@@ -482,15 +499,14 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         cs->prim_pl_d = PRIM_PL_SHARED ? (double (*)[4])cs->prim_pl
                                        : mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
         cs->prim_fr = mem_calloc(sc->nprims, sizeof *cs->prim_fr);
-        cs->prim_lin = mem_calloc(sc->nprims, sizeof *cs->prim_lin);
         cs->face_row = mem_calloc(sc->nprims, sizeof *cs->face_row);
-        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr || !cs->prim_lin || !cs->face_row) {
+        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr || !cs->face_row) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
         }
     }
     cs->nprims = sc->nprims;
-    if (prim_twin_init(&tw, sc->nprims)) {
+    if (prim_twin_init(&tw)) {
         diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
         goto fail;
     }
@@ -505,13 +521,19 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
                              "primitive '%s': attribute index out of range", sp->name);
             goto fail;
         }
+        if (!known && !(lin = cscene_lin_room(cs, nlin))) {
+            status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+            goto fail;
+        }
         if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl, cs->prim_fr + i,
-                                       cs->prim_lin + nlin, known ? &cs->prims[e->index] : NULL, &radius,
+                                       known ? NULL : lin, known ? &cs->prims[e->index] : NULL, &radius,
                                        &cs->prims[i], cscene_file(sc), err)))
             goto fail;
         if (!known) {
-            e->index = i;
-            e->note = radius;
+            if (prim_twin_add(&tw, sc->prims, e, i, radius)) {
+                status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+                goto fail;
+            }
             nlin++;
         }
         cs->face_row[i] = cscene_face_row_of(sp);
@@ -590,7 +612,9 @@ void NS(cscene_free)(cscene *cs)
     if (!PRIM_PL_SHARED)
         mem_free(cs->prim_pl_d);
     mem_free(cs->prim_fr);
-    mem_free(cs->prim_lin);
+    for (i = 0; i < cs->nlin_blk; i++)
+        mem_free(cs->lin_blk[i]);
+    mem_free(cs->lin_blk);
     for (i = 0; cs->lbuf && i < cs->nlights; i++)
         lightbuf_free(&cs->lbuf[i]);
     mem_free(cs->lbuf);

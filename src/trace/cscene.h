@@ -13,6 +13,7 @@
 #define CSCENE_MAX_PLANES 64  /* half-spaces a primary ray is advanced over */
 #define CSCENE_LBUF_MIN 8      /* bounded objects for a light buffer */
 #define CSCENE_LBUF_GROW (1.0 / 32)   /* its boxes' growth, normalised world */
+#define CSCENE_LIN_BLOCK 64    /* linear parts a block (cscene.lin_blk) */
 
 typedef struct cscene_light {
     vec3 pos;                 /* normalised world */
@@ -43,9 +44,11 @@ typedef struct cscene {
     prim_plane *prim_pl;
     double (*prim_pl_d)[4];
     prim_frame *prim_fr;
-    prim_lin *prim_lin;            /* the distinct linear parts (twins share
-                                      one): the first entries of room for
-                                      nprims, the rest never touched */
+    prim_lin **lin_blk;            /* the distinct linear parts (twins share
+                                      one), CSCENE_LIN_BLOCK a block, in
+                                      nlin_blk blocks allocated as they
+                                      fill: the frames point into them */
+    size_t nlin_blk, cap_lin_blk;
     csg tree;
     cscene_light *lights;
     size_t nlights;

@@ -577,7 +577,7 @@ static void test_cscene_twins_compile_alike(void **state)
         fr = test_malloc(2 * n * sizeof *fr);
         lin = test_malloc(2 * n * sizeof *lin);
         rad = test_malloc(2 * n * sizeof *rad);
-        assert_int_equal(prim_twin_init(&tw, n), 0);
+        assert_int_equal(prim_twin_init(&tw), 0);
         diag_init(&err);
         for (i = 0; i < (int)n; i++) {
             const scene_prim *sp = &sc->prims[i];
@@ -590,10 +590,8 @@ static void test_cscene_twins_compile_alike(void **state)
                                               known ? &got[e->index] : NULL, &rad[n + i], &got[i], "test", &err), 0);
             /* a twin shares its first twin's linear part, else has its own */
             assert_true(got[i].fr->lin == (known ? got[e->index].fr->lin : &lin[n + i]));
-            if (!known) {
-                e->index = (size_t)i;
-                e->note = rad[n + i];
-            }
+            if (!known)
+                assert_int_equal(prim_twin_add(&tw, sc->prims, e, (size_t)i, rad[n + i]), 0);
             found += (size_t)known;
             assert_true(cscene_test_alike(&ref[i], &got[i], rad[i], rad[n + i]));
         }
@@ -630,14 +628,46 @@ static void test_cscene_twins_bit_for_bit(void **state)
     p[1].world_from_object[3] = 7;         /* moved: a twin */
     p[2].world_from_object[1] = -0.0;      /* the other zero: none */
     p[3].kind = PRIM_CONE;
-    assert_int_equal(prim_twin_init(&tw, 4), 0);
+    assert_int_equal(prim_twin_init(&tw), 0);
     e = prim_twin_at(&tw, p, &p[0]);
     assert_int_equal(e->index, PRIM_TWIN_NONE);
-    e->index = 0;
+    assert_int_equal(prim_twin_add(&tw, p, e, 0, 0.5), 0);
     assert_int_equal(prim_twin_at(&tw, p, &p[1])->index, 0);
     assert_int_equal(prim_twin_at(&tw, p, &p[2])->index, PRIM_TWIN_NONE);
     assert_int_equal(prim_twin_at(&tw, p, &p[3])->index, PRIM_TWIN_NONE);
     prim_twin_free(&tw);
+}
+
+/* The index grows with the sets entered: after 1,000 sets (the table
+ * doubled six times) each set is still found, with its note, and a
+ * primitive of none is not. */
+static void test_cscene_twins_index_grows(void **state)
+{
+    enum { N = 1000 };
+    scene_prim *p = test_calloc(N + 1, sizeof *p);
+    prim_twin tw;
+    int i;
+    (void)state;
+    for (i = 0; i <= N; i++) {
+        p[i].kind = PRIM_SPHERE;
+        p[i].dim[0] = 1 + i / 64.0;
+        p[i].world_from_object[0] = p[i].world_from_object[5] = p[i].world_from_object[10] = 1;
+    }
+    assert_int_equal(prim_twin_init(&tw), 0);
+    for (i = 0; i < N; i++) {
+        prim_twin_entry *e = prim_twin_at(&tw, p, &p[i]);
+        assert_int_equal(e->index, PRIM_TWIN_NONE);
+        assert_int_equal(prim_twin_add(&tw, p, e, (size_t)i, i * 0.5), 0);
+    }
+    assert_true(tw.mask + 1 >= 2 * N && tw.used == N);
+    for (i = 0; i < N; i++) {
+        const prim_twin_entry *e = prim_twin_at(&tw, p, &p[i]);
+        assert_int_equal(e->index, i);
+        assert_true(e->note == i * 0.5);
+    }
+    assert_int_equal(prim_twin_at(&tw, p, &p[N])->index, PRIM_TWIN_NONE);
+    prim_twin_free(&tw);
+    test_free(p);
 }
 
 int main(void)
@@ -651,6 +681,7 @@ int main(void)
         cmocka_unit_test(test_cscene_same_solids_shared),
         cmocka_unit_test(test_cscene_twins_compile_alike),
         cmocka_unit_test(test_cscene_twins_bit_for_bit),
+        cmocka_unit_test(test_cscene_twins_index_grows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
