@@ -409,10 +409,12 @@ void NS(cscene_primary_ray)(const cscene *cs, const cscene_batch *b, int k, prim
 static int cscene_lights(cscene *cs, diag *err)
 {
     const csg *t = &cs->tree;
+    lightbuf_scratch scratch;
     size_t i;
     int status = 0;
     if (t->nbounded < CSCENE_LBUF_MIN)
         return 0;
+    memset(&scratch, 0, sizeof scratch);
     cs->lbuf = mem_calloc(cs->nlights ? cs->nlights : 1, sizeof *cs->lbuf);
     if (!cs->lbuf)
         status = DIAG_IO;
@@ -422,9 +424,10 @@ static int cscene_lights(cscene *cs, diag *err)
             vec3_to_d(cs->lights[i].pos, at);
         if (lightbuf_build(i < cs->nlights ? &cs->lbuf[i] : &cs->eyebuf, i < cs->nlights ? at : cs->eye,
                            (const double (*)[3])t->olo, (const double (*)[3])t->ohi, (size_t)t->nbounded,
-                           CSCENE_LBUF_GROW) < 0)
+                           CSCENE_LBUF_GROW, &scratch) < 0)
             status = DIAG_IO;
     }
+    lightbuf_scratch_free(&scratch);
     return status ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
 }
 

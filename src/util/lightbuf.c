@@ -90,27 +90,53 @@ static void lightbuf_cover(lightbuf *lb, int f, const int c[4], int box, int *it
         }
 }
 
-int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
-                   size_t n, double grow)
+/* Room in s for n boxes: one block, carved into rc (6n), key (n), cell
+ * (6n) and first (n + 1), in that order, so each part keeps its alignment.
+ * 0, or -1 when memory runs out (s then holds nothing). */
+static int lightbuf_scratch_room(lightbuf_scratch *s, size_t n)
 {
-    lightbuf_rect *rc = NULL;
+    unsigned char *b;
+    if (s->mem && n <= s->cap)
+        return 0;
+    lightbuf_scratch_free(s);
+    if (!(b = mem_alloc(n * (6 * sizeof *s->rc + sizeof *s->key + 6 * sizeof *s->cell + sizeof *s->first)
+                        + sizeof *s->first)))
+        return -1;
+    s->mem = b;
+    s->cap = n;
+    s->rc = (lightbuf_rect *)(void *)b;
+    s->key = (uint64_t *)(void *)(b += 6 * n * sizeof *s->rc);
+    s->cell = (int (*)[4])(void *)(b += n * sizeof *s->key);
+    s->first = (int *)(void *)(b + 6 * n * sizeof *s->cell);
+    return 0;
+}
+
+void lightbuf_scratch_free(lightbuf_scratch *s)
+{
+    mem_free(s->mem);
+    memset(s, 0, sizeof *s);
+}
+
+int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
+                   size_t n, double grow, lightbuf_scratch *s)
+{
+    lightbuf_rect *rc;
     double ext[6][4];
     size_t i, j, nr = 0, total = 0, cells = 0;
     uint64_t *key;
     size_t *order = NULL;
-    int *first, (*cell)[4] = NULL, f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
+    int *first, (*cell)[4], f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
     memset(lb, 0, sizeof *lb);
     memcpy(lb->at, at, sizeof lb->at);
     lb->grow = grow;
-    if (n > LIGHTBUF_BOXES_MAX)            /* scratch: 244 bytes a box, 16 a reach */
+    if (n > LIGHTBUF_BOXES_MAX)            /* scratch: 348 bytes a box */
         return 1;
-    rc = mem_alloc((n ? n : 1) * 6 * sizeof *rc);
-    first = mem_alloc((n + 1) * sizeof *first);
-    key = mem_alloc((n ? n : 1) * sizeof *key);
-    if (!rc || !first || !key) {
-        mem_free(key);
-        goto done;
-    }
+    if (lightbuf_scratch_room(s, n ? n : 1))
+        return -1;
+    rc = s->rc;
+    first = s->first;
+    key = s->key;
+    cell = s->cell;
     for (f = 0; f < 6; f++) {
         ext[f][0] = ext[f][2] = HUGE_VAL;
         ext[f][1] = ext[f][3] = -HUGE_VAL;
@@ -153,11 +179,8 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     first[n] = (int)nr;
     /* the boxes nearest the light first in every cell: a camera ray's
      * far end then shrinks before the farther ones are tested */
-    if (!(order = radix_order(key, n))) {
-        mem_free(key);
+    if (!(order = radix_order(key, n)))
         goto done;
-    }
-    mem_free(key);
     /* per face a grid over what the boxes reach, about two cells a side
      * per square root of the boxes there */
     for (f = 0; f < 6; f++) {
@@ -176,8 +199,7 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     }
     lb->start = mem_calloc(cells + 1, sizeof *lb->start);
     lb->near = mem_alloc((lb->nnear ? (size_t)lb->nnear : 1) * sizeof *lb->near);
-    cell = mem_alloc((nr ? nr : 1) * sizeof *cell);
-    if (!lb->start || !lb->near || !cell)
+    if (!lb->start || !lb->near)
         goto done;
     /* count each cell's boxes, then place them, nearest first */
     for (j = 0; j < nr; j++)
@@ -208,9 +230,6 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     lb->start[0] = 0;
     status = 0;
 done:
-    mem_free(rc);
-    mem_free(cell);
-    mem_free(first);
     mem_free(order);
     if (status)
         lightbuf_free(lb);

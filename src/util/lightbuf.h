@@ -18,6 +18,7 @@
 #ifndef UTIL_LIGHTBUF_H
 #define UTIL_LIGHTBUF_H
 #include <stddef.h>
+#include <stdint.h>
 
 typedef struct lightbuf {
     double at[3];            /* the light */
@@ -42,13 +43,28 @@ typedef struct lightbuf {
 #define LIGHTBUF_BOXES_MIN 1024
 #define LIGHTBUF_BOXES_MAX ((size_t)1 << 20)   /* boxes a buffer is built over */
 
+/* What a build works in and leaves, for the next build to reuse: the
+ * buffers of several points over the same boxes (a scene's lights and its
+ * eye) then fault in their scratch once, not once each (docs/performance.md,
+ * run AH). Zeroed before the first build; lightbuf_scratch_free after the
+ * last. */
+typedef struct lightbuf_scratch {
+    void *mem;               /* one block for the arrays below */
+    size_t cap;              /* boxes it has room for */
+    struct lightbuf_rect *rc;/* the boxes' reaches, 6 a box at most */
+    int *first;              /* box i's reaches: rc[first[i] .. first[i + 1] - 1] */
+    uint64_t *key;           /* the boxes' distances, for their order */
+    int (*cell)[4];          /* each reach's cells */
+} lightbuf_scratch;
+
 /* Builds the buffer of the light at `at` over the finite boxes lo[i] <=
- * hi[i] (i < n), each grown by grow > 0. 0; 1 when there are more than
- * LIGHTBUF_BOXES_MAX boxes or the cells would hold more entries than the
- * limit above (nothing built); -1 when memory runs out. */
+ * hi[i] (i < n), each grown by grow > 0, working in *s. 0; 1 when there
+ * are more than LIGHTBUF_BOXES_MAX boxes or the cells would hold more
+ * entries than the limit above (nothing built); -1 when memory runs out. */
 int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], const double (*hi)[3],
-                   size_t n, double grow);
+                   size_t n, double grow, lightbuf_scratch *s);
 void lightbuf_free(lightbuf *lb);
+void lightbuf_scratch_free(lightbuf_scratch *s);
 
 /* The boxes (indices, nearest the point first) besides lb->near whose
  * grown projections reach the direction the ray from o along d (not zero)

@@ -267,8 +267,11 @@ static void test_util_lightbuf_lists_every_box_a_ray_meets(void **state)
     static int listed[N];
     uint64_t s = test_seed("test_util_lightbuf_lists_every_box_a_ray_meets");
     long answered = 0, met = 0, refused = 0, unbuilt = 0;
+    lightbuf_scratch scratch;              /* shared by the builds, as the
+                                              scene compiler's; grows with n */
     int trial;
     (void)state;
+    memset(&scratch, 0, sizeof scratch);
     for (trial = 0; trial < 24; trial++) {
         size_t n = trial % 4 == 0 ? (trial % 8 ? 60 : 9) : trial % 3 == 0 ? 60 : N;
         double at[3], grow = trial % 2 ? 1.0 / 32 : test_uniform(&s, 0.1, 1.5);
@@ -290,7 +293,7 @@ static void test_util_lightbuf_lists_every_box_a_ray_meets(void **state)
                 hi[i][a] = c + w;
             }
         }
-        built = lightbuf_build(&lb, at, (const double (*)[3])lo, (const double (*)[3])hi, n, grow);
+        built = lightbuf_build(&lb, at, (const double (*)[3])lo, (const double (*)[3])hi, n, grow, &scratch);
         assert_true(built == 0 || built == 1);
         unbuilt += built;                  /* too many entries: no buffer */
         for (k = 0; k < RAYS; k++) {
@@ -365,15 +368,20 @@ static void test_util_lightbuf_lists_every_box_a_ray_meets(void **state)
         }
         lightbuf_free(&lb);
     }
+    lightbuf_scratch_free(&scratch);
     print_message("lightbuf: %ld of 24 buffers built, %ld rays answered, %ld refused, %ld boxes met\n",
                   24 - unbuilt, answered, refused, met);
     assert_true(unbuilt <= 8 && answered > 20000 && refused > 2000 && met > 20000);
     for (trial = 0; trial < 4; trial++) {
         lightbuf lb;
         double at[3] = {0, 0, 0};
+        lightbuf_scratch fresh;
+        memset(&fresh, 0, sizeof fresh);
         mem_fail_after(trial);
-        assert_int_equal(lightbuf_build(&lb, at, (const double (*)[3])lo, (const double (*)[3])hi, 50, 0.1), -1);
+        assert_int_equal(lightbuf_build(&lb, at, (const double (*)[3])lo, (const double (*)[3])hi, 50, 0.1, &fresh),
+                         -1);
         mem_fail_after(-1);
+        lightbuf_scratch_free(&fresh);
         assert_null(lb.start);
         assert_null(lb.item);
     }
