@@ -1,6 +1,8 @@
 /* radix — stable LSD radix sort by 64-bit keys (see radix.h). */
 #include "util/radix.h"
 #include "util/mem.h"
+#include <stdint.h>
+#include <string.h>
 
 /* Digit width: 11 bits, six passes over 2048 buckets (96 KiB of counts);
  * from RADIX_WIDE keys on 14 bits, five passes over 16,384 buckets (640
@@ -13,19 +15,27 @@
 #define RADIX_BITS_WIDE 14
 #define RADIX_WIDE ((size_t)1 << 15)
 
-/* radix_order on digits of `bits` bits, a constant in each call so that
- * the loops over the digits unroll */
-static inline size_t *radix_order_in(const uint64_t *keys, size_t n, int bits)
+/* Buckets a digit has for n keys, and the digits. */
+static int radix_bits(size_t n) { return n >= RADIX_WIDE ? RADIX_BITS_WIDE : RADIX_BITS; }
+
+size_t radix_bytes(size_t n)
+{
+    int bits = radix_bits(n);
+    size_t counts = (size_t)((64 + bits - 1) / bits) << bits;
+    if (n > (SIZE_MAX / sizeof(size_t) - counts) / 2)
+        return 0;
+    return (2 * (n ? n : 1) + counts) * sizeof(size_t);
+}
+
+/* radix_order_in on digits of `bits` bits, a constant in each call so
+ * that the loops over the digits unroll. buf: the order's 2n entries (the
+ * passes go from one half to the other), then the counts. */
+static inline size_t *radix_order_bits(const uint64_t *keys, size_t n, size_t *buf, int bits)
 {
     int passes = (64 + bits - 1) / bits, b;
     size_t buckets = (size_t)1 << bits, mask = buckets - 1;
-    size_t *count = mem_calloc((size_t)passes * buckets, sizeof *count), *ord, *from, *to, i;
-    ord = mem_alloc((n ? 2 * n : 1) * sizeof *ord);
-    if (!count || !ord) {
-        mem_free(count);
-        mem_free(ord);
-        return NULL;
-    }
+    size_t *ord = buf, *count = buf + 2 * (n ? n : 1), *from, *to, i;
+    memset(count, 0, (size_t)passes * buckets * sizeof *count);
     for (i = 0; i < n; i++) {
         uint64_t k = keys[i];
         for (b = 0; b < passes; b++)
@@ -59,22 +69,31 @@ static inline size_t *radix_order_in(const uint64_t *keys, size_t n, int bits)
             ord[i] = i;
     else if (from != ord)
         memcpy(ord, from, n * sizeof *ord);
-    mem_free(count);
     return ord;
 }
 
-size_t *radix_order(const uint64_t *keys, size_t n)
+size_t *radix_order_in(const uint64_t *keys, size_t n, void *buf)
 {
-    return n >= RADIX_WIDE ? radix_order_in(keys, n, RADIX_BITS_WIDE) : radix_order_in(keys, n, RADIX_BITS);
+    return radix_bits(n) == RADIX_BITS_WIDE ? radix_order_bits(keys, n, buf, RADIX_BITS_WIDE)
+                                            : radix_order_bits(keys, n, buf, RADIX_BITS);
 }
 
-size_t *radix_rank(const uint64_t *keys, size_t n)
+size_t *radix_rank_in(const uint64_t *keys, size_t n, void *buf)
 {
-    size_t *ord = radix_order(keys, n), i;
-    if (!ord || n == 0)
-        return ord;
-    for (i = 0; i < n; i++)             /* radix_order's block holds 2n */
+    size_t *ord = radix_order_in(keys, n, buf), i;
+    for (i = 0; i < n; i++)             /* the block holds 2n */
         ord[n + ord[i]] = i;
     memcpy(ord, ord + n, n * sizeof *ord);
     return ord;
 }
+
+/* radix_order or radix_rank in a block of its own */
+static size_t *radix_alloc(const uint64_t *keys, size_t n, size_t *(*run)(const uint64_t *, size_t, void *))
+{
+    size_t bytes = radix_bytes(n);
+    void *buf = bytes ? mem_alloc(bytes) : NULL;
+    return buf ? run(keys, n, buf) : NULL;
+}
+
+size_t *radix_order(const uint64_t *keys, size_t n) { return radix_alloc(keys, n, radix_order_in); }
+size_t *radix_rank(const uint64_t *keys, size_t n) { return radix_alloc(keys, n, radix_rank_in); }

@@ -30,4 +30,12 @@ size_t *radix_order(const uint64_t *keys, size_t n);
  * needs the elements once unsorted and once sorted. mem_free; NULL when
  * memory runs out. */
 size_t *radix_rank(const uint64_t *keys, size_t n);
+
+/* The two in caller memory: buf holds radix_bytes(n) bytes (0: n is too
+ * large), aligned for size_t, and the result is its first n entries, not
+ * to be freed. A caller with several sorts and temporaries of its own
+ * then faults their pages in once (docs/performance.md, run AH). */
+size_t radix_bytes(size_t n);
+size_t *radix_order_in(const uint64_t *keys, size_t n, void *buf);
+size_t *radix_rank_in(const uint64_t *keys, size_t n, void *buf);
 #endif
