@@ -2,6 +2,7 @@
  * docs/primitives.md for the face mappings, docs/numerics.md for ranges). */
 #include "geom/prim.h"
 #include "util/dmath.h"
+#include "util/arena.h"
 #include "util/mem.h"
 #include "util/radix.h"
 #include <math.h>
@@ -450,25 +451,36 @@ static int prim_skey_alike(const prim_skey *a, const prim_skey *b)
     return a->kind == b->kind && a->cone_a == b->cone_a && a->cone_k == b->cone_k && c * c >= 0.25f * na * nb;
 }
 
-/* Identical curved solids: the later one intersects through the earliest
- * matching one's data (its own frame still gives (u,v)). Candidates come
- * from a sweep over the sorted keys, so n solids cost O(n log n) plus the
- * pairs whose keys lie within the window, not n^2 / 2 comparisons. */
-static int prim_share_solids(prim *prims, size_t n, diag *err)
+/* The bytes of scratch prim_share works in for np planes, m curved solids
+ * and n primitives, the larger of its two phases' needs (each part rounded
+ * up to ARENA_ALIGN): the planes' references and the order that sorts
+ * them, then the solids' records twice, their matches, keys and order.
+ * One block for both: the second phase reuses the pages the first one
+ * faulted in (docs/performance.md, run AH). 0 when that overflows. */
+static size_t prim_share_bytes(size_t np, size_t m, size_t n)
 {
-    prim_skey *sk, *by;
-    uint64_t *sort;
-    size_t m = 0, i, p, q, *ord = NULL;
-    long *match;
-    for (i = 0; i < n; i++)
-        m += prims[i].bounded && prims[i].kind != PRIM_BLOCK;
-    if (m < 2)
+    size_t rp = radix_bytes(np), rm = radix_bytes(m), a = ARENA_ALIGN, planes, solids;
+    if (!rp || !rm || np > SIZE_MAX / 64 || m > SIZE_MAX / 256 || n > SIZE_MAX / 16)
         return 0;
-    sk = mem_alloc(m * sizeof *sk);     /* every entry written below */
-    sort = mem_alloc(m * sizeof *sort);
-    match = mem_alloc(n * sizeof *match);
+    planes = rp + (np ? np : 1) * sizeof(prim_pref) + 2 * a;
+    solids = n * sizeof(long) + 2 * m * sizeof(prim_skey) + rm + m * sizeof(uint64_t) + 5 * a;
+    return planes > solids ? planes : solids;
+}
+
+/* Identical curved solids (m of the n primitives): the later one
+ * intersects through the earliest matching one's data (its own frame
+ * still gives (u,v)). Candidates come from a sweep over the sorted keys,
+ * so n solids cost O(n log n) plus the pairs whose keys lie within the
+ * window, not n^2 / 2 comparisons. Works in ar (prim_share_bytes). */
+static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
+{
+    prim_skey *sk = arena_alloc(ar, m * sizeof *sk), *by;
+    long *match = arena_alloc(ar, n * sizeof *match);
+    void *rb = arena_alloc(ar, radix_bytes(m));
+    uint64_t *sort = arena_alloc(ar, m * sizeof *sort);
+    size_t i, p, q, *ord;
     m = 0;
-    for (i = 0; sk && sort && match && i < n; i++) {
+    for (i = 0; i < n; i++) {
         const prim *a = &prims[i];
         static const double w[3] = {1, 0.7548776662466927, 0.5698402909980532};
         double cz = a->kind == PRIM_SPHERE ? 0 : 0.5, key = 0, win = 0;
@@ -490,18 +502,10 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
         sort[m] = radix_key_d(key);
         sk[m++].i = i;
     }
-    by = sk && sort && match && (ord = radix_order(sort, m)) ? mem_alloc(m * sizeof *by) : NULL;
-    mem_free(sort);
-    if (!by) {
-        mem_free(sk);
-        mem_free(ord);
-        mem_free(match);
-        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
-    }
+    ord = radix_order_in(sort, m, rb);
+    by = arena_alloc(ar, m * sizeof *by);
     for (p = 0; p < m; p++)             /* by key, ties in index order */
         by[p] = sk[ord[p]];
-    mem_free(ord);
-    mem_free(sk);
     sk = by;
     for (p = 0; p < m; p++) {
         size_t bi = sk[p].i;
@@ -526,34 +530,37 @@ static int prim_share_solids(prim *prims, size_t n, diag *err)
             b->smin = a->smin;
             b->inv_smin = a->inv_smin;
         }
-    mem_free(sk);
-    mem_free(match);
-    return 0;
 }
 
 int NS(prim_share)(prim *prims, size_t n, diag *err)
 {
     prim_pref *pr;
     uint64_t *sort;
-    size_t np = 0, i, j, *rank = NULL;
+    arena ar;
+    void *rb;
+    size_t np = 0, m = 0, i, j, *rank, mark, bytes;
     int k;
-    for (i = 0; i < n; i++)
+    for (i = 0; i < n; i++) {
         np += (size_t)prims[i].nplanes;
-    sort = mem_alloc((np ? np : 1) * sizeof *sort);     /* every entry written below */
+        m += prims[i].bounded && prims[i].kind != PRIM_BLOCK;
+    }
+    bytes = prim_share_bytes(np, m < 2 ? 0 : m, n);
+    if (!bytes || arena_init(&ar, bytes))
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    rb = arena_alloc(&ar, radix_bytes(np));
+    mark = arena_mark(&ar);
+    sort = arena_alloc(&ar, (np ? np : 1) * sizeof *sort);     /* every entry written below */
     np = 0;
-    for (i = 0; sort && i < n; i++)
+    for (i = 0; i < n; i++)
         for (k = 0; k < prims[i].nplanes; k++)
             sort[np++] = radix_key_d(fabs(prims[i].pl_d[k][3]));
     /* planes sorted by |offset|, ties in (primitive, plane) order, each
      * stored straight at its place; each takes the nearest earlier plane
      * of another primitive that it equals within the tolerance, and that
      * one already holds its group's single representation */
-    pr = sort && (rank = radix_rank(sort, np)) ? mem_alloc((np ? np : 1) * sizeof *pr) : NULL;
-    mem_free(sort);
-    if (!pr) {
-        mem_free(rank);
-        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
-    }
+    rank = radix_rank_in(sort, np, rb);
+    arena_release(&ar, mark);           /* the keys: pr takes their place */
+    pr = arena_alloc(&ar, (np ? np : 1) * sizeof *pr);
     np = 0;
     for (i = 0; i < n; i++)
         for (k = 0; k < prims[i].nplanes; k++) {
@@ -563,7 +570,6 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
             e->prim = (int)i;
             e->k = k;
         }
-    mem_free(rank);
     for (i = 0; i < np; i++) {
         double *q = pr[i].pl, w[4];
         for (j = i; j-- > 0 && pr[i].key - pr[j].key <= PRIM_SAME_TOL;) {
@@ -581,8 +587,11 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
             break;
         }
     }
-    mem_free(pr);
-    return prim_share_solids(prims, n, err);
+    arena_release(&ar, 0);
+    if (m >= 2)
+        prim_share_solids(prims, n, m, &ar);
+    arena_free(&ar);
+    return 0;
 }
 
 /* ---- intersection (num) -------------------------------------------- */
