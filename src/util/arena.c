@@ -4,6 +4,10 @@
 
 int arena_init(arena *a, size_t size)
 {
+    a->base = NULL;
+    a->size = a->top = 0;
+    if (size > (size_t)-1 - ARENA_ALIGN)    /* the rounding below would wrap */
+        return -1;
     size = (size + (ARENA_ALIGN - 1)) & ~(size_t)(ARENA_ALIGN - 1);
     a->base = mem_alloc(size ? size : ARENA_ALIGN);
     if (!a->base)

@@ -5,6 +5,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include "support.h"
+#include "util/arena.h"
 #include "util/diag.h"
 #include "util/dmath.h"
 #include "util/mem.h"
@@ -487,6 +488,25 @@ static void test_util_radix_order_matches_comparator(void **state)
     }
 }
 
+/* Each of the ARENA_ALIGN largest sizes, which rounding up to a multiple
+ * of ARENA_ALIGN would wrap round to 0 (all but the smallest of them), is
+ * refused, not made a block of a few bytes and reported made. Smaller
+ * sizes reach malloc, whose failure a sanitizer turns into an abort. */
+static void test_util_arena_refuses_a_size_that_wraps(void **state)
+{
+    arena a;
+    size_t n;
+    (void)state;
+    for (n = 0; n < ARENA_ALIGN; n++) {
+        assert_int_equal(arena_init(&a, (size_t)-1 - n), -1);
+        assert_null(a.base);
+        assert_int_equal(a.size, 0);
+    }
+    assert_int_equal(arena_init(&a, 1), 0);
+    assert_int_equal(a.size, ARENA_ALIGN);
+    arena_free(&a);
+}
+
 /* The computed spectral norm never exceeds the Frobenius norm by more than
  * 1e-14 relative (cscene's aspect check relies on 1e-9): random matrices of
  * random scales, and the worst cases of the closed form (one singular value,
@@ -531,6 +551,7 @@ int main(void)
         cmocka_unit_test(test_util_bvh_covers_every_item_once),
         cmocka_unit_test(test_util_lightbuf_lists_every_box_a_ray_meets),
         cmocka_unit_test(test_util_radix_order_matches_comparator),
+        cmocka_unit_test(test_util_arena_refuses_a_size_that_wraps),
         cmocka_unit_test(test_util_frobenius_bounds_spectral_norm),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
