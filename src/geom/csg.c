@@ -665,11 +665,11 @@ static void csg_canon_at(const csg_query *q, const prim *p, num t0, csg_canon *k
 static int csg_deep_in_sphere(const csg_query *q, const prim *p, const csg_canon *k, num t1)
 {
     const double *o = q->r->b.o;
-    double t0 = num_to_d(k->t0), dt = num_to_d(t1) - t0, tm = fmax(fabs(t0), fabs(t0 + dt));
+    double t0 = num_to_d(k->t0), dt = num_to_d(t1) - t0, a = fabs(t0), b = fabs(t0 + dt), tm = a > b ? a : b;
     double scale = 1 + num_to_d(p->br), e, m, need, c1[3];
     int i;
     if (!NUM_IS_FIXED)
-        scale += tm + fmax(fabs(o[0]), fmax(fabs(o[1]), fabs(o[2])));
+        scale += tm + dmath_maxabs3(o);
     e = 256 * num_to_d(NUM_ULP) * num_to_d(p->inv_smin) * scale;
     need = 2 * (3 * num_to_d(SPAN_E0) + 2 * tm * num_to_d(SPAN_E1)) * k->glen;
     m = 1 - e - (need > 1.0 / 64 ? need : 1.0 / 64);

@@ -20,6 +20,12 @@ static inline double dmath_dot3(const double *a, const double *b)
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 static inline double dmath_norm2_3(const double *a) { return dmath_dot3(a, a); }
+/* The largest |a_i| (no fmax: a library call, for NaN's sake, on hot paths). */
+static inline double dmath_maxabs3(const double *a)
+{
+    double x = fabs(a[0]), y = fabs(a[1]), z = fabs(a[2]), m = x > y ? x : y;
+    return m > z ? m : z;
+}
 static inline double dmath_len3(const double *a) { return sqrt(dmath_dot3(a, a)); }
 static inline void dmath_sub3(const double *a, const double *b, double *out)
 {
