@@ -689,18 +689,51 @@ VEC_HOT int csg_entry_window(const span *l, num *a0, num *w)
     return *a0 > *w && l[0].a.face != PRIM_FACE_NONE && l[0].b.t > span_lim(*a0);
 }
 
+/* 1 when the first span of list l (nl spans) ends at *b0, on a face,
+ * beyond its window *w = span_win(*b0) and at or below tmax, after its
+ * entry's sweep step and before the step of the next span's entry. */
+VEC_HOT int csg_exit_window(const span *l, int nl, num tmax, num *b0, num *w)
+{
+    *b0 = l[0].b.t;
+    *w = span_win(*b0);
+    return *b0 > *w && *b0 <= tmax && l[0].b.face != PRIM_FACE_NONE && *b0 > span_lim(l[0].a.t)
+           && (nl == 1 || l[1].a.t > span_lim(*b0));
+}
+
+/* For an occlusion query (some crossing will do), where A's list l has an
+ * exit window at b0 (csg_exit_window) and B's bounds keep clear of
+ * [b0 - w, b0 + w]: in span_merge's sweep the step that takes b0 then
+ * takes no end of B and no other end of A, and before it the sweep is
+ * inside A and outside B (a span of B reaching that step would meet the
+ * window). So A - B has a span ending at b0, and csg_first of its list
+ * finds a crossing at or before b0: that exit is one, *h, and B is not
+ * classified (as for the entry, csg_diff_first; docs/numerics.md, the
+ * fifth skip). */
+static int csg_exit_hit(const span *l, csg_hit *h)
+{
+    h->t = l[0].b.t;
+    h->prim = l[0].b.prim;
+    h->face = l[0].b.face;
+    h->entering = 0;
+    return 1;
+}
+
 /* The first crossing of the difference A - B at nd (an object's root)
  * given A's span list l (nl > 0, at the arena's mark): A's first entry
  * where B's bounds keep clear of it (csg_diff_first), else that of the
- * whole difference. */
+ * whole difference; for an occlusion query also A's first exit where they
+ * keep clear of that (csg_exit_hit). */
 VEC_HOT int csg_diff_rest(csg_query *q, const csg_node *nd, span *l, int nl, int tested, size_t mark,
                        csg_hit *h)
 {
     span *s = NULL;
-    num a0, w;
+    num a0, b0, w;
     int n;
     if (csg_entry_window(l, &a0, &w) && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
         return csg_first(l, nl, q->tmax, h);
+    if (q->any && csg_exit_window(l, nl, q->tmax, &b0, &w)
+        && csg_bounds_clear(q, nd->right, num_sub(b0, w), num_add(b0, w)))
+        return csg_exit_hit(l, h);
     n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark, &s);
     return n > 0 && csg_first(s, n, q->tmax, h);
 }
@@ -734,9 +767,15 @@ static int csg_diff_sphere(csg_query *q, const csg_node *nd, const csg_node *a, 
     }
     csg_canon_at(q, sp, num_max(l[0].a.t, num_neg(span_win(NUM_ZERO))), &k);
     if (csg_deep_in_sphere(q, sp, &k, k.t0)) {
-        num a0, w;
+        num a0, b0, w;
         if (csg_entry_window(l, &a0, &w) && csg_bounds_clear(q, nd->right, num_sub(a0, w), num_add(a0, w)))
             return csg_first(l, nl, q->tmax, h);
+        /* an occlusion query: X's first exit, where S holds the ray deep
+         * up to it (A's list is X's there: its step at b0 takes X's end
+         * alone) */
+        if (q->any && csg_exit_window(l, nl, q->tmax, &b0, &w) && csg_deep_in_sphere(q, sp, &k, b0)
+            && csg_bounds_clear(q, nd->right, num_sub(b0, w), num_add(b0, w)))
+            return csg_exit_hit(l, h);
         mark2 = arena_mark(q->ar);  /* X - B above X's list */
         n = csg_eval_right(q, nd, l, nl, NUM_ZERO, q->tmax, tested, mark2, &s);
         hit = n > 0 && csg_first(s, n, q->tmax, h);
