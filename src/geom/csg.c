@@ -615,69 +615,130 @@ static int csg_first(const span *s, int n, num tmax, csg_hit *h)
     return 0;
 }
 
-/* 1 when the bounds of node ni leave none of its primitives to test over
- * [lo, hi], as csg_eval would find them: a node whose bounds the ray
- * misses there; a union both of whose operands are clear; an intersection
- * or difference whose left operand is (its right one is then not asked).
- * Only bounds are tested, never a primitive. */
+/* The ray in a primitive's canonical frame, in binary64, for the
+ * canonical tests (csg_deep_in_sphere, csg_leaf_clear): the point c0 =
+ * ainv (o + t0 d - org) on the exact placement, and g = ainv d, its move
+ * per unit of t. */
+typedef struct csg_canon { double c0[3], g[3], glen; num t0; } csg_canon;
+
+VEC_HOT void csg_canon_point(const csg_query *q, const prim *p, double td, double *d, double *c)
+{
+    const prim_frame *fr = p->fr;
+    double v[3];
+    int i;
+    vec3_to_d(q->r->d, d);
+    for (i = 0; i < 3; i++)
+        v[i] = q->r->b.o[i] + td * d[i] - fr->org_d[i];
+    dmath_m3_mul_v(fr->lin->ainv_d, v, c);
+}
+
+static void csg_canon_at(const csg_query *q, const prim *p, num t0, csg_canon *k)
+{
+    double d[3];
+    csg_canon_point(q, p, num_to_d(t0), d, k->c0);
+    dmath_m3_mul_v(p->fr->lin->ainv_d, d, k->g);
+    k->glen = dmath_len3(k->g);
+    k->t0 = t0;
+}
+
+/* How far, in canonical units, a point of the ray at |t| <= tm must lie
+ * from primitive p's exact surface for the canonical tests: e, 2^8 units
+ * of the mode's rounding scaled by the canonical map's norm and the
+ * magnitudes the solver forms (the bounding radius, and in a floating
+ * mode the origin and t), which bounds how far the mode's surface points
+ * lie from the exact surface; then at least 1/64, and at least 2w glen
+ * (w = 2 eps + E0, span_win, at tm: csg_win2 is 2w; glen = |g|, or a
+ * bound of it) beyond it (docs/numerics.md, "Culling in binary64"). */
+static double csg_win2(double tm) { return 2 * (3 * num_to_d(SPAN_E0) + 2 * tm * num_to_d(SPAN_E1)); }
+
+static double csg_canon_slack(const csg_query *q, const prim *p, double tm, double glen)
+{
+    double scale = 1 + num_to_d(p->br), e, need = csg_win2(tm) * glen;
+    if (!NUM_IS_FIXED)
+        scale += tm + dmath_maxabs3(q->r->b.o);
+    e = 256 * num_to_d(NUM_ULP) * num_to_d(p->inv_smin) * scale;
+    return e + (need > 1.0 / 64 ? need : 1.0 / 64);
+}
+
+/* 1 when the ray's stretch from k->t0 to t1 lies so deep inside the
+ * sphere p that no end of the mode's span of p (prim_side) lies within w
+ * of it (csg_diff_sphere). With |c| = rho at either end, every point of
+ * the ray within (1 - rho) / |g| of it is inside the unit sphere, which
+ * holds the points between (it is convex). Asked of that: 1 - rho at
+ * least the slack (csg_canon_slack; its 1/64 keeps the chord's
+ * half-length above 0.176, which bounds how much a rounding of the
+ * discriminant moves a root). */
+static int csg_deep_in_sphere(const csg_query *q, const prim *p, const csg_canon *k, num t1)
+{
+    double t0 = num_to_d(k->t0), dt = num_to_d(t1) - t0, a = fabs(t0), b = fabs(t0 + dt), tm = a > b ? a : b;
+    double m = 1 - csg_canon_slack(q, p, tm, k->glen), c1[3];
+    int i;
+    if (!(m > 0) || dmath_norm2_3(k->c0) > m * m)
+        return 0;
+    for (i = 0; i < 3; i++)
+        c1[i] = k->c0[i] + dt * k->g[i];
+    return dmath_norm2_3(c1) <= m * m;
+}
+
+/* 1 when the canonical point c lies farther than m outside the canonical
+ * solid of a sphere, cylinder or block (kind): the unit sphere, the
+ * cylinder x^2 + y^2 <= 1, 0 <= z <= 1, the cube [0, 1]^3 (by a
+ * coordinate beyond it, or by the radius). */
+static int csg_canon_outside(int kind, const double *c, double m)
+{
+    double r = 1 + m;
+    if (kind == PRIM_SPHERE)
+        return c[0] * c[0] + c[1] * c[1] + c[2] * c[2] > r * r;
+    if (kind == PRIM_BLOCK && (c[0] < -m || c[0] > r || c[1] < -m || c[1] > r))
+        return 1;
+    if (kind == PRIM_CYLINDER && c[0] * c[0] + c[1] * c[1] > r * r)
+        return 1;
+    return c[2] < -m || c[2] > r;
+}
+
+/* 1 when no span of the sphere, cylinder or block p (as
+ * prim_intersect_spans finds it) meets the window [lo, hi] (of half-width
+ * span_win of its middle, csg_diff_rest) because the middle lies outside
+ * the exact solid by the slack (csg_canon_slack): every point of the
+ * mode's span lies within e of the exact solid (its ends do, and the
+ * solid is convex), every point of the window farther. The box misses
+ * less where the solid is turned or round: a window at a block's face
+ * beside a bore, in the bore's box but not in the bore. Outside by 1/64
+ * is asked first (the least slack), |g| only where its bound inv_smin
+ * sqrt(3) |d|max could decide the slack. */
+static int csg_leaf_clear(const csg_query *q, const prim *p, num lo, num hi)
+{
+    double a = fabs(num_to_d(lo)), b = fabs(num_to_d(hi)), tm = a > b ? a : b, d[3], c[3], g[3], glen;
+    if (p->kind != PRIM_SPHERE && p->kind != PRIM_CYLINDER && p->kind != PRIM_BLOCK)
+        return 0;
+    csg_canon_point(q, p, 0.5 * (num_to_d(lo) + num_to_d(hi)), d, c);
+    if (!csg_canon_outside(p->kind, c, 1.0 / 64))
+        return 0;
+    glen = 1.7320508075688773 * num_to_d(p->inv_smin) * dmath_maxabs3(d);
+    if (csg_win2(tm) * glen > 1.0 / 64) {
+        dmath_m3_mul_v(p->fr->lin->ainv_d, d, g);
+        glen = dmath_len3(g);
+    }
+    return csg_canon_outside(p->kind, c, csg_canon_slack(q, p, tm, glen));
+}
+
+/* 1 when node ni has no span that meets [lo, hi] (a window around a
+ * difference's entry or exit, csg_diff_rest): a node whose bounds the ray
+ * misses there; a sphere, cylinder or block the window lies clearly
+ * outside of (csg_leaf_clear); a union both of whose operands are clear;
+ * an intersection or difference whose left operand is (its spans lie
+ * within the left one's). No primitive is tested. */
 static int csg_bounds_clear(csg_query *q, int ni, num lo, num hi)
 {
     const csg_node *nd = &q->c->nodes[ni];
     num tc;
     if (csg_bounds_miss(q, nd, lo, hi, 0, &tc))
         return 1;
-    if (nd->op == CSG_LEAF || !csg_bounds_clear(q, nd->left, lo, hi))
+    if (nd->op == CSG_LEAF)
+        return csg_leaf_clear(q, &q->prims[nd->prim], lo, hi);
+    if (!csg_bounds_clear(q, nd->left, lo, hi))
         return 0;
     return nd->op != CSG_UNION || csg_bounds_clear(q, nd->right, lo, hi);
-}
-
-/* The ray in a sphere's canonical frame, in binary64, for
- * csg_deep_in_sphere: the point c0 = ainv (o + t0 d - org) on the exact
- * placement, and g = ainv d, its move per unit of t. */
-typedef struct csg_canon { double c0[3], g[3], glen; num t0; } csg_canon;
-
-static void csg_canon_at(const csg_query *q, const prim *p, num t0, csg_canon *k)
-{
-    const prim_frame *fr = p->fr;
-    double d[3], v[3], td = num_to_d(t0);
-    int i;
-    vec3_to_d(q->r->d, d);
-    for (i = 0; i < 3; i++)
-        v[i] = q->r->b.o[i] + td * d[i] - fr->org_d[i];
-    dmath_m3_mul_v(fr->lin->ainv_d, v, k->c0);
-    dmath_m3_mul_v(fr->lin->ainv_d, d, k->g);
-    k->glen = dmath_len3(k->g);
-    k->t0 = t0;
-}
-
-/* 1 when the ray's stretch from k->t0 to t1 lies so deep inside the
- * sphere p that no end of the mode's span of p (prim_side) lies within w
- * of it, w = 2 eps + E0 (span_win) at the larger |t| (csg_diff_sphere;
- * docs/numerics.md, "Culling in binary64"). With |c| = rho at either end,
- * every point of the ray within (1 - rho) / |g| of it is inside the unit
- * sphere, which holds the points between (it is convex). Asked of that:
- * 1 - rho at least 1/64 (the chord's half-length is then at least 0.176,
- * which bounds how much a rounding of the discriminant moves a root)
- * beyond e, 2^8 units of the mode's rounding scaled by the canonical map's
- * norm and the magnitudes the solver forms (the bounding radius, and in a
- * floating mode the origin and t), and the distance along the ray at
- * least 2w. */
-static int csg_deep_in_sphere(const csg_query *q, const prim *p, const csg_canon *k, num t1)
-{
-    const double *o = q->r->b.o;
-    double t0 = num_to_d(k->t0), dt = num_to_d(t1) - t0, a = fabs(t0), b = fabs(t0 + dt), tm = a > b ? a : b;
-    double scale = 1 + num_to_d(p->br), e, m, need, c1[3];
-    int i;
-    if (!NUM_IS_FIXED)
-        scale += tm + dmath_maxabs3(o);
-    e = 256 * num_to_d(NUM_ULP) * num_to_d(p->inv_smin) * scale;
-    need = 2 * (3 * num_to_d(SPAN_E0) + 2 * tm * num_to_d(SPAN_E1)) * k->glen;
-    m = 1 - e - (need > 1.0 / 64 ? need : 1.0 / 64);
-    if (!(m > 0) || dmath_norm2_3(k->c0) > m * m)
-        return 0;
-    for (i = 0; i < 3; i++)
-        c1[i] = k->c0[i] + dt * k->g[i];
-    return dmath_norm2_3(c1) <= m * m;
 }
 
 /* 1 when the first span of l starts at *a0 > *w on a face and outlasts

@@ -794,15 +794,16 @@ static void csg_face_hits(const char *deck, void (*alter)(const probe_ops *ops, 
  * csg_diff_first), and so is some crossing for a shadow ray where the
  * subtracted part's bounds keep clear of A's exit (csg_exit_hit): the
  * nearest hits, and those of rays spawned from them, are bit for bit those
- * found with every bounding box made infinite (the subtracted part then
- * always tested, so the whole difference classified), and the shadow rays'
- * answers are the same. */
+ * found with every bounding box made infinite, and those found with every
+ * object classified whole (probe whole: the subtracted part always
+ * classified, where the infinite boxes still let csg_leaf_clear skip it);
+ * the shadow rays' answers are the same. */
 static void test_csg_difference_first_crossing_near_faces(void **state)
 {
     uint64_t s = test_seed("test_csg_difference_first_crossing_near_faces");
-    long n[4] = {0, 0, 0, 0};     /* rays, hits, spawned hits, differing */
-    long sh[3] = {0, 0, 0};       /* shadow rays, occluded, differing */
-    int k;
+    long n[2][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}};   /* rays, hits, spawned hits, differing */
+    long sh[2][3] = {{0, 0, 0}, {0, 0, 0}};        /* shadow rays, occluded, differing */
+    int k, j;
     (void)state;
     for (k = 0; k < 12; k++) {
         char deck[4096], t[512];
@@ -822,12 +823,16 @@ static void test_csg_difference_first_crossing_near_faces(void **state)
                      test_uniform(&s, -0.6, 0.6), test_uniform(&s, -0.6, 0.6), -2 + csg_near(&s), t);
         p += sprintf(p, "UNION B B1 B2 B3 B4\nDIFF D A B\nOBJECT D\n");
         assert_true((size_t)(p - deck) < sizeof deck);
-        csg_face_hits(deck, csg_unbox, &s, &pl, n, sh);
+        csg_face_hits(deck, csg_unbox, &s, &pl, n[0], sh[0]);
+        csg_face_hits(deck, csg_whole, &s, &pl, n[1], sh[1]);
     }
-    csg_assert_same(n);
-    print_message("# %ld shadow rays, %ld occluded, %ld differ\n", sh[0], sh[1], sh[2]);
-    assert_true(sh[1] > sh[0] / 10 && sh[0] - sh[1] > sh[0] / 10);
-    assert_int_equal(sh[2], 0);
+    for (j = 0; j < 2; j++) {
+        print_message("# against %s:\n", j ? "the objects classified whole" : "infinite boxes");
+        csg_assert_same(n[j]);
+        print_message("# %ld shadow rays, %ld occluded, %ld differ\n", sh[j][0], sh[j][1], sh[j][2]);
+        assert_true(sh[j][1] > sh[j][0] / 10 && sh[j][0] - sh[j][1] > sh[j][0] / 10);
+        assert_int_equal(sh[j][2], 0);
+    }
 }
 
 /* A difference whose left operand is a block A = [-1, 1]^3 intersected
