@@ -16,6 +16,7 @@
 #include "cli/cli_idcheck.h"
 #include "cli/cli_mpi.h"
 #include "render/render.h"
+#include "util/cpubind.h"
 #include "util/mem.h"
 #include "util/outfile.h"
 #include <errno.h>
@@ -60,7 +61,8 @@ static void cmd_bench_help(FILE *f)
         "  --modes LIST      comma-separated modes out of q16,q32,f32,f64,hfp32,hfp64\n"
         "                    (default: all)\n"
         "  --runs N          timed renders per scene and mode, 1..%d (default 3)\n"
-        "  --threads N       worker threads, 1..%d (default: OpenMP's count, %d here)\n"
+        "  --threads N       worker threads, 1..%d (default: OpenMP's count, %d here);\n"
+        "                    as many as the CPUs are kept on one CPU each (as render)\n"
         "  --oracle PATH     the ids_oracle executable (make builds build/oracle/ids_oracle)\n"
         "  --csv OUT.csv     also write the rows as CSV with a header line; its last\n"
         "                    column, rank, is the MPI rank that ran the row (0 in a\n"
@@ -511,6 +513,7 @@ int cmd_bench(int argc, char **argv)
         cli_usage_error("bench", "no SCENE given");
         goto usage;
     }
+    cpubind_threads(o.threads);
     /* The outputs are checked before the sweep, by the rank that writes
      * them; every rank stops when they are refused. */
     diag_init(&err);

@@ -3,6 +3,7 @@
 #include "image/image_out.h"
 #include "cli/cli.h"
 #include "cli/cli_sink.h"
+#include "util/cpubind.h"
 #include "cli/cli_mpi.h"
 #include "cli/cli_data.h"
 #include "cli/cli_progress.h"
@@ -72,7 +73,9 @@ static void cmd_render_help(FILE *f)
         "  --size WxH            image size in pixels, 1..%d each (default: the\n"
         "                        deck's SIZE; at most %d with --dl)\n"
         "  --threads N           threads for the render and the PNG encoder, 1..%d\n"
-        "                        (default: OpenMP's count, %d here)\n"
+        "                        (default: OpenMP's count, %d here); as many as the\n"
+        "                        CPUs the process may use are kept on one CPU each,\n"
+        "                        unless OMP_PROC_BIND or OMP_PLACES places them\n"
         "  --aa N                N x N samples per pixel, 1..%d (default 1)\n"
         , SCENE_MAX_SIDE, DL_MAX_SIDE, RENDER_MAX_THREADS, omp_get_max_threads(), RENDER_MAX_AA);
     fprintf(f,
@@ -284,6 +287,7 @@ int cmd_render(int argc, char **argv)
     }
     /* every parallel region after the render too (the PNG encoder) */
     omp_set_num_threads(o.threads);
+    cpubind_threads(o.threads);
 
     /* Resolve and check every name before the long work: a bad fileid, a
      * missing or read-only directory, two outputs on one file or an output

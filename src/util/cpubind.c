@@ -1,0 +1,36 @@
+/* cpubind — one CPU per thread of a process's OpenMP team (see cpubind.h). */
+#define _GNU_SOURCE 1         /* sched_getaffinity, cpu_set_t */
+#include "util/cpubind.h"
+#include <omp.h>
+#include <stdlib.h>
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
+int cpubind_threads(int nthreads)
+{
+#if defined(__linux__)
+    cpu_set_t set;
+    int cpu[CPU_SETSIZE], n = 0, c, pinned = 0;
+    if (nthreads < 2 || getenv("OMP_PROC_BIND") || getenv("OMP_PLACES") || getenv("GOMP_CPU_AFFINITY")
+        || sched_getaffinity(0, sizeof set, &set))
+        return 0;
+    for (c = 0; c < CPU_SETSIZE; c++)
+        if (CPU_ISSET(c, &set))
+            cpu[n++] = c;
+    if (n != nthreads)
+        return 0;
+#pragma omp parallel num_threads(nthreads) reduction(+ : pinned)
+    {
+        cpu_set_t one;
+        int me = omp_get_thread_num();
+        CPU_ZERO(&one);
+        CPU_SET(cpu[me], &one);
+        pinned += !sched_setaffinity(0, sizeof one, &one);
+    }
+    return pinned == nthreads;
+#else
+    (void)nthreads;
+    return 0;
+#endif
+}

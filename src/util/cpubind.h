@@ -1,0 +1,22 @@
+/* cpubind — the threads of a process's OpenMP regions kept on one CPU each.
+ *
+ * OpenMP's default wait policy has an idle thread spin for some
+ * milliseconds before it sleeps: at the end of a region, and in the pool
+ * while the initial thread goes on alone. Where the scheduler has put that
+ * thread on the CPU of a thread with work, the two share the CPU in time
+ * slices of some milliseconds, and the one with work waits (a 1x1 render
+ * on two threads of a two-CPU host took 2.8 ms by the median with waiting
+ * threads that sleep, 8.7 ms with ones that spin, and 21 ms at the tenth
+ * slowest of 31: docs/performance.md, run AJ). Kept apart, a spinning
+ * thread takes no time from another. */
+#ifndef UTIL_CPUBIND_H
+#define UTIL_CPUBIND_H
+
+/* Where the process may run on exactly nthreads (>= 2) CPUs and neither
+ * OMP_PROC_BIND, OMP_PLACES nor GOMP_CPU_AFFINITY chooses a placement,
+ * starts the team of nthreads threads that later regions of that size
+ * reuse, and keeps its thread k (0: the calling one) on the k-th of those
+ * CPUs for the rest of the process: 1. Else changes nothing: 0 (every
+ * system but Linux). */
+int cpubind_threads(int nthreads);
+#endif
