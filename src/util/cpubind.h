@@ -4,11 +4,10 @@
  * milliseconds before it sleeps: at the end of a region, and in the pool
  * while the initial thread goes on alone. Where the scheduler has put that
  * thread on the CPU of a thread with work, the two share the CPU in time
- * slices of some milliseconds, and the one with work waits (a 1x1 render
- * on two threads of a two-CPU host took 2.8 ms by the median with waiting
- * threads that sleep, 8.7 ms with ones that spin, and 21 ms at the tenth
- * slowest of 31: docs/performance.md, run AJ). Kept apart, a spinning
- * thread takes no time from another. */
+ * slices of some milliseconds, and the one with work waits: small renders
+ * on two threads took twice as long as with threads that sleep
+ * (docs/performance.md, run AJ). Kept apart, a spinning thread takes no
+ * time from another. */
 #ifndef UTIL_CPUBIND_H
 #define UTIL_CPUBIND_H
 
