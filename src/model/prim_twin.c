@@ -64,8 +64,10 @@ void prim_twin_free(prim_twin *t)
 
 prim_twin_entry *prim_twin_at(const prim_twin *t, const scene_prim *prims, const scene_prim *sp)
 {
-    size_t i = (size_t)prim_twin_hash(sp) & t->mask;
-    while (t->e[i].index != PRIM_TWIN_NONE && !prim_twin_same(&prims[t->e[i].index], sp))
+    uint64_t h = prim_twin_hash(sp);
+    size_t i = (size_t)h & t->mask;
+    while (t->e[i].index != PRIM_TWIN_NONE
+           && (t->e[i].hash != (uint32_t)h || !prim_twin_same(&prims[t->e[i].index], sp)))
         i = (i + 1) & t->mask;
     return &t->e[i];
 }
@@ -74,11 +76,15 @@ int prim_twin_add(prim_twin *t, const scene_prim *prims, prim_twin_entry *e, siz
 {
     prim_twin_entry *old = t->e, *grown;
     size_t cap = t->mask + 1, i;
-    e->index = index;
+    if (index >= PRIM_TWIN_NONE)
+        return 0;
+    e->index = (uint32_t)index;
+    e->hash = (uint32_t)prim_twin_hash(&prims[index]);
     e->note = note;
     if (++t->used <= cap / 2)
         return 0;
-    if (cap > SIZE_MAX / 2 || !(grown = prim_twin_table(2 * cap))) {
+    /* the stored bits place each entry in a table of up to 2^32 */
+    if (cap > ((size_t)1 << 31) || !(grown = prim_twin_table(2 * cap))) {
         e->index = PRIM_TWIN_NONE;
         t->used--;
         return -1;
@@ -86,8 +92,12 @@ int prim_twin_add(prim_twin *t, const scene_prim *prims, prim_twin_entry *e, siz
     t->e = grown;
     t->mask = 2 * cap - 1;
     for (i = 0; i < cap; i++)
-        if (old[i].index != PRIM_TWIN_NONE)
-            *prim_twin_at(t, prims, &prims[old[i].index]) = old[i];
+        if (old[i].index != PRIM_TWIN_NONE) {
+            size_t j = old[i].hash & t->mask;
+            while (t->e[j].index != PRIM_TWIN_NONE)
+                j = (j + 1) & t->mask;
+            t->e[j] = old[i];
+        }
     mem_free(old);
     return 0;
 }

@@ -8,15 +8,21 @@
 #ifndef MODEL_PRIM_TWIN_H
 #define MODEL_PRIM_TWIN_H
 #include <stddef.h>
+#include <stdint.h>
 #include "model/scene.h"
 
-#define PRIM_TWIN_NONE ((size_t)-1)
+#define PRIM_TWIN_NONE UINT32_MAX
 
 /* An entry: the index of the first primitive of its set of twins (or
- * PRIM_TWIN_NONE while empty) and a value its user keeps with it. */
+ * PRIM_TWIN_NONE while empty), a value its user keeps with it, and the low
+ * bits of its hash: a probe that meets another set's entry tells it apart
+ * by those, without reading that primitive (scattered through the scene's
+ * primitives where few are twins), and the table grows without reading
+ * any. */
 typedef struct prim_twin_entry {
-    size_t index;
     double note;
+    uint32_t index;
+    uint32_t hash;
 } prim_twin_entry;
 
 typedef struct prim_twin {
@@ -38,7 +44,8 @@ void prim_twin_free(prim_twin *t);
 prim_twin_entry *prim_twin_at(const prim_twin *t, const scene_prim *prims, const scene_prim *sp);
 
 /* Enters primitive `index` of prims with its note in e, the empty entry
- * prim_twin_at gave for it. The table doubles once it is half full, which
+ * prim_twin_at gave for it; an index of PRIM_TWIN_NONE or more is not
+ * entered (it has no twins). The table doubles once it is half full, which
  * moves every entry: no entry pointer outlives this call. 0, or -1 when
  * memory runs out (the index is then unchanged but for e). */
 int prim_twin_add(prim_twin *t, const scene_prim *prims, prim_twin_entry *e, size_t index, double note);

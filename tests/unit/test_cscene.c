@@ -634,6 +634,10 @@ static void test_cscene_twins_bit_for_bit(void **state)
     assert_int_equal(prim_twin_add(&tw, p, e, 0, 0.5), 0);
     assert_int_equal(prim_twin_at(&tw, p, &p[1])->index, 0);
     assert_int_equal(prim_twin_at(&tw, p, &p[2])->index, PRIM_TWIN_NONE);
+    e = prim_twin_at(&tw, p, &p[3]);
+    assert_int_equal(e->index, PRIM_TWIN_NONE);
+    /* an index the entries cannot hold is not entered (nor read) */
+    assert_int_equal(prim_twin_add(&tw, p, e, (size_t)PRIM_TWIN_NONE, 0.25), 0);
     assert_int_equal(prim_twin_at(&tw, p, &p[3])->index, PRIM_TWIN_NONE);
     prim_twin_free(&tw);
 }
