@@ -7,32 +7,52 @@
 # primitives). One thread, whole process, medians of N alternated runs
 # (GROW_RUNS, default 3); printed: CPU seconds and each tool's cost over its
 # own cost at one object, by the medians and (last three columns) by the
-# minima, the runs a shared machine disturbed least. The scenes are written here, both from the one
-# list of placements. Usage: sh bench/peers/grow.sh [MAPRT [CPUTIME]]
+# minima, the runs a shared machine disturbed least. The scenes are
+# written here, both from the one list of placements. GROW_TURN=1 turns
+# each object about x, then y, then z by angles drawn from a fixed
+# pseudo-random sequence (awk's srand(1)): no two objects then share a
+# linear part, and the twins of the grid (model/prim_twin.h) give nothing.
+# Usage: sh bench/peers/grow.sh [MAPRT [CPUTIME]]
 # sh bench/peers/grow.sh --deck N FILE writes the deck of the n x n grid
 # to FILE and does nothing else (for timing one size alone, tools/ab.sh);
 # --pov N FILE writes POV-Ray's scene of it likewise.
 dir=$(dirname "$0")
 
-# place N: the grid's scale and translations, one object a line
+# place N: the grid's scale, turns (degrees about x, y, z) and
+# translations, one object a line
 place() {
-  awk -v n="$1" 'BEGIN {
-    s = 9 / n; step = 27 / n
-    for (i = 0; i < n; i++) for (j = 0; j < n; j++)
-      printf "%.6f %.6f %.6f %.6f\n", s, -13.5 + step * (i + 0.5), -13.5 + step * (j + 0.5), s - 1
+  awk -v n="$1" -v turn="${GROW_TURN:-0}" 'BEGIN {
+    s = 9 / n; step = 27 / n; srand(1)
+    for (i = 0; i < n; i++) for (j = 0; j < n; j++) {
+      ax = ay = az = 0
+      if (turn == 1) { ax = 360 * rand(); ay = 360 * rand(); az = 360 * rand() }
+      printf "%.6f %.4f %.4f %.4f %.6f %.6f %.6f\n", s, ax, ay, az,
+             -13.5 + step * (i + 0.5), -13.5 + step * (j + 0.5), s - 1
+    }
   }'
 }
 # deck PLACEMENTS: the maprt deck of those placements on standard output
+# (a card holds 72 columns: the turns go on a continuation card)
 deck() {
   sed -n '/^EYE/,/^HALFSPACE/p' "$dir/csg81.scene"
-  awk '{ printf "OBJECT PART SCALE %s TRANSLATE %s %s %s\n", $1, $2, $3, $4 }' "$1"
+  awk -v turn="${GROW_TURN:-0}" '{
+    if (turn == 1)
+      printf "OBJECT PART SCALE %s ROTATE X %s ROTATE Y %s -\n  ROTATE Z %s TRANSLATE %s %s %s\n", $1, $2, $3, $4, $5, $6, $7
+    else
+      printf "OBJECT PART SCALE %s TRANSLATE %s %s %s\n", $1, $5, $6, $7
+  }' "$1"
   echo "OBJECT GROUND"
 }
 # pov PLACEMENTS: the POV-Ray scene of those placements on standard output
 # (it includes csg.inc: render it with +L bench/peers)
 pov() {
   sed -n '1,/^#include/p' "$dir/csg81.pov"
-  awk '{ printf "object { Part scale %s translate <%s, %s, %s> }\n", $1, $2, $3, $4 }' "$1"
+  awk -v turn="${GROW_TURN:-0}" '{
+    if (turn == 1)
+      printf "object { Part scale %s rotate <%s, 0, 0> rotate <0, %s, 0> rotate <0, 0, %s> translate <%s, %s, %s> }\n", $1, $2, $3, $4, $5, $6, $7
+    else
+      printf "object { Part scale %s translate <%s, %s, %s> }\n", $1, $5, $6, $7
+  }' "$1"
   echo "object { Floor }"
 }
 
