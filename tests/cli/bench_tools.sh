@@ -3,7 +3,9 @@
 # wall user system" with cpu = user + system; tools/ab.sh alternates two
 # binaries and reports both and their ratio; bench/peers/grow.sh --deck N
 # writes bench-grow's n x n deck, which maprt reads, and --pov N its
-# POV-Ray scene; both refuse a bad N and a file they read as the output.
+# POV-Ray scene (with GROW_TURN=1 each part turned its own way, the deck
+# within 72 columns); both refuse a bad N and a file they read as the
+# output.
 # Exit 77 (skipped) without a C compiler.
 set -u
 cc=${CC:-cc}
@@ -27,6 +29,16 @@ sh bench/peers/grow.sh --deck x "$tmp/gx.scene" 2>/dev/null && fail "grow.sh --d
 sh bench/peers/grow.sh --deck 2 bench/peers/csg81.scene 2>/dev/null && fail "grow.sh --deck wrote over the deck it reads"
 cmp -s bench/peers/csg81.scene "$tmp/csg81.before" || fail "bench/peers/csg81.scene changed"
 [ -e "$tmp/g0.scene" ] || [ -e "$tmp/gx.scene" ] && fail "a refused --deck left a file"
+grep -q "^OBJECT PART .*ROTATE" "$tmp/g3.scene" && fail "the grid's deck turns its parts without GROW_TURN"
+GROW_TURN=1 sh bench/peers/grow.sh --deck 3 "$tmp/t3.scene" || fail "GROW_TURN=1 grow.sh --deck 3 failed"
+[ "$(grep '^OBJECT PART ' "$tmp/t3.scene" | awk '{ print $7, $10 }' | sort -u | wc -l)" -eq 9 ] \
+  || fail "the turned 3 x 3 deck does not turn its 9 parts each its own way"
+[ "$(grep -c '^  ROTATE Z ' "$tmp/t3.scene")" -eq 9 ] || fail "the turned deck's continuation cards are missing"
+awk 'length($0) > 72 { exit 1 }' "$tmp/t3.scene" || fail "the turned deck has a card beyond column 72"
+$MAPRT render "$tmp/t3.scene" -o "$tmp/t3.png" --size 16x12 --threads 1 --quiet || fail "maprt does not read the turned deck"
+GROW_TURN=1 sh bench/peers/grow.sh --pov 3 "$tmp/t3.pov" || fail "GROW_TURN=1 grow.sh --pov 3 failed"
+[ "$(grep -c '^object { Part scale .* rotate <.* rotate <0, .* rotate <0, 0, ' "$tmp/t3.pov")" -eq 9 ] \
+  || fail "the turned POV-Ray scene does not turn its 9 parts"
 sh bench/peers/grow.sh --pov 3 "$tmp/g3.pov" || fail "grow.sh --pov 3 failed"
 [ "$(grep -c '^object { Part scale ' "$tmp/g3.pov")" -eq 9 ] || fail "the 3 x 3 POV-Ray scene does not hold 9 parts"
 grep -q '^#include "csg.inc"' "$tmp/g3.pov" || fail "the POV-Ray scene does not include csg.inc"
