@@ -31,28 +31,31 @@ place() {
     }
   }'
 }
+# emit TURNED PLAIN PLACEMENTS: each placement through the printf format
+# TURNED (scale, the three turns, translation) with GROW_TURN=1, else
+# through PLAIN (scale, translation)
+emit() {
+  awk -v turn="${GROW_TURN:-0}" -v tf="$1" -v pf="$2" '{
+    if (turn == 1)
+      printf tf, $1, $2, $3, $4, $5, $6, $7
+    else
+      printf pf, $1, $5, $6, $7
+  }' "$3"
+}
 # deck PLACEMENTS: the maprt deck of those placements on standard output
 # (a card holds 72 columns: the turns go on a continuation card)
 deck() {
   sed -n '/^EYE/,/^HALFSPACE/p' "$dir/csg81.scene"
-  awk -v turn="${GROW_TURN:-0}" '{
-    if (turn == 1)
-      printf "OBJECT PART SCALE %s ROTATE X %s ROTATE Y %s -\n  ROTATE Z %s TRANSLATE %s %s %s\n", $1, $2, $3, $4, $5, $6, $7
-    else
-      printf "OBJECT PART SCALE %s TRANSLATE %s %s %s\n", $1, $5, $6, $7
-  }' "$1"
+  emit 'OBJECT PART SCALE %s ROTATE X %s ROTATE Y %s -\n  ROTATE Z %s TRANSLATE %s %s %s\n' \
+       'OBJECT PART SCALE %s TRANSLATE %s %s %s\n' "$1"
   echo "OBJECT GROUND"
 }
 # pov PLACEMENTS: the POV-Ray scene of those placements on standard output
 # (it includes csg.inc: render it with +L bench/peers)
 pov() {
   sed -n '1,/^#include/p' "$dir/csg81.pov"
-  awk -v turn="${GROW_TURN:-0}" '{
-    if (turn == 1)
-      printf "object { Part scale %s rotate <%s, 0, 0> rotate <0, %s, 0> rotate <0, 0, %s> translate <%s, %s, %s> }\n", $1, $2, $3, $4, $5, $6, $7
-    else
-      printf "object { Part scale %s translate <%s, %s, %s> }\n", $1, $5, $6, $7
-  }' "$1"
+  emit 'object { Part scale %s rotate <%s, 0, 0> rotate <0, %s, 0> rotate <0, 0, %s> translate <%s, %s, %s> }\n' \
+       'object { Part scale %s translate <%s, %s, %s> }\n' "$1"
   echo "object { Floor }"
 }
 
