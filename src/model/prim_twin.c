@@ -84,7 +84,7 @@ int prim_twin_add(prim_twin *t, const scene_prim *prims, prim_twin_entry *e, siz
     if (++t->used <= cap / 2)
         return 0;
     /* the stored bits place each entry in a table of up to 2^32 */
-    if (cap > ((size_t)1 << 31) || !(grown = prim_twin_table(2 * cap))) {
+    if (cap > SIZE_MAX / 2 || cap > ((size_t)1 << 31) || !(grown = prim_twin_table(2 * cap))) {
         e->index = PRIM_TWIN_NONE;
         t->used--;
         return -1;
