@@ -219,4 +219,7 @@ bench-peers: deps all $(BUILD)/bench/minimal $(if $(ISA_V3),$(BUILD)/bench/minim
 
 .PHONY: bench-grow
 bench-grow: deps-bench all $(BUILD)/bench/cputime
+	@echo "grid of parts alike:"
 	@sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime
+	@echo "parts turned each its own way (GROW_TURN=1):"
+	@GROW_TURN=1 sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime
