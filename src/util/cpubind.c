@@ -20,13 +20,21 @@ int cpubind_threads(int nthreads)
             cpu[n++] = c;
     if (n != nthreads)
         return 0;
-#pragma omp parallel num_threads(nthreads) reduction(+ : pinned)
+    /* One thread more than the CPUs. A new thread starts on the CPU of
+     * the one that creates it, and that one waits for it at libgomp's dock:
+     * spinning 300,000 times, the new thread queued behind it for a
+     * scheduler tick; with more threads than CPUs it spins 100 times and
+     * sleeps (libgomp manual, GOMP_SPINCOUNT). The extra thread ends when
+     * the next region, of nthreads, starts. */
+#pragma omp parallel num_threads(nthreads + 1) reduction(+ : pinned)
     {
         cpu_set_t one;
         int me = omp_get_thread_num();
-        CPU_ZERO(&one);
-        CPU_SET(cpu[me], &one);
-        pinned += !sched_setaffinity(0, sizeof one, &one);
+        if (me < nthreads) {
+            CPU_ZERO(&one);
+            CPU_SET(cpu[me], &one);
+            pinned += !sched_setaffinity(0, sizeof one, &one);
+        }
     }
     return pinned == nthreads;
 #else

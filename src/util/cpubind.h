@@ -13,9 +13,10 @@
 
 /* Where the process may run on exactly nthreads (>= 2) CPUs and neither
  * OMP_PROC_BIND, OMP_PLACES nor GOMP_CPU_AFFINITY chooses a placement,
- * starts the team of nthreads threads that later regions of that size
+ * starts the team whose first nthreads threads later regions of that size
  * reuse, and keeps its thread k (0: the calling one) on the k-th of those
  * CPUs for the rest of the process: 1. Else changes nothing: 0 (every
- * system but Linux). */
+ * system but Linux). The team is started one thread larger, so that its
+ * start does not wait on a spinning thread (cpubind.c says why). */
 int cpubind_threads(int nthreads);
 #endif
