@@ -25,12 +25,14 @@ int cpubind_threads(int nthreads)
      * spinning 300,000 times, the new thread queued behind it for a
      * scheduler tick; with more threads than CPUs it spins 100 times and
      * sleeps (libgomp manual, GOMP_SPINCOUNT). The extra thread ends when
-     * the next region, of nthreads, starts. */
+     * the next region, of nthreads, starts. A smaller team (OMP_DYNAMIC,
+     * OMP_THREAD_LIMIT) keeps none: a later region's threads, pinned or
+     * not, would not match. */
 #pragma omp parallel num_threads(nthreads + 1) reduction(+ : pinned)
     {
         cpu_set_t one;
         int me = omp_get_thread_num();
-        if (me < nthreads) {
+        if (me < nthreads && omp_get_num_threads() >= nthreads) {
             CPU_ZERO(&one);
             CPU_SET(cpu[me], &one);
             pinned += !sched_setaffinity(0, sizeof one, &one);

@@ -16,13 +16,13 @@
 #if defined(__linux__)
 /* Where the process may run on n >= 2 CPUs: a team of n threads is kept
  * on them in order, one each, and the answer is 0 (nothing changed) for
- * one thread, for a count that is not the CPUs', and where the
- * environment chooses OpenMP's placement. Every thread's mask is put back
+ * one thread, for a count that is not the CPUs', where the environment
+ * chooses OpenMP's placement, and where the team would be smaller. Every thread's mask is put back
  * at the end. */
 static void test_cpubind_one_cpu_each(void **state)
 {
-    cpu_set_t all;
-    int cpu[CPU_SETSIZE], n = 0, c, wrong = 0;
+    cpu_set_t all, mine;
+    int cpu[CPU_SETSIZE], n = 0, c, wrong = 0, inner = -1, kept = -1;
     (void)state;
     unsetenv("OMP_PROC_BIND");
     unsetenv("OMP_PLACES");
@@ -40,6 +40,16 @@ static void test_cpubind_one_cpu_each(void **state)
     assert_int_equal(setenv("OMP_PROC_BIND", "close", 1), 0);
     assert_int_equal(cpubind_threads(n), 0);
     unsetenv("OMP_PROC_BIND");
+    /* inside an active region the team is of one thread: none is kept */
+    omp_set_max_active_levels(1);
+#pragma omp parallel num_threads(2)
+#pragma omp single
+    {
+        inner = cpubind_threads(n);
+        kept = sched_getaffinity(0, sizeof mine, &mine) || !CPU_EQUAL(&mine, &all);
+    }
+    assert_int_equal(inner, 0);
+    assert_int_equal(kept, 0);
     assert_int_equal(cpubind_threads(n), 1);
 #pragma omp parallel num_threads(n) reduction(+ : wrong)
     {
