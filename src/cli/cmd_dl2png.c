@@ -6,7 +6,9 @@
 #include "util/sniff.h"
 #include "display5080/dl_render.h"
 #include "util/mem.h"
+#include "util/cpubind.h"
 #include "util/outfile.h"
+#include <omp.h>
 #include <string.h>
 
 #define DL2PNG_MAX_INPUT ((size_t)256 << 20)
@@ -81,6 +83,11 @@ int cmd_dl2png(int argc, char **argv)
                         "memory (0x5012) not drawn: a stream does not carry their pixels\n",
                         a.file[0], frame.src_blt_offset, frame.src_blts,
                         frame.src_blts == 1 ? "" : "s");
+            /* the RGB encoder's threads: started, each on a CPU, only now,
+             * so that no drawing (nor an OpenGL driver's threads) is kept
+             * on one CPU */
+            if (a.truecolor)
+                cpubind_threads(omp_get_max_threads());
             rc = dl_frame_write_png(a.file[1], &frame, a.truecolor, &err);
             dl_frame_free(&frame);
         }

@@ -8,8 +8,10 @@
 #include "image/image_out.h"
 #include "image/image_png.h"
 #include "render/render_part.h"
+#include "util/cpubind.h"
 #include "util/mem.h"
 #include "util/outfile.h"
+#include <omp.h>
 #include <string.h>
 
 static void cmd_merge_help(FILE *f)
@@ -176,6 +178,9 @@ int cmd_merge(int argc, char **argv)
                 "them with --part-ids");
         goto done;
     }
+    /* the PNG encoder's threads, each on a CPU (cpubind.h) */
+    if (out_png)
+        cpubind_threads(omp_get_max_threads());
     /* every output or none */
     outfile_batch_begin();
     {
