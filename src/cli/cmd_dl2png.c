@@ -5,8 +5,8 @@
 #include "cli/cli_dl.h"
 #include "util/sniff.h"
 #include "display5080/dl_render.h"
-#include "util/mem.h"
 #include "util/cpubind.h"
+#include "util/mem.h"
 #include "util/outfile.h"
 #include <omp.h>
 #include <string.h>

@@ -17,8 +17,8 @@
 /* Where the process may run on n >= 2 CPUs: a team of n threads is kept
  * on them in order, one each, and the answer is 0 (nothing changed) for
  * one thread, for a count that is not the CPUs', where the environment
- * chooses OpenMP's placement, and where the team would be smaller. Every thread's mask is put back
- * at the end. */
+ * chooses OpenMP's placement, and where the team would be smaller. Every
+ * thread's mask is put back at the end. */
 static void test_cpubind_one_cpu_each(void **state)
 {
     cpu_set_t all, mine;
