@@ -345,10 +345,10 @@ static void csg_hull(const csg_node *nodes, int ni, int hull[CSG_HULL])
     }
 }
 
-int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
+int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg *out, diag *err)
 {
     csg_ctx x;
-    int *obj = NULL, nb = 0, nu = 0, k;
+    int *obj = NULL, *src = NULL, *croot = NULL, nb = 0, nu = 0, k;
     int (*hull)[CSG_HULL] = NULL;
     double (*lo)[3] = NULL, (*hi)[3] = NULL;
     size_t cap, i, peak = 0;
@@ -371,7 +371,9 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     hull = mem_calloc(sc->nroots + 1, sizeof *hull);
     lo = mem_calloc(sc->nroots + 1, sizeof *lo);
     hi = mem_calloc(sc->nroots + 1, sizeof *hi);
-    if (!x.nodes || !obj || !hull || !lo || !hi) {
+    src = mem_calloc(sc->nroots + 1, sizeof *src);
+    croot = mem_calloc(sc->nroots + 1, sizeof *croot);
+    if (!x.nodes || !obj || !hull || !lo || !hi || !src || !croot) {
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
         goto fail;
     }
@@ -379,19 +381,46 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
      * hierarchy's items), the unbounded ones after them */
     for (i = 0; i < sc->nroots; i++) {
         int r;
+        const csg_inst *in = inst && inst[i].count ? &inst[i] : NULL;
+        if (in) {                 /* the master's tree, moved */
+            r = croot[in->master];
+            for (k = 0; k < 3; k++) {
+                lo[nb][k] = x.nodes[r].lo[k] - in->shift_d[k];
+                hi[nb][k] = x.nodes[r].hi[k] - in->shift_d[k];
+            }
+            memmove(obj + nb + 1, obj + nb, (size_t)nu * sizeof *obj);
+            memmove(src + nb + 1, src + nb, (size_t)nu * sizeof *src);
+            src[nb] = (int)i;
+            obj[nb++] = croot[i] = r;
+            out->ninst++;
+            continue;
+        }
         x.b0 = x.n;
         if ((r = csg_compile_node(&x, sc->roots[i], 1)) < 0)
             goto fail;
+        croot[i] = r;
         if (x.bd[r - x.b0].peak > peak)
             peak = x.bd[r - x.b0].peak;
         if (x.nodes[r].bounded) {
             memmove(obj + nb + 1, obj + nb, (size_t)nu * sizeof *obj);
+            memmove(src + nb + 1, src + nb, (size_t)nu * sizeof *src);
             memcpy(lo[nb], x.nodes[r].lo, sizeof lo[nb]);
             memcpy(hi[nb], x.nodes[r].hi, sizeof hi[nb]);
+            src[nb] = (int)i;
             obj[nb++] = r;
         } else {
+            src[nb + nu] = (int)i;
             obj[nb + nu++] = r;
         }
+    }
+    if (out->ninst) {
+        if (!(out->inst = mem_calloc((size_t)(nb + nu), sizeof *out->inst))) {
+            csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
+            goto fail;
+        }
+        for (k = 0; k < nb + nu; k++)
+            if (inst[src[k]].count)
+                out->inst[k] = inst[src[k]];
     }
     if (bvh_build((const double (*)[3])lo, (const double (*)[3])hi, (size_t)nb, &out->objtree)) {
         csg_err(&x, DIAG_IO, "out of memory compiling the CSG tree");
@@ -414,6 +443,8 @@ int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err)
     mem_free(x.lst);
     mem_free(x.stk);
     mem_free(x.keys);
+    mem_free(src);
+    mem_free(croot);
     return 0;
 fail:
     mem_free(out->nodes_mem);
@@ -426,6 +457,11 @@ fail:
     mem_free(hull);
     mem_free(lo);
     mem_free(hi);
+    mem_free(src);
+    mem_free(croot);
+    mem_free(out->inst);
+    out->inst = NULL;
+    out->ninst = 0;
     return err->status ? err->status : DIAG_IO;
 }
 
@@ -436,6 +472,7 @@ void NS(csg_free)(csg *c)
     mem_free(c->hull);
     mem_free(c->olo);
     mem_free(c->ohi);
+    mem_free(c->inst);
     bvh_free(&c->objtree);
     memset(c, 0, sizeof *c);
 }
@@ -909,32 +946,63 @@ static int csg_object_tree(csg_query *q, int k, int ni, int tested, csg_hit *h)
     return hit;
 }
 
-/* The nearest hit below q->tmax of object k (objects[k], a CSG subtree),
- * whose box the ray meets: a hit found replaces *best (see csg_intersect
- * for ties) and becomes the far end. An object of one primitive first
- * tests its bounding sphere, which gives the primitive test its start.
- * tested: the object's box passed over [0, q->tmax] as it is now.
- * Forced inline: left to itself GCC keeps it out of line in q16, a call
- * per object tested (+2 % of the sphere scene's instructions). */
-VEC_HOT void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *found)
+/* The first crossing below q->tmax of object k (objects[k], a CSG
+ * subtree), whose box the ray meets, into *h: 1, or 0 when there is none.
+ * An object of one primitive first tests its bounding sphere, which gives
+ * the primitive test its start. tested: the object's box passed over
+ * [0, q->tmax] as it is now. Forced inline: left to itself GCC keeps it
+ * out of line in q16, a call per object tested (+2 % of the sphere
+ * scene's instructions). */
+VEC_HOT int csg_object_hit(csg_query *q, int k, int tested, csg_hit *h)
 {
     int ni = q->c->objects[k];
     const csg_node *nd = &q->c->nodes[ni];
     num tc = NUM_ZERO;
-    csg_hit h;
-    int hit;
     if (nd->op == CSG_LEAF) {     /* one primitive: one span, no arena */
         span s;
         const prim *p = &q->prims[nd->prim];
         if (nd->bounded && vec3_sphere_miss(p->bc, p->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)) {
             q->st->pruned++;
-            return;
+            return 0;
         }
         q->st->prim_tests++;
-        hit = NS(prim_intersect_tc)(p, q->r, tc, &s) && csg_first(&s, 1, q->tmax, &h);
-    } else {
-        hit = csg_object_tree(q, k, ni, tested, &h);
+        return NS(prim_intersect_tc)(p, q->r, tc, &s) && csg_first(&s, 1, q->tmax, h);
     }
+    return csg_object_tree(q, k, ni, tested, h);
+}
+
+/* csg_object_hit of an instance (q->c->inst[k]): the ray moved by its
+ * shift, which keeps every parameter, meets its master's tree; the
+ * primitive it leaves, if the instance's, named as the master's, and the
+ * primitive hit named as the instance's. Out of line: every object of a
+ * scene without instances takes the test above alone. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int csg_object_inst(csg_query *q, int k, int tested, csg_hit *h)
+{
+    const csg_inst *in = &q->c->inst[k];
+    csg_query qi = *q;
+    prim_ray r = *q->r;
+    int hit;
+    r.o = vec3_add(r.o, in->shift);
+    vec3_to_d(r.o, r.b.o);
+    r.excl_prim = r.excl_prim >= in->first && r.excl_prim - in->first < in->count ? r.excl_prim - in->dprim : -1;
+    qi.r = &r;
+    hit = csg_object_hit(&qi, k, tested, h);
+    if (hit)
+        h->prim += in->dprim;
+    return hit;
+}
+
+/* The nearest hit below q->tmax of object k, whose box the ray meets: a
+ * hit found replaces *best (see csg_intersect for ties) and becomes the
+ * far end. Forced inline, as csg_object_hit. */
+VEC_HOT void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *found)
+{
+    csg_hit h;
+    int hit = q->c->inst && q->c->inst[k].count ? csg_object_inst(q, k, tested, &h)
+                                                : csg_object_hit(q, k, tested, &h);
     if (hit && (!*found || h.t < best->t
                 || (h.t == best->t && (h.entering > best->entering
                                        || (h.entering == best->entering && h.prim < best->prim))))) {

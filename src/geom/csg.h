@@ -59,6 +59,18 @@ typedef struct csg_node {
  * qualifies; a deeper one keeps them in the query's arena. */
 #define CSG_TODO_LOCAL 64
 
+/* An object traced through an earlier object's compiled tree (an
+ * instance, model/scene_inst.h): the ray moved by shift meets that tree's
+ * primitives where it would meet the object's own, and primitive i of
+ * the object (first <= i < first + count) stands where that tree's
+ * i - dprim does. count 0: the object's own tree. */
+typedef struct csg_inst {
+    vec3 shift;              /* in num; |shift| < 2 sqrt(3) GEOM_W */
+    double shift_d[3];       /* the same in binary64 */
+    int master;              /* while building: the root index copied */
+    int first, count, dprim;
+} csg_inst;
+
 typedef struct csg {
     const prim *prims;       /* the compiled primitives the leaves name */
     csg_node *nodes;         /* in the block at nodes_mem, from its first
@@ -80,6 +92,9 @@ typedef struct csg {
                                 cell, read from 240 KB arrays at 10,000
                                 objects, not from the roots among 6 MB of
                                 nodes */
+    csg_inst *inst;          /* per object (as objects[]), or NULL where
+                                none is an instance */
+    int ninst;
     bvh objtree;             /* over objects[0 .. nbounded - 1] */
     size_t peak_spans;       /* span storage one query needs at most */
     int whole;               /* classify each object whole, without
@@ -99,10 +114,13 @@ typedef struct csg_hit {
 } csg_hit;
 
 /* Builds the compiled tree of sc over the compiled primitives prims (kept
- * by the tree: the queries read them).
+ * by the tree: the queries read them). inst: NULL, or per root of sc its
+ * csg_inst, master naming an earlier root, itself none, whose tree the
+ * root's object is traced through (its own primitives need not be
+ * compiled).
  * 0 on success; DIAG_INPUT for malformed trees (bad indices, cycles, nesting
  * deeper than CSG_MAX_NEST); DIAG_IO when memory runs out. */
-int NS(csg_build)(const scene *sc, const prim *prims, csg *out, diag *err);
+int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg *out, diag *err);
 void NS(csg_free)(csg *c);
 /* Bytes of arena a thread needs for csg_intersect. */
 size_t NS(csg_arena_bytes)(const csg *c);

@@ -9,7 +9,7 @@
  * 4x4 world_from_object (its translation column left out). */
 static const int prim_twin_lin[9] = {0, 1, 2, 4, 5, 6, 8, 9, 10};
 
-static int prim_twin_same(const scene_prim *a, const scene_prim *b)
+int prim_twin_same(const scene_prim *a, const scene_prim *b)
 {
     int k;
     if (a->kind != b->kind || memcmp(a->dim, b->dim, sizeof a->dim))
@@ -23,7 +23,7 @@ static int prim_twin_same(const scene_prim *a, const scene_prim *b)
 
 /* A hash of exactly the bits prim_twin_same compares (FNV-1a over 64-bit
  * words, then a final mix of the high bits into the low ones). */
-static uint64_t prim_twin_hash(const scene_prim *sp)
+uint64_t prim_twin_hash(const scene_prim *sp)
 {
     uint64_t h = 0xcbf29ce484222325u ^ (uint64_t)sp->kind, w;
     int k;

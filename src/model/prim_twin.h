@@ -31,6 +31,12 @@ typedef struct prim_twin {
     size_t used;               /* entries filled, at most half of them */
 } prim_twin;
 
+/* 1 when a and b are twins: kind, dimensions and the linear part of
+ * world_from_object alike bit for bit. */
+int prim_twin_same(const scene_prim *a, const scene_prim *b);
+/* A hash of exactly the bits prim_twin_same compares. */
+uint64_t prim_twin_hash(const scene_prim *sp);
+
 /* An empty index. It grows with the sets of twins entered, not with the
  * primitives looked up: a grid of 10,000 copies of one part holds a few
  * sets, in a table that stays in the L1 cache (docs/performance.md, run

@@ -1,7 +1,8 @@
 /* scene_box — the box in deck units that holds a bounded scene primitive:
  * its canonical bounding box under world_from_object, each coordinate the
  * least and greatest of the eight corners as formed in double. Read by the
- * normalisation (cscene). */
+ * normalisation (cscene) and by the search for translated copies
+ * (scene_inst). */
 #ifndef MODEL_SCENE_BOX_H
 #define MODEL_SCENE_BOX_H
 #include "model/scene.h"

@@ -3,6 +3,7 @@
 #include "util/dmath.h"
 #include "model/prim_twin.h"
 #include "model/scene_box.h"
+#include "model/scene_inst.h"
 #include "model/scene_map.h"
 #include "util/mem.h"
 #include <float.h>
@@ -19,6 +20,18 @@ void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world)
     int i;
     for (i = 0; i < 3; i++)
         world[i] = cs->nm.scale * deck[i] + cs->nm.off[i];
+}
+
+void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out)
+{
+    const csg_inst *in;
+    const prim *p = cscene_prim_of(cs, pi, &in);
+    if (!in) {
+        NS(prim_surface)(p, face, pt, need_uv, out);
+        return;
+    }
+    NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
+    vec3_to_d(pt, out->p);        /* the point itself, not its master's */
 }
 
 /* Normalisation: the bounded primitives are mapped into the cube
@@ -190,6 +203,8 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
     for (i = 0; i < cs->nprims; i++) {
         prim *p = &cs->prims[i];
         const scene_prim *sp = &sc->prims[i];
+        if (cs->prim_root && cs->prim_root[i] >= 0)
+            continue;             /* its master's is checked */
         if (p->bounded) {
             double aspect = 0;
             bounded = 1;
@@ -395,12 +410,55 @@ static prim_lin *cscene_lin_room(cscene *cs, size_t k)
     return &cs->lin_blk[k / CSCENE_LIN_BLOCK][k % CSCENE_LIN_BLOCK];
 }
 
+/* The objects traced as translated copies of an earlier one
+ * (model/scene_inst.h): found in deck units to within PRIM_SAME_TOL, kept
+ * farther than 2^-10 normalised units from every other object; each
+ * shift rounded to num once, so that the ray and the object's box move
+ * by the same vector. Their primitives are then not compiled; *nprims
+ * says how many they are. */
+static int cscene_instances(const scene *sc, cscene *cs, size_t *nprims, diag *err)
+{
+    scene_inst *si = NULL;
+    size_t i;
+    int n = scene_inst_find(sc, PRIM_SAME_TOL / cs->nm.scale, (1.0 / 1024) / cs->nm.scale, &si), j;
+    *nprims = 0;
+    if (n <= 0)
+        return n < 0 ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
+    cs->root_inst = mem_calloc(sc->nroots, sizeof *cs->root_inst);
+    cs->prim_root = mem_alloc(sc->nprims * sizeof *cs->prim_root);
+    if (!cs->root_inst || !cs->prim_root) {
+        mem_free(si);
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
+    }
+    for (i = 0; i < sc->nprims; i++)
+        cs->prim_root[i] = -1;
+    for (i = 0; i < sc->nroots; i++) {
+        csg_inst *in = &cs->root_inst[i];
+        double d[3];
+        if (si[i].master < 0)
+            continue;
+        for (j = 0; j < 3; j++)
+            d[j] = -si[i].shift[j] * cs->nm.scale;
+        in->shift = vec3_from_d(d);
+        vec3_to_d(in->shift, in->shift_d);
+        in->master = si[i].master;
+        in->first = si[i].first;
+        in->count = si[i].count;
+        in->dprim = si[i].dprim;
+        for (j = 0; j < in->count; j++)
+            cs->prim_root[in->first + j] = (int)i;
+        *nprims += (size_t)in->count;
+    }
+    mem_free(si);
+    return 0;
+}
+
 int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
 {
     cscene *cs;
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
-    size_t i, npl = 0, nlin = 0, nown = 0;
+    size_t i, npl = 0, nlin = 0, nown = 0, ninst = 0;
     prim_twin tw = {NULL, 0, 0};
     prim_lin *lin = NULL;
     int status = DIAG_IO;
@@ -444,12 +502,18 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     status = DIAG_IO;
     for (i = 0; i < sc->nprims; i++)
         npl += (size_t)prim_nplanes(sc->prims[i].kind);
+    if ((status = cscene_instances(sc, cs, &ninst, err)))
+        goto fail;
+    status = DIAG_IO;
     if (sc->nprims) {
-        cs->prims = mem_calloc(sc->nprims, sizeof *cs->prims);
-        cs->prim_pl = mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl);
+        /* where instances leave most primitives uncompiled, their arrays
+         * are mostly never written: small pages (mem_calloc_sparse) */
+        void *(*room)(size_t, size_t) = 2 * ninst > sc->nprims ? mem_calloc_sparse : mem_calloc;
+        cs->prims = room(sc->nprims, sizeof *cs->prims);
+        cs->prim_pl = room(npl ? npl : 1, sizeof *cs->prim_pl);
         cs->prim_pl_d = PRIM_PL_SHARED ? (double (*)[4])cs->prim_pl
-                                       : mem_calloc(npl ? npl : 1, sizeof *cs->prim_pl_d);
-        cs->prim_fr = mem_calloc(sc->nprims, sizeof *cs->prim_fr);
+                                       : room(npl ? npl : 1, sizeof *cs->prim_pl_d);
+        cs->prim_fr = room(sc->nprims, sizeof *cs->prim_fr);
         cs->face_row = mem_calloc(sc->nprims, sizeof *cs->face_row);
         if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr || !cs->face_row) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
@@ -464,14 +528,23 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     /* each primitive with the linear results of its first twin, if any */
     for (i = 0, npl = 0; i < sc->nprims; i++) {
         const scene_prim *sp = &sc->prims[i];
-        prim_twin_entry *e = prim_twin_at(&tw, sc->prims, sp);
-        int known = e->index != PRIM_TWIN_NONE;
-        double radius = known ? e->note : 0;
+        prim_twin_entry *e;
+        int known;
+        double radius;
         if (sp->attr < 0 || (size_t)sp->attr >= sc->nattrs) {
             status = diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
                              "primitive '%s': attribute index out of range", sp->name);
             goto fail;
         }
+        if (cs->prim_root && cs->prim_root[i] >= 0) {   /* traced as its master's */
+            cs->face_row[i] = cscene_face_row_of(sp);
+            nown += cs->face_row[i] == CSCENE_ROW_OWN;
+            npl += (size_t)prim_nplanes(sp->kind);
+            continue;
+        }
+        e = prim_twin_at(&tw, sc->prims, sp);
+        known = e->index != PRIM_TWIN_NONE;
+        radius = known ? e->note : 0;
         if (!known && !(lin = cscene_lin_room(cs, nlin))) {
             status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
@@ -536,7 +609,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         for (j = 0; j < 3; j++)
             cs->lights[i].rgb[j] = l->color[j] * l->intensity;
     }
-    if ((status = NS(csg_build)(sc, cs->prims, &cs->tree, err)) || (status = cscene_lights(cs, err)) ||
+    if ((status = NS(csg_build)(sc, cs->prims, cs->root_inst, &cs->tree, err)) || (status = cscene_lights(cs, err)) ||
         (status = cscene_maps(sc, cs, err)) || (status = cscene_faces(sc, cs, nown, err)))
         goto fail;
     *out = cs;
@@ -563,6 +636,8 @@ void NS(cscene_free)(cscene *cs)
     if (!PRIM_PL_SHARED)
         mem_free(cs->prim_pl_d);
     mem_free(cs->prim_fr);
+    mem_free(cs->prim_root);
+    mem_free(cs->root_inst);
     for (i = 0; i < cs->nlin_blk; i++)
         mem_free(cs->lin_blk[i]);
     mem_free(cs->lin_blk);

@@ -44,6 +44,12 @@ typedef struct cscene {
     prim_plane *prim_pl;
     double (*prim_pl_d)[4];
     prim_frame *prim_fr;
+    /* Instances (model/scene_inst.h): per root its csg_inst, and per
+     * primitive the root of the instance it belongs to, or -1; both NULL
+     * where the scene has none. An instance's primitives are not compiled:
+     * its master's stand for them (cscene_prim_of, cscene_surface). */
+    csg_inst *root_inst;
+    int *prim_root;
     prim_lin **lin_blk;            /* the distinct linear parts (twins share
                                       one), CSCENE_LIN_BLOCK a block, in
                                       nlin_blk blocks allocated as they
@@ -94,6 +100,19 @@ static inline const cscene_face *cscene_face_at(const cscene *cs, int pi, int fa
     size_t k = face >= 0 && face < SCENE_MAX_FACES ? (size_t)face + 1 : 0;
     return &cs->faces[cs->face_row[pi] + k];
 }
+
+/* The compiled primitive that stands for primitive pi: its own, or for a
+ * primitive of an instance its master's (at the point moved by *in's
+ * shift; *in NULL otherwise). */
+static inline const prim *cscene_prim_of(const cscene *cs, int pi, const csg_inst **in)
+{
+    int r = cs->prim_root ? cs->prim_root[pi] : -1;
+    *in = r >= 0 ? &cs->root_inst[r] : NULL;
+    return r >= 0 ? &cs->prims[pi - cs->root_inst[r].dprim] : &cs->prims[pi];
+}
+
+/* prim_surface of primitive pi (any, an instance's included) at pt. */
+void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out);
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:
  * DIAG_INPUT with the location of the offending definition, DIAG_IO when

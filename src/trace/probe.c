@@ -62,9 +62,14 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
     const cscene *cs = p->cs;
     prim_ray r;
     span s;
+    const prim *pr;
+    const csg_inst *in;
     if (pi < 0 || (size_t)pi >= cs->nprims || probe_ray(cs, o, d, &r))
         return 0;
-    if (!NS(prim_intersect)(&cs->prims[pi], &r, num_neg(num_from_i(GEOM_TBIG)), num_from_i(GEOM_TMAX), &s))
+    pr = cscene_prim_of(cs, pi, &in);
+    if (in)                       /* an instance's: its master's, moved */
+        prim_ray_set(&r, vec3_add(r.o, in->shift), r.d, -1, 0);
+    if (!NS(prim_intersect)(pr, &r, num_neg(num_from_i(GEOM_TBIG)), num_from_i(GEOM_TMAX), &s))
         return 0;
     t[0] = num_to_d(s.a.t) / cs->nm.scale;
     t[1] = num_to_d(s.b.t) / cs->nm.scale;
@@ -89,7 +94,7 @@ static int probe_trace(const probe_cs *pc, const prim_ray *r, const lightbuf *lb
                           : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), ar, &gs, &ch)))
         return 0;
     *pn = vec3_madd(r->o, ch.t, r->d);
-    NS(prim_surface)(&cs->prims[ch.prim], ch.face, *pn, 1, &h->sf);
+    NS(cscene_surface)(cs, ch.prim, ch.face, *pn, 1, &h->sf);
     h->t = num_to_d(ch.t) / cs->nm.scale;
     h->prim = ch.prim;
     h->face = ch.face;
@@ -230,6 +235,8 @@ static int probe_deepen(void *v)
 
 static void probe_whole(void *v) { ((probe_cs *)v)->cs->tree.whole = 1; }
 
+static int probe_instances(const void *v) { return ((const probe_cs *)v)->cs->tree.ninst; }
+
 const probe_ops NS(probe_ops) = {
     .name = NUM_NAME,
     .compile = probe_compile,
@@ -244,4 +251,5 @@ const probe_ops NS(probe_ops) = {
     .whole = probe_whole,
     .light = probe_light,
     .buffers = probe_buffers,
+    .instances = probe_instances,
 };

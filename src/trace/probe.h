@@ -60,6 +60,9 @@ typedef struct probe_ops {
      * where the compile built them: for tests that the buffers never change
      * an answer. Returns how many buffers were built. */
     int (*buffers)(void *cs);
+    /* The number of objects traced through an earlier object's compiled
+     * primitives (instances, model/scene_inst.h). */
+    int (*instances)(const void *cs);
 } probe_ops;
 
 extern const probe_ops q16_probe_ops, q32_probe_ops, f32_probe_ops, f64_probe_ops,

@@ -53,11 +53,12 @@ static inline void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_f
     if (!f->need_uv) {
         tc->rs.uv_skipped++;
         if (f->flat_k >= 0) {
-            memcpy(sf->n, cs->prims[h->prim].pl_d[f->flat_k], sizeof sf->n);
+            const csg_inst *in;
+            memcpy(sf->n, cscene_prim_of(cs, h->prim, &in)->pl_d[f->flat_k], sizeof sf->n);
             return;
         }
     }
-    NS(prim_surface)(&cs->prims[h->prim], h->face, p, f->need_uv, sf);
+    NS(cscene_surface)(cs, h->prim, h->face, p, f->need_uv, sf);
 }
 
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,

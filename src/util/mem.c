@@ -139,6 +139,13 @@ void *mem_calloc(size_t count, size_t size)
     return size ? mem_huge(calloc(1, size), size) : calloc(1, 1);
 }
 
+void *mem_calloc_sparse(size_t count, size_t size)
+{
+    if ((size && count > SIZE_MAX / size) || mem_should_fail())
+        return NULL;
+    return calloc(count && size ? count : 1, count && size ? size : 1);
+}
+
 void *mem_realloc(void *p, size_t size)
 {
     if (mem_should_fail())

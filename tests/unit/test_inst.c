@@ -1,0 +1,246 @@
+/* test_inst — instances: which objects scene_inst_find takes for
+ * translated copies of an earlier one (model/scene_inst.h), and that a
+ * scene traced through them answers as the same scene traced object by
+ * object, in every mode: nearest hits, rays spawned from their surfaces,
+ * shadow rays and single primitives' spans. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include "model/scene_inst.h"
+#include "util/mem.h"
+#include "tracer_test.h"
+
+/* The part of bench/peers/csg81.scene: a block meets a sphere, minus three
+ * bores; the bores reach past the block, so its primitives' boxes are
+ * wider (6 across) than the part's (2). */
+#define INST_HEAD                                                              \
+    "EYE     22 -30 20\nLOOKAT  0 0 -1\nUP      0 0 1\nFOV     40\n"          \
+    "SIZE    64 48\nAMBIENT 0.12 0.12 0.12\nDEPTH   5\n"                       \
+    "LIGHT  60 -50 90  INTENSITY 0.9\n"                                        \
+    "ATTR BODY   COLOR 0.30 0.50 0.85  SPECULAR 0.3  EXPONENT 40\n"           \
+    "ATTR BORE   COLOR 0.85 0.75 0.30\n"                                       \
+    "ATTR FLOOR  COLOR 0.60 0.60 0.60  MIRROR 0.2\n"                           \
+    "BLOCK    CUBE  2 2 2        TRANSLATE -1 -1 -1\n"                         \
+    "SPHERE   BALL  1.35\n"                                                    \
+    "CYLINDER BORE  0.5 3        TRANSLATE 0 0 -1.5\n"                         \
+    "INTER    ROUND CUBE BALL\n"                                               \
+    "DIFF     PART  ROUND ATTR BODY  BORE ATTR BORE ROTATE Y 90 -\n"          \
+    "               BORE ATTR BORE ROTATE X 90  BORE ATTR BORE\n"             \
+    "HALFSPACE GROUND  ATTR FLOOR  TRANSLATE 0 0 -1.01\n"
+
+/* The instances of deck head + objects: their count, and *out. */
+static int inst_find(const char *objects, scene_inst **out, scene **sc)
+{
+    char deck[4096];
+    snprintf(deck, sizeof deck, "%s%s", INST_HEAD, objects);
+    *sc = tt_parse(deck);
+    assert_non_null(*sc);
+    return scene_inst_find(*sc, 1e-9, 1e-3, out);
+}
+
+static void test_inst_translated_copy(void **state)
+{
+    scene *sc;
+    scene_inst *si;
+    (void)state;
+    /* the copy 2.9 along x: its bores' boxes overlap the first part's, its
+     * own box (the block's) keeps 0.9 away */
+    assert_int_equal(inst_find("OBJECT PART\nOBJECT PART TRANSLATE 2.9 0.1 0\nOBJECT GROUND\n", &si, &sc), 1);
+    assert_int_equal(si[0].master, -1);
+    assert_int_equal(si[1].master, 0);
+    assert_int_equal(si[2].master, -1);
+    assert_int_equal(si[1].count, 5);
+    assert_int_equal(si[1].dprim, 5);
+    assert_int_equal(si[1].first, 5);
+    assert_true(fabs(si[1].shift[0] - 2.9) < 1e-12 && fabs(si[1].shift[1] - 0.1) < 1e-12
+                && fabs(si[1].shift[2]) < 1e-12);
+    mem_free(si);
+    scene_free(sc);
+    /* a third copy takes the first for its master, not the second */
+    assert_int_equal(inst_find("OBJECT PART\nOBJECT PART TRANSLATE 3.3 0 0\nOBJECT PART TRANSLATE 6.6 0 0\n",
+                               &si, &sc), 2);
+    assert_int_equal(si[2].master, 0);
+    assert_int_equal(si[2].dprim, 10);
+    mem_free(si);
+    scene_free(sc);
+}
+
+static void test_inst_refused(void **state)
+{
+    static const char *const none[] = {
+        /* boxes 0.0005 apart, within the gap of 0.001 */
+        "OBJECT PART\nOBJECT PART TRANSLATE 2.0005 0 0\n",
+        /* turned, scaled: no twins */
+        "OBJECT PART\nOBJECT PART ROTATE Z 90 TRANSLATE 5 0 0\n",
+        "OBJECT PART\nOBJECT PART SCALE 2 TRANSLATE 6 0 0\n",
+        /* the floor's plane through the copy */
+        "OBJECT PART\nOBJECT PART TRANSLATE 5 0 -0.5\nOBJECT GROUND\n",
+        /* a sphere carved out of the floor's half-space around the copy:
+         * that object's box, by its operators, would be empty */
+        "DIFF CAVE GROUND BALL TRANSLATE 5 0 0\n"
+        "OBJECT PART\nOBJECT PART TRANSLATE 5 0 0.5\nOBJECT CAVE\n",
+        /* a half-space in the object itself */
+        "OBJECT GROUND\nOBJECT GROUND TRANSLATE 5 0 0\n",
+        /* one object only */
+        "OBJECT PART\n",
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof none / sizeof none[0]; i++) {
+        scene *sc;
+        scene_inst *si = (scene_inst *)&si;
+        int n = inst_find(none[i], &si, &sc);
+        if (n != 0)
+            fprintf(stderr, "case %zu: %d instances\n", i, n);
+        assert_int_equal(n, 0);
+        assert_null(si);
+        scene_free(sc);
+    }
+}
+
+/* A primitive of a copy whose translation strays by more than tol from its
+ * object's: no instance; by less: one. */
+static void test_inst_translation_tolerance(void **state)
+{
+    scene *sc;
+    scene_inst *si;
+    (void)state;
+    assert_int_equal(inst_find("OBJECT PART\nOBJECT PART TRANSLATE 5 0 0\n", &si, &sc), 1);
+    sc->prims[7].world_from_object[3] += 2e-9;
+    mem_free(si);
+    assert_int_equal(scene_inst_find(sc, 1e-9, 1e-3, &si), 0);
+    sc->prims[7].world_from_object[3] -= 1.5e-9;
+    assert_int_equal(scene_inst_find(sc, 1e-9, 1e-3, &si), 1);
+    mem_free(si);
+    /* a tree that takes in another's (which the compiler refuses): none */
+    sc->nodes[sc->roots[1]].left = sc->roots[0];
+    assert_int_equal(scene_inst_find(sc, 1e-9, 1e-3, &si), 0);
+    scene_free(sc);
+}
+
+/* Tolerances on ray parameters (deck units), by mode: q16 q32 f32 f64
+ * hfp32 hfp64; test_oracle's bounds, but for the binary64 modes, where
+ * the turned grid's solids (inst_grid) move hits by up to 2e-9. */
+static const double inst_tol[TT_MODES] = {3e-3, 1e-7, 3e-5, 1e-8, 3e-4, 1e-8};
+
+/* The 3 x 3 grid of parts over the floor: plain (each part an instance of
+ * the first but the first), or each turned about z by a different angle
+ * of 1e-10 to 9e-10 degrees, so that no two are twins and each is traced
+ * as its own: the same solids within 3e-11 deck units. */
+static scene *inst_grid(int turned)
+{
+    char deck[8192];
+    size_t n = (size_t)snprintf(deck, sizeof deck, "%s", INST_HEAD);
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            n += (size_t)snprintf(deck + n, sizeof deck - n, "OBJECT PART ROTATE Z %de-10 TRANSLATE %.2f %.2f 0\n",
+                                  turned ? 1 + 3 * i + j : 0, -3.3 + 3.3 * i, -3.3 + 3.3 * j);
+    snprintf(deck + n, sizeof deck - n, "OBJECT GROUND\n");
+    return tt_parse(deck);
+}
+
+static void test_inst_traced_alike(void **state)
+{
+    uint64_t seed = test_seed("test_inst_traced_alike");
+    scene *sc[2];
+    int m, k;
+    (void)state;
+    for (k = 0; k < 2; k++)
+        assert_non_null(sc[k] = inst_grid(k));
+    for (m = 0; m < TT_MODES; m++) {
+        const probe_ops *ops = tt_mode(m);
+        void *cs[2];
+        diag err;
+        uint64_t rng = seed;
+        int r, hits = 0, spawned = 0, shadows = 0, odd = 0, rays = 2000;
+        for (k = 0; k < 2; k++) {
+            diag_init(&err);
+            if (ops->compile(sc[k], &cs[k], &err))
+                diag_print(stderr, &err);
+            assert_int_equal(err.status, 0);
+        }
+        assert_int_equal(ops->instances(cs[0]), 8);
+        assert_int_equal(ops->instances(cs[1]), 0);
+        for (r = 0; r < rays; r++) {
+            double o[3], a[3], d[3], d2[3], len = 0, len2 = 0;
+            probe_hit h[2], g[2];
+            int f[2], s[2], c, pi;
+            /* from above the floor, at a point in a random part's box */
+            for (c = 0; c < 3; c++)
+                o[c] = test_uniform(&rng, -12, 12);
+            o[2] = test_uniform(&rng, 1.5, 12);
+            pi = (int)(test_rand(&rng) % 9);
+            a[0] = -3.3 + 3.3 * (pi / 3) + test_uniform(&rng, -1, 1);
+            a[1] = -3.3 + 3.3 * (pi % 3) + test_uniform(&rng, -1, 1);
+            a[2] = test_uniform(&rng, -1, 1);
+            for (c = 0; c < 3; c++) {
+                d[c] = a[c] - o[c];
+                d2[c] = test_uniform(&rng, -1, 1);
+                len += d[c] * d[c];
+                len2 += d2[c] * d2[c];
+            }
+            for (c = 0; c < 3; c++) {
+                d[c] /= sqrt(len);
+                d2[c] /= sqrt(len2);
+            }
+            for (k = 0; k < 2; k++)
+                f[k] = ops->hit(cs[k], o, d, &h[k]);
+            if (f[0] != f[1] || (f[0] && (h[0].prim != h[1].prim || h[0].face != h[1].face
+                                          || h[0].entering != h[1].entering
+                                          || fabs(h[0].t - h[1].t) > inst_tol[m] * (1 + h[0].t / 10)))) {
+                odd++;
+                continue;
+            }
+            if (!f[0])
+                continue;
+            hits++;
+            /* a ray spawned from the surface hit, either way from it:
+             * outward it must not meet that surface again, inward it
+             * finds its exit */
+            for (k = 0; k < 2; k++)
+                s[k] = ops->respawn(cs[k], o, d, d2, &h[k], &g[k]);
+            if (s[0] != s[1] || (s[0] == 1 && (g[0].prim != g[1].prim || g[0].face != g[1].face
+                                               || fabs(g[0].t - g[1].t) > inst_tol[m] * (1 + g[0].t / 10)))) {
+                odd++;
+                continue;
+            }
+            spawned += s[0] == 1;
+            for (k = 0; k < 2; k++)
+                s[k] = ops->shadow(cs[k], o, d, d2, 30);
+            odd += s[0] != s[1];
+            shadows += s[0] == 1;
+            /* the span of the primitive hit, alone, from the ray's origin */
+            {
+                double t[2][2];
+                int fc[2][2];
+                for (k = 0; k < 2; k++)
+                    s[k] = ops->prim_span(cs[k], h[0].prim, o, d, t[k], fc[k]);
+                if (s[0] != s[1] || (s[0] && (fc[0][0] != fc[1][0] || fc[0][1] != fc[1][1]
+                                              || fabs(t[0][0] - t[1][0]) > inst_tol[m] * (1 + fabs(t[0][0]) / 10)
+                                              || fabs(t[0][1] - t[1][1]) > inst_tol[m] * (1 + fabs(t[0][1]) / 10))))
+                    odd++;
+            }
+        }
+        fprintf(stderr, "test_inst: %-5s %d rays, %d hits, %d spawned rays hit, %d shadowed, %d answered otherwise\n",
+                ops->name, rays, hits, spawned, shadows, odd);
+        assert_true(hits > rays / 2 && spawned > hits / 4 && shadows > 0);
+        assert_true(odd <= rays / 200);
+        for (k = 0; k < 2; k++)
+            ops->free(cs[k]);
+    }
+    for (k = 0; k < 2; k++)
+        scene_free(sc[k]);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_inst_translated_copy),
+        cmocka_unit_test(test_inst_refused),
+        cmocka_unit_test(test_inst_translation_tolerance),
+        cmocka_unit_test(test_inst_traced_alike),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
