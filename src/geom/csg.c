@@ -982,14 +982,15 @@ __attribute__((noinline))
 static int csg_object_inst(csg_query *q, int k, int tested, csg_hit *h)
 {
     const csg_inst *in = &q->c->inst[k];
-    csg_query qi = *q;
-    prim_ray r = *q->r;
+    const prim_ray *r0 = q->r;
+    prim_ray r = *r0;
     int hit;
     r.o = vec3_add(r.o, in->shift);
     vec3_to_d(r.o, r.b.o);
     r.excl_prim = r.excl_prim >= in->first && r.excl_prim - in->first < in->count ? r.excl_prim - in->dprim : -1;
-    qi.r = &r;
-    hit = csg_object_hit(&qi, k, tested, h);
+    q->r = &r;
+    hit = csg_object_hit(q, k, tested, h);
+    q->r = r0;
     if (hit)
         h->prim += in->dprim;
     return hit;

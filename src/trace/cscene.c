@@ -22,18 +22,6 @@ void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world)
         world[i] = cs->nm.scale * deck[i] + cs->nm.off[i];
 }
 
-void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out)
-{
-    const csg_inst *in;
-    const prim *p = cscene_prim_of(cs, pi, &in);
-    if (!in) {
-        NS(prim_surface)(p, face, pt, need_uv, out);
-        return;
-    }
-    NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
-    vec3_to_d(pt, out->p);        /* the point itself, not its master's */
-}
-
 /* Normalisation: the bounded primitives are mapped into the cube
  * [-GEOM_W, GEOM_W]^3 by one uniform scale and a translation
  * (docs/numerics.md); the eye may lie anywhere, primary rays start near the
@@ -415,15 +403,20 @@ static prim_lin *cscene_lin_room(cscene *cs, size_t k)
  * farther than 2^-10 normalised units from every other object; each
  * shift rounded to num once, so that the ray and the object's box move
  * by the same vector. Their primitives are then not compiled; *nprims
- * says how many they are. */
+ * says how many they are. Fewer than CSCENE_INST_MIN instances are not
+ * taken: the load they would save is less than what moving the rays
+ * costs the render (docs/performance.md, run AO). */
+#define CSCENE_INST_MIN 1024
 static int cscene_instances(const scene *sc, cscene *cs, size_t *nprims, diag *err)
 {
     scene_inst *si = NULL;
     size_t i;
     int n = scene_inst_find(sc, PRIM_SAME_TOL / cs->nm.scale, (1.0 / 1024) / cs->nm.scale, &si), j;
     *nprims = 0;
-    if (n <= 0)
+    if (n < CSCENE_INST_MIN) {
+        mem_free(si);
         return n < 0 ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
+    }
     cs->root_inst = mem_calloc(sc->nroots, sizeof *cs->root_inst);
     cs->prim_root = mem_alloc(sc->nprims * sizeof *cs->prim_root);
     if (!cs->root_inst || !cs->prim_root) {

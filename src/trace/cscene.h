@@ -112,7 +112,18 @@ static inline const prim *cscene_prim_of(const cscene *cs, int pi, const csg_ins
 }
 
 /* prim_surface of primitive pi (any, an instance's included) at pt. */
-void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out);
+static inline void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 pt, int need_uv,
+                                      geom_surface *out)
+{
+    const csg_inst *in;
+    const prim *p = cscene_prim_of(cs, pi, &in);
+    if (!in) {
+        NS(prim_surface)(p, face, pt, need_uv, out);
+        return;
+    }
+    NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
+    vec3_to_d(pt, out->p);        /* the point itself, not its master's */
+}
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:
  * DIAG_INPUT with the location of the offending definition, DIAG_IO when
