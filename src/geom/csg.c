@@ -429,6 +429,8 @@ int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg 
     for (k = 0; k < nb + nu; k++) {
         memset(hull[k], -1, sizeof hull[k]);
         csg_hull(x.nodes, obj[k], hull[k]);
+        if (out->inst && out->inst[k].count)
+            obj[k] = ~obj[k];     /* an instance's: its master's root */
     }
     out->nodes = x.nodes;
     out->nnodes = x.n;
@@ -946,16 +948,15 @@ static int csg_object_tree(csg_query *q, int k, int ni, int tested, csg_hit *h)
     return hit;
 }
 
-/* The first crossing below q->tmax of object k (objects[k], a CSG
+/* The first crossing below q->tmax of object k (rooted at node ni, a CSG
  * subtree), whose box the ray meets, into *h: 1, or 0 when there is none.
  * An object of one primitive first tests its bounding sphere, which gives
  * the primitive test its start. tested: the object's box passed over
  * [0, q->tmax] as it is now. Forced inline: left to itself GCC keeps it
  * out of line in q16, a call per object tested (+2 % of the sphere
  * scene's instructions). */
-VEC_HOT int csg_object_hit(csg_query *q, int k, int tested, csg_hit *h)
+VEC_HOT int csg_object_hit(csg_query *q, int k, int ni, int tested, csg_hit *h)
 {
-    int ni = q->c->objects[k];
     const csg_node *nd = &q->c->nodes[ni];
     num tc = NUM_ZERO;
     if (nd->op == CSG_LEAF) {     /* one primitive: one span, no arena */
@@ -979,7 +980,7 @@ VEC_HOT int csg_object_hit(csg_query *q, int k, int tested, csg_hit *h)
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-static int csg_object_inst(csg_query *q, int k, int tested, csg_hit *h)
+static int csg_object_inst(csg_query *q, int k, int ni, int tested, csg_hit *h)
 {
     const csg_inst *in = &q->c->inst[k];
     const prim_ray *r0 = q->r;
@@ -989,7 +990,7 @@ static int csg_object_inst(csg_query *q, int k, int tested, csg_hit *h)
     vec3_to_d(r.o, r.b.o);
     r.excl_prim = r.excl_prim >= in->first && r.excl_prim - in->first < in->count ? r.excl_prim - in->dprim : -1;
     q->r = &r;
-    hit = csg_object_hit(q, k, tested, h);
+    hit = csg_object_hit(q, k, ni, tested, h);
     q->r = r0;
     if (hit)
         h->prim += in->dprim;
@@ -1002,8 +1003,8 @@ static int csg_object_inst(csg_query *q, int k, int tested, csg_hit *h)
 VEC_HOT void csg_object(csg_query *q, int k, int tested, csg_hit *best, int *found)
 {
     csg_hit h;
-    int hit = q->c->inst && q->c->inst[k].count ? csg_object_inst(q, k, tested, &h)
-                                                : csg_object_hit(q, k, tested, &h);
+    int ni = q->c->objects[k];
+    int hit = ni >= 0 ? csg_object_hit(q, k, ni, tested, &h) : csg_object_inst(q, k, ~ni, tested, &h);
     if (hit && (!*found || h.t < best->t
                 || (h.t == best->t && (h.entering > best->entering
                                        || (h.entering == best->entering && h.prim < best->prim))))) {

@@ -78,7 +78,9 @@ typedef struct csg {
     void *nodes_mem;
     int nnodes;
     int *objects;            /* each object's compiled root: the bounded ones
-                                (the hierarchy's items) first */
+                                (the hierarchy's items) first; an
+                                instance's as ~root, its master's (inst[k]
+                                moves the ray), so one load tells them */
     int (*hull)[CSG_HULL];   /* per object (as objects[]): up to CSG_HULL
                                 primitives that contain the whole object
                                 (reached from its root through intersections

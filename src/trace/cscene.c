@@ -22,6 +22,14 @@ void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world)
         world[i] = cs->nm.scale * deck[i] + cs->nm.off[i];
 }
 
+void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out)
+{
+    const csg_inst *in;
+    const prim *p = cscene_prim_of(cs, pi, &in);
+    NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
+    vec3_to_d(pt, out->p);        /* the point itself, not its master's */
+}
+
 /* Normalisation: the bounded primitives are mapped into the cube
  * [-GEOM_W, GEOM_W]^3 by one uniform scale and a translation
  * (docs/numerics.md); the eye may lie anywhere, primary rays start near the

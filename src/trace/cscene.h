@@ -106,23 +106,25 @@ static inline const cscene_face *cscene_face_at(const cscene *cs, int pi, int fa
  * shift; *in NULL otherwise). */
 static inline const prim *cscene_prim_of(const cscene *cs, int pi, const csg_inst **in)
 {
-    int r = cs->prim_root ? cs->prim_root[pi] : -1;
-    *in = r >= 0 ? &cs->root_inst[r] : NULL;
-    return r >= 0 ? &cs->prims[pi - cs->root_inst[r].dprim] : &cs->prims[pi];
+    int r;
+    if (!cs->prim_root || (r = cs->prim_root[pi]) < 0) {
+        *in = NULL;
+        return &cs->prims[pi];
+    }
+    *in = &cs->root_inst[r];
+    return &cs->prims[pi - (*in)->dprim];
 }
 
-/* prim_surface of primitive pi (any, an instance's included) at pt. */
+/* prim_surface of primitive pi (any, an instance's included) at pt: an
+ * instance's out of line, so that a scene without them pays one test. */
+void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out);
 static inline void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 pt, int need_uv,
                                       geom_surface *out)
 {
-    const csg_inst *in;
-    const prim *p = cscene_prim_of(cs, pi, &in);
-    if (!in) {
-        NS(prim_surface)(p, face, pt, need_uv, out);
-        return;
-    }
-    NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
-    vec3_to_d(pt, out->p);        /* the point itself, not its master's */
+    if (cs->prim_root && cs->prim_root[pi] >= 0)
+        NS(cscene_surface_inst)(cs, pi, face, pt, need_uv, out);
+    else
+        NS(prim_surface)(&cs->prims[pi], face, pt, need_uv, out);
 }
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:
