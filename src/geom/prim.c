@@ -471,14 +471,16 @@ static size_t prim_share_bytes(size_t np, size_t m, size_t n)
  * intersects through the earliest matching one's data (its own frame
  * still gives (u,v)). Candidates come from a sweep over the sorted keys,
  * so n solids cost O(n log n) plus the pairs whose keys lie within the
- * window, not n^2 / 2 comparisons. Works in ar (prim_share_bytes). */
+ * window, not n^2 / 2 comparisons; of a run of equal keys (copies piled
+ * at one place) only the earlier solids up to the first match.
+ * Works in ar (prim_share_bytes). */
 static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
 {
     prim_skey *sk = arena_alloc(ar, m * sizeof *sk), *by;
     long *match = arena_alloc(ar, n * sizeof *match);
     void *rb = arena_alloc(ar, radix_bytes(m));
     uint64_t *sort = arena_alloc(ar, m * sizeof *sort);
-    size_t i, p, q, *ord;
+    size_t i, p, q, r0, r1, *ord;
     m = 0;
     for (i = 0; i < n; i++) {
         const prim *a = &prims[i];
@@ -507,13 +509,27 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
     for (p = 0; p < m; p++)             /* by key, ties in index order */
         by[p] = sk[ord[p]];
     sk = by;
-    for (p = 0; p < m; p++) {
+    for (p = 0, r0 = r1 = 0; p < m; p++) {
         size_t bi = sk[p].i;
-        for (q = p; q-- > 0 && sk[p].key - sk[q].key <= 2 * sk[p].win;)
+        if (p == r1) {            /* the run of keys equal to p's: [r0, r1) */
+            r0 = p;
+            for (r1 = p + 1; r1 < m && sk[r1].key == sk[p].key; r1++)
+                ;
+        }
+        /* in the run the indices ascend: the first match is its earliest
+         * (copies piled at one place cost one comparison each, not one
+         * per earlier copy) */
+        for (q = r0; q < p; q++)
+            if (prim_skey_alike(&sk[q], &sk[p]) && prim_same_solid(&prims[sk[q].i], &prims[bi])) {
+                match[bi] = (long)sk[q].i;
+                break;
+            }
+        /* the window's other keys, whatever their indices */
+        for (q = r0; q-- > 0 && sk[p].key - sk[q].key <= 2 * sk[p].win;)
             if (sk[q].i < bi && (match[bi] < 0 || sk[q].i < (size_t)match[bi])
                 && prim_skey_alike(&sk[q], &sk[p]) && prim_same_solid(&prims[sk[q].i], &prims[bi]))
                 match[bi] = (long)sk[q].i;
-        for (q = p + 1; q < m && sk[q].key - sk[p].key <= 2 * sk[p].win; q++)
+        for (q = r1; q < m && sk[q].key - sk[p].key <= 2 * sk[p].win; q++)
             if (sk[q].i < bi && (match[bi] < 0 || sk[q].i < (size_t)match[bi])
                 && prim_skey_alike(&sk[q], &sk[p]) && prim_same_solid(&prims[sk[q].i], &prims[bi]))
                 match[bi] = (long)sk[q].i;
