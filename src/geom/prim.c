@@ -1,6 +1,7 @@
 /* prim — compile, intersect and evaluate the five primitives (see prim.h,
  * docs/primitives.md for the face mappings, docs/numerics.md for ranges). */
 #include "geom/prim.h"
+#include "model/scene_box.h"
 #include "util/dmath.h"
 #include "util/arena.h"
 #include "util/mem.h"
@@ -203,15 +204,10 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     switch (sp->kind) {
     case PRIM_SPHERE:
         if (!(d[0] > 0)) return prim_fail(err, file, sp, "sphere radius must be positive");
-        c[0] = c[1] = c[2] = d[0];
-        lo[0] = lo[1] = lo[2] = -1;
         break;
     case PRIM_CYLINDER:
         if (!(d[0] > 0) || !(d[1] > 0))
             return prim_fail(err, file, sp, "cylinder radius and height must be positive");
-        c[0] = c[1] = d[0];
-        c[2] = d[1];
-        lo[0] = lo[1] = -1;
         cc[2] = 0.5;
         cp = prim_cap_planes;
         ncp = 2;
@@ -219,9 +215,6 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     case PRIM_BLOCK:
         if (!(d[0] > 0) || !(d[1] > 0) || !(d[2] > 0))
             return prim_fail(err, file, sp, "block sizes must be positive");
-        c[0] = d[0];
-        c[1] = d[1];
-        c[2] = d[2];
         cc[0] = cc[1] = cc[2] = 0.5;
         cp = prim_block_planes;
         ncp = 6;
@@ -230,9 +223,6 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
         double rm = d[0] > d[1] ? d[0] : d[1];
         if (!(d[0] >= 0) || !(d[1] >= 0) || !(rm > 0) || !(d[2] > 0))
             return prim_fail(err, file, sp, "cone radii must be >= 0 (one > 0) and height > 0");
-        c[0] = c[1] = rm;
-        c[2] = d[2];
-        lo[0] = lo[1] = -1;
         cc[2] = 0.5;
         p.cone_a = num_from_d(d[0] / rm);
         p.cone_k = num_from_d(d[1] / rm - d[0] / rm);
@@ -248,6 +238,8 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     default:
         return prim_fail(err, file, sp, "unknown primitive kind");
     }
+    if (p.bounded)                /* the canonical box: model/scene_box.h */
+        (void)scene_prim_canon_box(sp, c, lo);
     p.nplanes = ncp;
     if (twin) {
         prim_compile_twin(&p, twin);

@@ -1,6 +1,19 @@
 /* scene_box — the deck-space box of a scene primitive (see scene_box.h). */
 #include "model/scene_box.h"
 
+int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3])
+{
+    const double *d = sp->dim;
+    switch (sp->kind) {
+    case PRIM_SPHERE:   c[0] = c[1] = c[2] = d[0]; lo[0] = lo[1] = lo[2] = -1; return 0;
+    case PRIM_CYLINDER: c[0] = c[1] = d[0]; c[2] = d[1]; lo[0] = lo[1] = -1; lo[2] = 0; return 0;
+    case PRIM_CONE:     c[0] = c[1] = d[0] > d[1] ? d[0] : d[1]; c[2] = d[2];
+                        lo[0] = lo[1] = -1; lo[2] = 0; return 0;
+    case PRIM_BLOCK:    c[0] = d[0]; c[1] = d[1]; c[2] = d[2]; lo[0] = lo[1] = lo[2] = 0; return 0;
+    default:            return -1;
+    }
+}
+
 /* Coordinate i of the deck-space corner k (bit j: the high end on axis j)
  * of the canonical box l..h scaled by c, under m. */
 static double scene_box_corner(const double *m, int i, int k, const double *c, const double *l,
@@ -22,18 +35,11 @@ static double scene_box_corner(const double *m, int i, int k, const double *c, c
  * formed in order. */
 void scene_prim_grow_box(const scene_prim *sp, double *lo, double *hi)
 {
-    double c[3], l[3], h[3];
+    double c[3], l[3], h[3] = {1, 1, 1};
     int k, i;
-    const double *m = sp->world_from_object, *d = sp->dim;
-    switch (sp->kind) {
-    case PRIM_SPHERE:   c[0] = c[1] = c[2] = d[0]; l[0] = l[1] = l[2] = -1; break;
-    case PRIM_CYLINDER: c[0] = c[1] = d[0]; c[2] = d[1]; l[0] = l[1] = -1; l[2] = 0; break;
-    case PRIM_CONE:     c[0] = c[1] = d[0] > d[1] ? d[0] : d[1]; c[2] = d[2];
-                        l[0] = l[1] = -1; l[2] = 0; break;
-    case PRIM_BLOCK:    c[0] = d[0]; c[1] = d[1]; c[2] = d[2]; l[0] = l[1] = l[2] = 0; break;
-    default: return;
-    }
-    h[0] = h[1] = h[2] = 1;
+    const double *m = sp->world_from_object;
+    if (scene_prim_canon_box(sp, c, l))
+        return;
     for (i = 0; i < 3; i++) {
         double wl = 0, wh = 0;
         int j;

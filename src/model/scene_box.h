@@ -1,11 +1,20 @@
 /* scene_box — the box in deck units that holds a bounded scene primitive:
  * its canonical bounding box under world_from_object, each coordinate the
- * least and greatest of the eight corners as formed in double. Read by the
+ * least and greatest of the eight corners as formed in double; and the
+ * canonical box it is the image of. Read by the
  * normalisation (cscene) and by the search for translated copies
  * (scene_inst). */
 #ifndef MODEL_SCENE_BOX_H
 #define MODEL_SCENE_BOX_H
 #include "model/scene.h"
+
+/* The canonical bounding box of primitive sp, scaled per axis: from
+ * lo[k] c[k] to c[k] on axis k (the sphere's [-r, r]^3, the cylinder's
+ * and the cone's [-R, R]^2 x [0, h], R the cone's larger radius, the
+ * block's [0, a] x [0, b] x [0, c]). 0, or -1 for a half-space or an
+ * unknown kind (c and lo then untouched). The one table of these boxes:
+ * the primitive compile, the deck-space box below and its test read it. */
+int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3]);
 
 /* Grows lo/hi to hold primitive sp (bounded kinds only; a half-space
  * leaves them as they are). */

@@ -14,6 +14,7 @@
 #include <string.h>
 #include "geom/prim.h"
 #include "model/prim_twin.h"
+#include "model/scene_box.h"
 #include "trace/cscene.h"
 #include "util/dmath.h"
 #include "tracer_test.h"
@@ -28,16 +29,10 @@ static void cscene_test_norm(const scene *sc, geom_norm *nm)
     int i, j, k;
     for (n = 0; n < sc->nprims; n++) {
         const scene_prim *sp = &sc->prims[n];
-        const double *m = sp->world_from_object, *d = sp->dim;
+        const double *m = sp->world_from_object;
         double c[3], l[3], h[3] = {1, 1, 1};
-        switch (sp->kind) {
-        case PRIM_SPHERE:   c[0] = c[1] = c[2] = d[0]; l[0] = l[1] = l[2] = -1; break;
-        case PRIM_CYLINDER: c[0] = c[1] = d[0]; c[2] = d[1]; l[0] = l[1] = -1; l[2] = 0; break;
-        case PRIM_CONE:     c[0] = c[1] = d[0] > d[1] ? d[0] : d[1]; c[2] = d[2];
-                            l[0] = l[1] = -1; l[2] = 0; break;
-        case PRIM_BLOCK:    c[0] = d[0]; c[1] = d[1]; c[2] = d[2]; l[0] = l[1] = l[2] = 0; break;
-        default: continue;
-        }
+        if (scene_prim_canon_box(sp, c, l))
+            continue;
         for (k = 0; k < 8; k++) {
             double p[3], w;
             for (i = 0; i < 3; i++)
