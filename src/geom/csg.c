@@ -385,8 +385,8 @@ int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg 
         if (in) {                 /* the master's tree, moved */
             r = croot[in->master];
             for (k = 0; k < 3; k++) {
-                lo[nb][k] = x.nodes[r].lo[k] - in->shift_d[k];
-                hi[nb][k] = x.nodes[r].hi[k] - in->shift_d[k];
+                lo[nb][k] = in->turned ? in->lo[k] : x.nodes[r].lo[k] - in->shift_d[k];
+                hi[nb][k] = in->turned ? in->hi[k] : x.nodes[r].hi[k] - in->shift_d[k];
             }
             memmove(obj + nb + 1, obj + nb, (size_t)nu * sizeof *obj);
             memmove(src + nb + 1, src + nb, (size_t)nu * sizeof *src);
@@ -972,6 +972,60 @@ VEC_HOT int csg_object_hit(csg_query *q, int k, int ni, int tested, csg_hit *h)
     return csg_object_tree(q, k, ni, tested, h);
 }
 
+/* csg_object_hit of a turned instance (q->c->inst[k], model/scene_inst.h):
+ * the ray carried into its master's frame, from a start t0 on it: where
+ * it enters the object's box (0 from a surface of the object, which the
+ * exclusion needs at the origin). The start q (o + t0 d) + shift and the
+ * direction q d are each rounded to num once; parameters past t0 are
+ * kept (a rigid motion keeps lengths), so the hit's is t0 plus the
+ * master's. Starting at the box keeps the rounding of the direction,
+ * multiplied by the parameter, within the object's size: the ray found
+ * is off the exact one by at most (1 + L) sqrt(3) / 2 units in num's last
+ * place, L the box's diagonal (docs/numerics.md, "Instances"). */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static int csg_object_turned(csg_query *q, int k, int ni, csg_hit *h)
+{
+    const csg_inst *in = &q->c->inst[k];
+    const prim_ray *r0 = q->r;
+    prim_ray r;
+    num tmax = q->tmax, t0 = NUM_ZERO;
+    double tmax_d = q->tmax_d, d[3], p[3], o2[3], d2[3], tin, t0d;
+    int hit, i, own = r0->excl_prim >= in->first && r0->excl_prim - in->first < in->count;
+    if (!own) {
+        if (bbox_miss(in->lo, in->hi, &r0->b, 0, tmax_d, &tin))
+            return 0;
+        t0 = num_from_d(tin);
+        t0 = t0 < NUM_ZERO ? NUM_ZERO : t0 < tmax ? t0 : tmax;
+    }
+    t0d = num_to_d(t0);
+    vec3_to_d(r0->d, d);
+    for (i = 0; i < 3; i++)
+        p[i] = r0->b.o[i] + t0d * d[i];
+    dmath_m3_mul_v(in->q, p, o2);
+    dmath_m3_mul_v(in->q, d, d2);
+    for (i = 0; i < 3; i++)
+        o2[i] += in->shift_d[i];
+    r.o = vec3_from_d(o2);
+    r.d = vec3_from_d(d2);
+    vec3_to_d(r.o, o2);
+    vec3_to_d(r.d, d2);
+    prim_ray_set_d(&r, r.o, r.d, o2, d2, own ? r0->excl_prim - in->dprim : -1, r0->excl_enter);
+    q->r = &r;
+    q->tmax = num_sub(tmax, t0);
+    q->tmax_d = num_to_d(q->tmax);
+    hit = csg_object_hit(q, k, ni, 0, h);
+    q->r = r0;
+    q->tmax = tmax;
+    q->tmax_d = tmax_d;
+    if (!hit)
+        return 0;
+    h->t = num_add(h->t, t0);
+    h->prim += in->dprim;
+    return !(tmax < h->t);        /* rounding in a floating mode */
+}
+
 /* csg_object_hit of an instance (q->c->inst[k]): the ray moved by its
  * shift, which keeps every parameter, meets its master's tree; the
  * primitive it leaves, if the instance's, named as the master's, and the
@@ -986,6 +1040,8 @@ static int csg_object_inst(csg_query *q, int k, int ni, int tested, csg_hit *h)
     const prim_ray *r0 = q->r;
     prim_ray r = *r0;
     int hit;
+    if (in->turned)
+        return csg_object_turned(q, k, ni, h);
     r.o = vec3_add(r.o, in->shift);
     vec3_to_d(r.o, r.b.o);
     r.excl_prim = r.excl_prim >= in->first && r.excl_prim - in->first < in->count ? r.excl_prim - in->dprim : -1;

@@ -1,5 +1,6 @@
 /* scene_box — the deck-space box of a scene primitive (see scene_box.h). */
 #include "model/scene_box.h"
+#include <math.h>
 
 int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3])
 {
@@ -57,5 +58,30 @@ void scene_prim_grow_box(const scene_prim *sp, double *lo, double *hi)
         }
         if (wl < lo[i]) lo[i] = wl;
         if (wh > hi[i]) hi[i] = wh;
+    }
+}
+
+void scene_prim_grow_tight_box(const scene_prim *sp, double *lo, double *hi)
+{
+    const double *m = sp->world_from_object, *d = sp->dim, k = 1 + 0x1p-40;
+    double r0, r1, h;
+    int i;
+    switch (sp->kind) {
+    case PRIM_SPHERE:   r0 = r1 = d[0]; h = 0; break;
+    case PRIM_CYLINDER: r0 = r1 = d[0]; h = d[1]; break;
+    case PRIM_CONE:     r0 = d[0]; r1 = d[1]; h = d[2]; break;
+    default:            scene_prim_grow_box(sp, lo, hi); return;
+    }
+    for (i = 0; i < 3; i++) {
+        const double *a = m + 4 * i;
+        /* the disc (or the sphere's ball) about each centre */
+        double w = sp->kind == PRIM_SPHERE ? sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
+                                           : sqrt(a[0] * a[0] + a[1] * a[1]);
+        double c0 = a[3], c1 = a[3] + a[2] * h;
+        double l = fmin(c0 - k * r0 * w, c1 - k * r1 * w), u = fmax(c0 + k * r0 * w, c1 + k * r1 * w);
+        l -= (fabs(c0) + fabs(c1)) * 0x1p-40;
+        u += (fabs(c0) + fabs(c1)) * 0x1p-40;
+        if (l < lo[i]) lo[i] = l;
+        if (u > hi[i]) hi[i] = u;
     }
 }

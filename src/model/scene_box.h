@@ -2,7 +2,7 @@
  * its canonical bounding box under world_from_object, each coordinate the
  * least and greatest of the eight corners as formed in double; and the
  * canonical box it is the image of. Read by the
- * normalisation (cscene) and by the search for translated copies
+ * normalisation (cscene) and by the search for copies
  * (scene_inst). */
 #ifndef MODEL_SCENE_BOX_H
 #define MODEL_SCENE_BOX_H
@@ -19,4 +19,12 @@ int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3]);
 /* Grows lo/hi to hold primitive sp (bounded kinds only; a half-space
  * leaves them as they are). */
 void scene_prim_grow_box(const scene_prim *sp, double *lo, double *hi);
+
+/* The same, tighter for a turned curved solid: a sphere's box is its
+ * centre plus and minus its radius times each row's length of the linear
+ * part, a cylinder's and a cone's that of their two cap discs (a
+ * turned sphere's box of corners reaches up to sqrt(3) times as far);
+ * enlarged by 2^-40 of itself against rounding. For the search for
+ * copies (scene_inst), which needs boxes apart. */
+void scene_prim_grow_tight_box(const scene_prim *sp, double *lo, double *hi);
 #endif

@@ -1,5 +1,5 @@
-/* scene_inst — objects that are translated copies of an earlier object
- * (see scene_inst.h). */
+/* scene_inst — objects that are copies of an earlier object moved by one
+ * rigid motion (see scene_inst.h). */
 #include "model/scene_inst.h"
 #include "model/prim_twin.h"
 #include "model/scene_box.h"
@@ -21,8 +21,9 @@ typedef struct si_obj {
     int half;            /* it holds a half-space */
     int master;          /* the object it copies, or -1 */
     int meets;           /* its box comes within gap of another's */
+    int turned;          /* rot is not the identity */
     uint64_t hash;
-    double c[3];         /* its translation less its master's */
+    double rot[9], c[3]; /* the motion from its master: p -> rot p + c */
     double lo[3], hi[3]; /* its box; lo[0] > hi[0]: none */
 } si_obj;
 
@@ -92,31 +93,78 @@ static int si_walk(si_ctx *x, int i)
     o->nseq = (int)(x->nsteps - o->seq);
     o->first = lo;
     o->count = 0;
-    /* the hash: the operators, the leaves' places and kinds, and the
-     * first leaf's kind, dimensions and linear part (objects alike in
-     * those but not in the rest cost SI_TRIES comparisons at most) */
+    /* the hash: the operators, the leaves' places, kinds and dimensions,
+     * which a rigid motion keeps (objects alike in those but not in the
+     * rest cost SI_TRIES comparisons at most) */
     for (k = o->seq; k < x->nsteps; k++)
         if (x->steps[k].op == CSG_LEAF) {
             const scene_prim *sp = &sc->prims[x->steps[k].off];
+            uint64_t w[3];
+            memcpy(w, sp->dim, sizeof w);
             x->steps[k].off -= lo;
-            h = si_mix(si_mix(h, (uint64_t)x->steps[k].off), o->count++ ? (uint64_t)sp->kind : prim_twin_hash(sp));
+            h = si_mix(si_mix(h, (uint64_t)x->steps[k].off), (uint64_t)sp->kind);
+            if (!o->count++)
+                h = si_mix(si_mix(si_mix(h, w[0]), w[1]), w[2]);
         }
     o->usable &= !o->half && o->count > 0 && hi - lo + 1 == o->count;
     o->hash = h;
     return 0;
 }
 
-static const double *si_org(const scene *sc, int p, double t[3])
+/* The rotation r (row-major) that carries primitive a's linear part onto
+ * b's (r = B A^-1, A and B the linear parts of their world_from_object):
+ * 0, or -1 when there is none within SCENE_INST_ORTHO (a singular A, a
+ * scale, a shear, a reflection). */
+static int si_rotation(const scene_prim *a, const scene_prim *b, double r[9])
 {
-    const double *m = sc->prims[p].world_from_object;
-    t[0] = m[3];
-    t[1] = m[7];
-    t[2] = m[11];
-    return t;
+    const double *ma = a->world_from_object, *mb = b->world_from_object;
+    double la[9] = {ma[0], ma[1], ma[2], ma[4], ma[5], ma[6], ma[8], ma[9], ma[10]}, inv[9], det;
+    int i, j, k;
+    if (dmath_m3_inverse(la, inv))
+        return -1;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            r[3 * i + j] = mb[4 * i] * inv[j] + mb[4 * i + 1] * inv[3 + j] + mb[4 * i + 2] * inv[6 + j];
+    for (i = 0; i < 3; i++)       /* r^T r = I */
+        for (j = 0; j < 3; j++) {
+            double g = 0;
+            for (k = 0; k < 3; k++)
+                g += r[3 * k + i] * r[3 * k + j];
+            if (!(fabs(g - (i == j)) <= SCENE_INST_ORTHO))
+                return -1;
+        }
+    det = r[0] * (r[4] * r[8] - r[5] * r[7]) - r[1] * (r[3] * r[8] - r[5] * r[6]) + r[2] * (r[3] * r[7] - r[4] * r[6]);
+    return det > 0 ? 0 : -1;
 }
 
-/* 1 when object i copies object m (scene_inst.h), with i's translation
- * less m's in i->c. */
+/* 1 when primitive a moved by rot and c lands on primitive b within tol:
+ * on every row of world_from_object the difference of the translation
+ * plus those of the linear part, each times the reach x of the solid
+ * along its axis (its canonical box's), at most tol; so no point of the
+ * solid moves farther than tol on any axis. */
+static int si_lands(const scene_prim *a, const scene_prim *b, const double rot[9], const double c[3], double tol)
+{
+    const double *ma = a->world_from_object, *mb = b->world_from_object;
+    double x[3], l[3];
+    int i, j;
+    if (scene_prim_canon_box(a, x, l))
+        return 0;
+    for (i = 0; i < 3; i++) {
+        const double *ri = rot + 3 * i;
+        double e = fabs(ri[0] * ma[3] + ri[1] * ma[7] + ri[2] * ma[11] + c[i] - mb[4 * i + 3]);
+        for (j = 0; j < 3; j++)
+            e += fabs(ri[0] * ma[j] + ri[1] * ma[4 + j] + ri[2] * ma[8 + j] - mb[4 * i + j]) * x[j];
+        if (!(e <= tol))
+            return 0;
+    }
+    return 1;
+}
+
+/* 1 when object i copies object m (scene_inst.h), with the motion from m
+ * to i in i->rot, i->c and i->turned. The first primitives decide the
+ * motion: twins, the identity and the difference of their translations;
+ * otherwise the rotation between their linear parts, and the translation
+ * that then carries the one's origin onto the other's. */
 static int si_same(const si_ctx *x, const si_obj *m, si_obj *i, double tol)
 {
     const scene *sc = x->sc;
@@ -125,23 +173,30 @@ static int si_same(const si_ctx *x, const si_obj *m, si_obj *i, double tol)
     if (m->nseq != i->nseq || m->count != i->count || memcmp(a, b, (size_t)m->nseq * sizeof *a))
         return 0;
     for (k = 0; k < m->nseq; k++) {
-        double tm[3], ti[3];
+        const scene_prim *pm, *pi;
         if (a[k].op != CSG_LEAF)
             continue;
-        if (!prim_twin_same(&sc->prims[m->first + a[k].off], &sc->prims[i->first + a[k].off]))
+        pm = &sc->prims[m->first + a[k].off];
+        pi = &sc->prims[i->first + a[k].off];
+        if (pm->kind != pi->kind || memcmp(pm->dim, pi->dim, sizeof pm->dim))
             return 0;
-        si_org(sc, m->first + a[k].off, tm);
-        si_org(sc, i->first + a[k].off, ti);
-        for (j = 0; j < 3; j++) {
-            double d = ti[j] - tm[j];
-            if (!leaf)
-                i->c[j] = d;
-            else if (!(fabs(d - i->c[j]) <= tol))
+        if (!leaf++) {
+            const double *mm = pm->world_from_object, *mi = pi->world_from_object;
+            i->turned = !prim_twin_same(pm, pi);
+            if (i->turned && si_rotation(pm, pi, i->rot))
+                return 0;
+            if (!i->turned)
+                for (j = 0; j < 9; j++)
+                    i->rot[j] = j % 4 == 0;
+            for (j = 0; j < 3; j++)
+                i->c[j] = mi[4 * j + 3] - (i->rot[3 * j] * mm[3] + i->rot[3 * j + 1] * mm[7] + i->rot[3 * j + 2] * mm[11]);
+            if (!(isfinite(i->c[0]) && isfinite(i->c[1]) && isfinite(i->c[2])))
                 return 0;
         }
-        leaf = 1;
+        if ((!i->turned && !prim_twin_same(pm, pi)) || !si_lands(pm, pi, i->rot, i->c, tol))
+            return 0;
     }
-    return isfinite(i->c[0]) && isfinite(i->c[1]) && isfinite(i->c[2]);
+    return leaf;
 }
 
 /* Object o's box, as the CSG compiler bounds its tree: a leaf by its
@@ -164,7 +219,7 @@ static void si_box(const si_ctx *x, si_obj *o, double (*stk)[6])
         }
         for (k = 0; k < o->nseq; k++)
             if (s[k].op == CSG_LEAF)
-                scene_prim_grow_box(&x->sc->prims[o->first + s[k].off], o->lo, o->hi);
+                scene_prim_grow_tight_box(&x->sc->prims[o->first + s[k].off], o->lo, o->hi);
         return;                   /* none: lo[0] > hi[0] */
     }
     for (k = o->nseq; k-- > 0;) {
@@ -175,7 +230,7 @@ static void si_box(const si_ctx *x, si_obj *o, double (*stk)[6])
                 b[j] = HUGE_VAL;
                 b[3 + j] = -HUGE_VAL;
             }
-            scene_prim_grow_box(&x->sc->prims[o->first + s[k].off], b, b + 3);
+            scene_prim_grow_tight_box(&x->sc->prims[o->first + s[k].off], b, b + 3);
             continue;
         }
         b = stk[top - 1];         /* the left operand's, then the result */
@@ -356,10 +411,60 @@ done:
     return status;
 }
 
+/* Planar faces of object o whose planes are within SI_FACE_SIN (the sine
+ * of the angle between them) of being parallel to the plane n p = d
+ * (|n| = len) and whose primitives' boxes come within gap of it: 1 when
+ * there is one (a face that could lie in the plane, where the two
+ * surfaces' order along a ray would rest on rounding over a whole area),
+ * else 0. A face crossing the plane at a wider angle meets it along a
+ * line, where a copy's rounding moves the crossing by a hairline. */
+#define SI_FACE_SIN (1.0 / 16)
+static int si_faces_near(const si_ctx *x, const si_obj *o, const double n[3], double d, double len, double gap)
+{
+    const si_step *s = x->steps + o->seq;
+    int k, a, j;
+    for (k = 0; k < o->nseq; k++) {
+        const scene_prim *sp;
+        const double *m;
+        double lin[9], inv[9], lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+        double blo = 0, bhi = 0;
+        int near = 0;
+        if (s[k].op != CSG_LEAF)
+            continue;
+        sp = &x->sc->prims[o->first + s[k].off];
+        if (sp->kind == PRIM_SPHERE)
+            continue;             /* no planar face */
+        m = sp->world_from_object;
+        for (j = 0; j < 9; j++)
+            lin[j] = m[4 * (j / 3) + j % 3];
+        if (dmath_m3_inverse(lin, inv))
+            return 1;
+        /* a face's normal on axis a: row a of the inverse (the block has
+         * faces on every axis, the caps on z alone) */
+        for (a = sp->kind == PRIM_BLOCK ? 0 : 2; a < 3 && !near; a++) {
+            const double *f = inv + 3 * a;
+            double cr[3], fl = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+            dmath_cross3(f, n, cr);
+            near = !(sqrt(dmath_norm2_3(cr)) >= SI_FACE_SIN * fl * len);
+        }
+        if (!near)
+            continue;
+        scene_prim_grow_tight_box(sp, lo, hi);
+        for (j = 0; j < 3; j++) {
+            blo += n[j] * (n[j] >= 0 ? lo[j] : hi[j]);
+            bhi += n[j] * (n[j] >= 0 ? hi[j] : lo[j]);
+        }
+        if (!(blo > d + gap * len || bhi < d - gap * len))
+            return 1;
+    }
+    return 0;
+}
+
 /* Marks the candidates whose boxes come within gap of the plane of a
- * half-space: its points p with (ainv p)_z = (ainv t)_z, ainv the inverse
- * of its linear part, t its translation. 0, or 1 when a half-space's
- * linear part is singular (the compiler refuses it). */
+ * half-space (its points p with (ainv p)_z = (ainv t)_z, ainv the inverse
+ * of its linear part, t its translation) and that have a face which could
+ * lie in that plane (si_faces_near). 0, or 1 when a half-space's linear
+ * part is singular (the compiler refuses it). */
 static int si_planes(si_ctx *x, size_t n, double gap)
 {
     const scene *sc = x->sc;
@@ -385,7 +490,7 @@ static int si_planes(si_ctx *x, size_t n, double gap)
                 lo += nn[k] * (nn[k] >= 0 ? o->lo[k] : o->hi[k]);
                 hi += nn[k] * (nn[k] >= 0 ? o->hi[k] : o->lo[k]);
             }
-            if (!(lo > d + gap * len || hi < d - gap * len))
+            if (!(lo > d + gap * len || hi < d - gap * len) && si_faces_near(x, o, nn, d, len, gap))
                 o->meets = 1;
         }
     }
@@ -455,6 +560,10 @@ int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out)
         int k;
         if (o->master < 0)
             continue;
+        if (o->turned) {          /* turned: its own */
+            si_box(&x, o, box);
+            continue;
+        }
         for (k = 0; k < 3; k++) {
             o->lo[k] = x.o[o->master].lo[k] + o->c[k];
             o->hi[k] = x.o[o->master].hi[k] + o->c[k];
@@ -481,7 +590,11 @@ int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out)
         e->first = o->first;
         e->count = o->count;
         e->dprim = o->first - x.o[o->master].first;
+        e->turned = o->turned;
+        memcpy(e->rot, o->rot, sizeof e->rot);
         memcpy(e->shift, o->c, sizeof e->shift);
+        memcpy(e->lo, o->lo, sizeof e->lo);
+        memcpy(e->hi, o->hi, sizeof e->hi);
     }
     status = (int)found;
     goto done;

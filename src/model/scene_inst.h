@@ -1,10 +1,11 @@
-/* scene_inst — objects that are translated copies of an earlier object
- * (instances): the same tree of operators over primitives that are twins
- * (prim_twin) one for one, all moved by one translation, and clear of
- * every other object. A ray moved by the opposite translation meets the
- * earlier object's compiled primitives where it would meet the copy's, so
- * the scene compiler compiles and shares only the first of each set
- * (cscene; docs/numerics.md, "Instances"). Mode-independent, deck units. */
+/* scene_inst — objects that are copies of an earlier object moved by one
+ * rigid motion (instances): the same tree of operators over primitives of
+ * the same kinds and dimensions, each placed as its counterpart is and
+ * then turned by one rotation and moved by one translation, and clear of
+ * every other object. A ray carried back by that motion meets the earlier
+ * object's compiled primitives where it would meet the copy's, so the
+ * scene compiler compiles and shares only the first of each set (cscene;
+ * docs/numerics.md, "Instances"). Mode-independent, deck units. */
 #ifndef MODEL_SCENE_INST_H
 #define MODEL_SCENE_INST_H
 #include "model/scene.h"
@@ -17,7 +18,12 @@ typedef struct scene_inst {
     int dprim;           /* first minus the master's first: the copy's
                             primitive i stands where the master's i - dprim
                             does */
-    double shift[3];     /* the copy's placement minus the master's */
+    int turned;          /* 0: rot is the identity (the primitives are
+                            twins, prim_twin, of the master's) */
+    double rot[9];       /* row-major rotation and translation: a point p */
+    double shift[3];     /* of the master stands at rot p + shift in the
+                            copy */
+    double lo[3], hi[3]; /* the copy's box (as the CSG compiler bounds it) */
 } scene_inst;
 
 /* Finds the instances among sc's objects (its roots), one entry per root
@@ -25,13 +31,20 @@ typedef struct scene_inst {
  * (itself none) when:
  *  - their trees are alike, operator for operator; i's primitives are
  *    first .. first + n - 1, bounded, and in no other object; those at
- *    the same place in the two trees are twins and m's lie i's at the same
- *    index less dprim; and their translations (world_from_object's last
- *    column) differ by one vector within tol on every axis;
+ *    the same place in the two trees have the same kind and dimensions,
+ *    and m's lie at i's index less dprim;
+ *  - one rotation R (orthonormal within SCENE_INST_ORTHO, determinant
+ *    positive) and one translation c carry each of m's primitives onto
+ *    i's counterpart to within tol: world_from_object's rows, linear part
+ *    and translation, differ by at most tol summed over a row (no point
+ *    of the canonical solids, all inside [-1, 1]^3, moves farther than
+ *    tol on any axis). Where their first primitives are twins
+ *    (prim_twin), R is the identity exactly and every pair must be twins;
  *  - i's box (of its primitives' scene_prim_grow_box) keeps farther than
  *    gap from every other object's (of their bounded primitives) and from
  *    the plane of every half-space.
  * The number of instances (0: *out NULL, none found or none sought), or -1
  * when memory runs out. */
+#define SCENE_INST_ORTHO (1.0 / 1073741824.0)
 int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out);
 #endif

@@ -26,8 +26,23 @@ void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int ne
 {
     const csg_inst *in;
     const prim *p = cscene_prim_of(cs, pi, &in);
-    NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
-    vec3_to_d(pt, out->p);        /* the point itself, not its master's */
+    double w[3], m[3];
+    int i;
+    if (!in->turned) {
+        NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
+        vec3_to_d(pt, out->p);    /* the point itself, not its master's */
+        return;
+    }
+    /* turned: the point carried into the master's frame (rounded to num
+     * once), the master's normal and tangents carried back */
+    vec3_to_d(pt, w);
+    for (i = 0; i < 3; i++)
+        m[i] = dmath_dot3(in->q + 3 * i, w) + in->shift_d[i];
+    NS(prim_surface)(p, face, vec3_from_d(m), need_uv, out);
+    memcpy(out->p, w, sizeof w);
+    NS(cscene_inst_back)(in, out->n);
+    NS(cscene_inst_back)(in, out->dpdu);
+    NS(cscene_inst_back)(in, out->dpdv);
 }
 
 /* Normalisation: the bounded primitives are mapped into the cube
@@ -406,20 +421,51 @@ static prim_lin *cscene_lin_room(cscene *cs, size_t k)
     return &cs->lin_blk[k / CSCENE_LIN_BLOCK][k % CSCENE_LIN_BLOCK];
 }
 
-/* The objects traced as translated copies of an earlier one
+/* The objects traced as translated or turned copies of an earlier one
  * (model/scene_inst.h): found in deck units to within PRIM_SAME_TOL, kept
- * farther than 2^-10 normalised units from every other object; each
- * shift rounded to num once, so that the ray and the object's box move
- * by the same vector. Their primitives are then not compiled; *nprims
+ * farther than 2^-10 normalised units (CSCENE_INST_GAP) from every other
+ * object; a translated copy's shift rounded to num once, so that the ray
+ * and the object's box move by the same vector; a turned copy's frame
+ * change by cscene_turned. Their primitives are then not compiled; *nprims
  * says how many they are. Fewer than CSCENE_INST_MIN instances are not
  * taken: the load they would save is less than what moving the rays
  * costs the render (docs/performance.md, run AO). */
 #define CSCENE_INST_MIN 1024
+#define CSCENE_INST_GAP (1.0 / 1024)
+
+/* The frame change of a turned instance e into *in: in the normalised
+ * world (scale s, offset f) a point p of the object stands at
+ * q p + shift in its master, q = rot^-1 and shift = f - q (f + s c).
+ * Its box is its own, padded by twice CSG_BOX_PAD: once as every box is,
+ * once for the carried ray's offset (csg_object_turned), which is kept
+ * under a quarter of the gap between objects: an object whose box
+ * diagonal would allow more is not taken (1). */
+static int cscene_turned(const cscene *cs, const scene_inst *e, csg_inst *in)
+{
+    const double s = cs->nm.scale, *f = cs->nm.off;
+    double a[3], diag = 0, unit = NUM_IS_FIXED ? num_to_d(NUM_ULP) : 2 * GEOM_W * num_to_d(NUM_ULP);
+    int j;
+    if (dmath_m3_inverse(e->rot, in->q))
+        return 1;
+    for (j = 0; j < 3; j++) {
+        in->lo[j] = s * e->lo[j] + f[j] - 2 * CSG_BOX_PAD;
+        in->hi[j] = s * e->hi[j] + f[j] + 2 * CSG_BOX_PAD;
+        diag += s * (e->hi[j] - e->lo[j]) * s * (e->hi[j] - e->lo[j]);
+        a[j] = f[j] + s * e->shift[j];
+    }
+    if (!((1 + sqrt(diag)) * sqrt(3.0) / 2 * unit <= CSCENE_INST_GAP / 4))
+        return 1;
+    for (j = 0; j < 3; j++)
+        in->shift_d[j] = f[j] - dmath_dot3(in->q + 3 * j, a);
+    in->shift = vec3_from_d(in->shift_d);
+    return 0;
+}
+
 static int cscene_instances(const scene *sc, cscene *cs, size_t *nprims, diag *err)
 {
     scene_inst *si = NULL;
     size_t i;
-    int n = scene_inst_find(sc, PRIM_SAME_TOL / cs->nm.scale, (1.0 / 1024) / cs->nm.scale, &si), j;
+    int n = scene_inst_find(sc, PRIM_SAME_TOL / cs->nm.scale, CSCENE_INST_GAP / cs->nm.scale, &si), j;
     *nprims = 0;
     if (n < CSCENE_INST_MIN) {
         mem_free(si);
@@ -438,10 +484,17 @@ static int cscene_instances(const scene *sc, cscene *cs, size_t *nprims, diag *e
         double d[3];
         if (si[i].master < 0)
             continue;
-        for (j = 0; j < 3; j++)
-            d[j] = -si[i].shift[j] * cs->nm.scale;
-        in->shift = vec3_from_d(d);
-        vec3_to_d(in->shift, in->shift_d);
+        if ((in->turned = si[i].turned)) {
+            if (cscene_turned(cs, &si[i], in)) {
+                in->turned = 0;   /* too large for the mode: its own */
+                continue;
+            }
+        } else {
+            for (j = 0; j < 3; j++)
+                d[j] = -si[i].shift[j] * cs->nm.scale;
+            in->shift = vec3_from_d(d);
+            vec3_to_d(in->shift, in->shift_d);
+        }
         in->master = si[i].master;
         in->first = si[i].first;
         in->count = si[i].count;

@@ -5,9 +5,11 @@
  * per numeric mode. */
 #ifndef TRACE_CSCENE_H
 #define TRACE_CSCENE_H
+#include "util/dmath.h"
 #include "util/lightbuf.h"
 #include "geom/csg.h"
 #include "pds/pds.h"
+#include <string.h>
 
 #define CSCENE_MAX_DEPTH 32   /* recursion limit applied to scene max_depth */
 #define CSCENE_MAX_PLANES 64  /* half-spaces a primary ray is advanced over */
@@ -103,7 +105,8 @@ static inline const cscene_face *cscene_face_at(const cscene *cs, int pi, int fa
 
 /* The compiled primitive that stands for primitive pi: its own, or for a
  * primitive of an instance its master's (at the point moved by *in's
- * shift; *in NULL otherwise). */
+ * shift, or carried by its q and shift where it is turned:
+ * cscene_surface_inst; *in NULL otherwise). */
 static inline const prim *cscene_prim_of(const cscene *cs, int pi, const csg_inst **in)
 {
     int r;
@@ -113,6 +116,16 @@ static inline const prim *cscene_prim_of(const cscene *cs, int pi, const csg_ins
     }
     *in = &cs->root_inst[r];
     return &cs->prims[pi - (*in)->dprim];
+}
+
+/* A direction v of a turned instance's master (csg_inst.q) carried back
+ * into the instance: q^T v (q is a rotation, its inverse its transpose
+ * to within SCENE_INST_ORTHO), in place. */
+static inline void NS(cscene_inst_back)(const csg_inst *in, double v[3])
+{
+    double w[3];
+    dmath_m3_tmul_v(in->q, v, w);
+    memcpy(v, w, sizeof w);
 }
 
 /* prim_surface of primitive pi (any, an instance's included) at pt: an

@@ -67,8 +67,19 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
     if (pi < 0 || (size_t)pi >= cs->nprims || probe_ray(cs, o, d, &r))
         return 0;
     pr = cscene_prim_of(cs, pi, &in);
-    if (in)                       /* an instance's: its master's, moved */
+    if (in && in->turned) {       /* a turned instance's: its master's */
+        double od[3], dd[3], o2[3], d2[3];
+        int i;
+        vec3_to_d(r.o, od);
+        vec3_to_d(r.d, dd);
+        dmath_m3_mul_v(in->q, od, o2);
+        dmath_m3_mul_v(in->q, dd, d2);
+        for (i = 0; i < 3; i++)
+            o2[i] += in->shift_d[i];
+        prim_ray_set(&r, vec3_from_d(o2), vec3_from_d(d2), -1, 0);
+    } else if (in) {              /* an instance's: its master's, moved */
         prim_ray_set(&r, vec3_add(r.o, in->shift), r.d, -1, 0);
+    }
     if (!NS(prim_intersect)(pr, &r, num_neg(num_from_i(GEOM_TBIG)), num_from_i(GEOM_TMAX), &s))
         return 0;
     t[0] = num_to_d(s.a.t) / cs->nm.scale;

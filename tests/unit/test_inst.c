@@ -1,8 +1,8 @@
 /* test_inst — instances: which objects scene_inst_find takes for
- * translated copies of an earlier one (model/scene_inst.h), and that a
- * scene traced through them answers as the same scene traced object by
- * object, in every mode: nearest hits, rays spawned from their surfaces,
- * shadow rays and single primitives' spans. */
+ * translated or turned copies of an earlier one (model/scene_inst.h), and
+ * that a scene traced through them answers as the same scene traced
+ * object by object, in every mode: nearest hits, rays spawned from their
+ * surfaces, shadow rays and single primitives' spans. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -66,16 +66,58 @@ static void test_inst_translated_copy(void **state)
     scene_free(sc);
 }
 
+/* A turned copy: the rotation and translation that carry the first part
+ * onto it; a copy through the floor at an angle is one too. */
+static void test_inst_turned_copy(void **state)
+{
+    static const double rz90[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+    scene *sc;
+    scene_inst *si;
+    int k;
+    (void)state;
+    assert_int_equal(inst_find("OBJECT PART\nOBJECT PART ROTATE Z 90 TRANSLATE 5 0 0\n", &si, &sc), 1);
+    assert_int_equal(si[1].master, 0);
+    assert_int_equal(si[1].turned, 1);
+    for (k = 0; k < 9; k++)
+        assert_true(fabs(si[1].rot[k] - rz90[k]) < 1e-12);
+    assert_true(fabs(si[1].shift[0] - 5) < 1e-12 && fabs(si[1].shift[1]) < 1e-12 && fabs(si[1].shift[2]) < 1e-12);
+    /* its box: the block's turned, met with the ball's (not the ball's
+     * box of corners, sqrt(3) times wider) */
+    assert_true(fabs(si[1].lo[0] - 4) < 1e-9 && fabs(si[1].hi[0] - 6) < 1e-9);
+    mem_free(si);
+    /* a primitive's linear part off by 5e-10 (the bore reaches 3 along
+     * its axis: 1.5e-9, beyond tol), then by 2e-10 (6e-10, within) */
+    sc->prims[7].world_from_object[2] += 5e-10;
+    assert_int_equal(scene_inst_find(sc, 1e-9, 1e-3, &si), 0);
+    sc->prims[7].world_from_object[2] -= 3e-10;
+    assert_int_equal(scene_inst_find(sc, 1e-9, 1e-3, &si), 1);
+    mem_free(si);
+    scene_free(sc);
+    /* through the floor's plane, no face near parallel to it */
+    assert_int_equal(inst_find("OBJECT PART\nOBJECT PART ROTATE X 30 ROTATE Y 20 TRANSLATE 5 0 -0.5\n"
+                               "OBJECT GROUND\n", &si, &sc), 1);
+    assert_int_equal(si[1].turned, 1);
+    mem_free(si);
+    scene_free(sc);
+    /* turned by a hair: no twins, a rotation all the same */
+    assert_int_equal(inst_find("OBJECT PART\nOBJECT PART ROTATE Z 1e-14 TRANSLATE 5 0 0\n", &si, &sc), 1);
+    assert_int_equal(si[1].turned, 1);
+    mem_free(si);
+    scene_free(sc);
+}
+
 static void test_inst_refused(void **state)
 {
     static const char *const none[] = {
         /* boxes 0.0005 apart, within the gap of 0.001 */
         "OBJECT PART\nOBJECT PART TRANSLATE 2.0005 0 0\n",
-        /* turned, scaled: no twins */
-        "OBJECT PART\nOBJECT PART ROTATE Z 90 TRANSLATE 5 0 0\n",
+        /* scaled, mirrored: no rotation */
         "OBJECT PART\nOBJECT PART SCALE 2 TRANSLATE 6 0 0\n",
-        /* the floor's plane through the copy */
+        "OBJECT PART\nOBJECT PART SCALE 1 1 -1 TRANSLATE 6 0 0\n",
+        /* the floor's plane through the copy, in the plane of faces of
+         * its block, as placed or turned about the plane's normal */
         "OBJECT PART\nOBJECT PART TRANSLATE 5 0 -0.5\nOBJECT GROUND\n",
+        "OBJECT PART\nOBJECT PART ROTATE Z 45 TRANSLATE 5 0 -0.5\nOBJECT GROUND\n",
         /* a sphere carved out of the floor's half-space around the copy:
          * that object's box, by its operators, would be empty */
         "DIFF CAVE GROUND BALL TRANSLATE 5 0 0\n"
@@ -137,40 +179,52 @@ static int inst_alike(const probe_hit *a, const probe_hit *b, const double *d, d
            && fabs(a->t - b->t) <= 5 * base * (1 + fabs(a->t) / 10) / c;
 }
 
-/* The grid of INST_SIDE x INST_SIDE parts over the floor, 3.3 apart:
- * plain (each part an instance of the first but the first, enough for
- * the compiler to take them: CSCENE_INST_MIN), or each turned about z by
- * a different angle of k 1e-14 degrees (k = 1 .. 1089), so that no two
- * are twins and each is traced as its own: the same solids within 4e-13
- * deck units. */
+/* The grid of INST_SIDE x INST_SIDE parts over the floor, 3.3 apart,
+ * as placed (turned 0) or each turned about x, y and z by its own angles
+ * (turned 1; through the floor, where they reach it). In the reference
+ * (ref 1) each part but the first has its bores slid along their axes by
+ * a length of its own (k 1e-6, k = 1 .. 1088), so that none is an
+ * instance and each is traced as its own: the bores' ends lie outside the
+ * part (0.15 away), so the solids are the same. Otherwise every part but
+ * the first is an instance, enough for the compiler to take them
+ * (CSCENE_INST_MIN). */
 #define INST_SIDE 33
-static scene *inst_grid(int turned)
+static scene *inst_grid(int turned, int ref)
 {
-    size_t cap = sizeof INST_HEAD + 64 * INST_SIDE * INST_SIDE + 64, n;
+    size_t cap = sizeof INST_HEAD + 96 * INST_SIDE * INST_SIDE + 64, n, p;
     char *deck = malloc(cap);
     scene *sc;
-    int i, j;
+    int i, j, k;
     assert_non_null(deck);
     n = (size_t)snprintf(deck, cap, "%s", INST_HEAD);
     for (i = 0; i < INST_SIDE; i++)
-        for (j = 0; j < INST_SIDE; j++)
-            n += (size_t)snprintf(deck + n, cap - n, "OBJECT PART ROTATE Z %de-14 TRANSLATE %.2f %.2f 0\n",
-                                  turned ? 1 + INST_SIDE * i + j : 0, 3.3 * (i - INST_SIDE / 2),
-                                  3.3 * (j - INST_SIDE / 2));
+        for (j = 0; j < INST_SIDE; j++) {
+            k = INST_SIDE * i + j;
+            n += (size_t)snprintf(deck + n, cap - n, "OBJECT PART ROTATE X %d ROTATE Y %d ROTATE Z %d -\n"
+                                  "  TRANSLATE %.2f %.2f 0\n", turned ? 37 * k % 360 : 0,
+                                  turned ? 71 * k % 360 : 0, turned ? 113 * k % 360 : 0,
+                                  3.3 * (i - INST_SIDE / 2), 3.3 * (j - INST_SIDE / 2));
+        }
     snprintf(deck + n, cap - n, "OBJECT GROUND\n");
     sc = tt_parse(deck);
     free(deck);
+    assert_non_null(sc);
+    for (p = 5; ref && p < 5 * INST_SIDE * INST_SIDE; p++) {
+        double *m = sc->prims[p].world_from_object, dz = 1e-6 * (double)(p / 5);
+        if (sc->prims[p].kind != PRIM_CYLINDER)
+            continue;
+        for (i = 0; i < 3; i++)
+            m[4 * i + 3] += dz * m[4 * i + 2];
+    }
     return sc;
 }
 
-static void test_inst_traced_alike(void **state)
+static void inst_traced_alike(int turned, uint64_t seed)
 {
-    uint64_t seed = test_seed("test_inst_traced_alike");
     scene *sc[2];
     int m, k;
-    (void)state;
     for (k = 0; k < 2; k++)
-        assert_non_null(sc[k] = inst_grid(k));
+        sc[k] = inst_grid(turned, k);
     for (m = 0; m < TT_MODES; m++) {
         const probe_ops *ops = tt_mode(m);
         void *cs[2];
@@ -183,7 +237,10 @@ static void test_inst_traced_alike(void **state)
                 diag_print(stderr, &err);
             assert_int_equal(err.status, 0);
         }
-        assert_int_equal(ops->instances(cs[0]), INST_SIDE * INST_SIDE - 1);
+        if (turned)               /* some turned into the floor's plane */
+            assert_true(ops->instances(cs[0]) >= 1024);
+        else
+            assert_int_equal(ops->instances(cs[0]), INST_SIDE * INST_SIDE - 1);
         assert_int_equal(ops->instances(cs[1]), 0);
         for (r = 0; r < rays; r++) {
             double o[3], a[3], d[3], d2[3], len = 0, len2 = 0;
@@ -247,8 +304,9 @@ static void test_inst_traced_alike(void **state)
                     odd++;
             }
         }
-        fprintf(stderr, "test_inst: %-5s %d rays, %d hits, %d spawned rays hit, %d shadowed, %d answered otherwise\n",
-                ops->name, rays, hits, spawned, shadows, odd);
+        fprintf(stderr, "test_inst: %s %-5s %d instances, %d rays, %d hits, %d spawned rays hit, %d shadowed, "
+                "%d answered otherwise\n", turned ? "turned" : "placed", ops->name, ops->instances(cs[0]), rays, hits,
+                spawned, shadows, odd);
         assert_true(hits > rays / 2 && spawned > hits / 4 && shadows > 0);
         assert_true(odd <= rays / 200);
         for (k = 0; k < 2; k++)
@@ -258,13 +316,27 @@ static void test_inst_traced_alike(void **state)
         scene_free(sc[k]);
 }
 
+static void test_inst_traced_alike(void **state)
+{
+    (void)state;
+    inst_traced_alike(0, test_seed("test_inst_traced_alike"));
+}
+
+static void test_inst_turned_traced_alike(void **state)
+{
+    (void)state;
+    inst_traced_alike(1, test_seed("test_inst_turned_traced_alike"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_inst_translated_copy),
+        cmocka_unit_test(test_inst_turned_copy),
         cmocka_unit_test(test_inst_refused),
         cmocka_unit_test(test_inst_translation_tolerance),
         cmocka_unit_test(test_inst_traced_alike),
+        cmocka_unit_test(test_inst_turned_traced_alike),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
