@@ -22,6 +22,9 @@ typedef struct si_obj {
     int master;          /* the object it copies, or -1 */
     int meets;           /* its box comes within gap of another's */
     int turned;          /* rot is not the identity */
+    int inv_state;       /* as a master: 0 inv not formed, 1 formed, -1
+                            its first primitive's linear part singular */
+    double inv[9];       /* as a master: that linear part's inverse */
     uint64_t hash;
     double rot[9], c[3]; /* the motion from its master: p -> rot p + c */
     double lo[3], hi[3]; /* its box; lo[0] > hi[0]: none */
@@ -111,16 +114,21 @@ static int si_walk(si_ctx *x, int i)
     return 0;
 }
 
-/* The rotation r (row-major) that carries primitive a's linear part onto
- * b's (r = B A^-1, A and B the linear parts of their world_from_object):
- * 0, or -1 when there is none within SCENE_INST_ORTHO (a singular A, a
- * scale, a shear, a reflection). */
-static int si_rotation(const scene_prim *a, const scene_prim *b, double r[9])
+/* The rotation r (row-major) that carries primitive a, the first of
+ * master m, onto b (r = B A^-1, A and B the linear parts of their
+ * world_from_object; A^-1 formed once per master): 0, or -1 when there is
+ * none within SCENE_INST_ORTHO (a singular A, a scale, a shear, a
+ * reflection). */
+static int si_rotation(si_obj *m, const scene_prim *a, const scene_prim *b, double r[9])
 {
-    const double *ma = a->world_from_object, *mb = b->world_from_object;
-    double la[9] = {ma[0], ma[1], ma[2], ma[4], ma[5], ma[6], ma[8], ma[9], ma[10]}, inv[9], det;
+    const double *ma = a->world_from_object, *mb = b->world_from_object, *inv = m->inv;
+    double det;
     int i, j, k;
-    if (dmath_m3_inverse(la, inv))
+    if (!m->inv_state) {
+        double la[9] = {ma[0], ma[1], ma[2], ma[4], ma[5], ma[6], ma[8], ma[9], ma[10]};
+        m->inv_state = dmath_m3_inverse(la, m->inv) ? -1 : 1;
+    }
+    if (m->inv_state < 0)
         return -1;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++)
@@ -165,7 +173,7 @@ static int si_lands(const scene_prim *a, const scene_prim *b, const double rot[9
  * motion: twins, the identity and the difference of their translations;
  * otherwise the rotation between their linear parts, and the translation
  * that then carries the one's origin onto the other's. */
-static int si_same(const si_ctx *x, const si_obj *m, si_obj *i, double tol)
+static int si_same(const si_ctx *x, si_obj *m, si_obj *i, double tol)
 {
     const scene *sc = x->sc;
     const si_step *a = x->steps + m->seq, *b = x->steps + i->seq;
@@ -183,7 +191,7 @@ static int si_same(const si_ctx *x, const si_obj *m, si_obj *i, double tol)
         if (!leaf++) {
             const double *mm = pm->world_from_object, *mi = pi->world_from_object;
             i->turned = !prim_twin_same(pm, pi);
-            if (i->turned && si_rotation(pm, pi, i->rot))
+            if (i->turned && si_rotation(m, pm, pi, i->rot))
                 return 0;
             if (!i->turned)
                 for (j = 0; j < 9; j++)
@@ -426,7 +434,7 @@ static int si_faces_near(const si_ctx *x, const si_obj *o, const double n[3], do
     for (k = 0; k < o->nseq; k++) {
         const scene_prim *sp;
         const double *m;
-        double lin[9], inv[9], lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+        double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
         double blo = 0, bhi = 0;
         int near = 0;
         if (s[k].op != CSG_LEAF)
@@ -435,17 +443,18 @@ static int si_faces_near(const si_ctx *x, const si_obj *o, const double n[3], do
         if (sp->kind == PRIM_SPHERE)
             continue;             /* no planar face */
         m = sp->world_from_object;
-        for (j = 0; j < 9; j++)
-            lin[j] = m[4 * (j / 3) + j % 3];
-        if (dmath_m3_inverse(lin, inv))
-            return 1;
-        /* a face's normal on axis a: row a of the inverse (the block has
-         * faces on every axis, the caps on z alone) */
+        /* a face's normal on axis a lies along the cross product of the
+         * linear part's other two columns (the block has faces on every
+         * axis, the caps on z alone) */
         for (a = sp->kind == PRIM_BLOCK ? 0 : 2; a < 3 && !near; a++) {
-            const double *f = inv + 3 * a;
-            double cr[3], fl = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+            double u[3], v[3], f[3], cr[3];
+            for (j = 0; j < 3; j++) {
+                u[j] = m[4 * j + (a + 1) % 3];
+                v[j] = m[4 * j + (a + 2) % 3];
+            }
+            dmath_cross3(u, v, f);
             dmath_cross3(f, n, cr);
-            near = !(sqrt(dmath_norm2_3(cr)) >= SI_FACE_SIN * fl * len);
+            near = !(sqrt(dmath_norm2_3(cr)) >= SI_FACE_SIN * sqrt(dmath_norm2_3(f)) * len);
         }
         if (!near)
             continue;
