@@ -385,8 +385,8 @@ int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg 
         if (in) {                 /* the master's tree, moved */
             r = croot[in->master];
             for (k = 0; k < 3; k++) {
-                lo[nb][k] = in->turned ? in->lo[k] : x.nodes[r].lo[k] - in->shift_d[k];
-                hi[nb][k] = in->turned ? in->hi[k] : x.nodes[r].hi[k] - in->shift_d[k];
+                lo[nb][k] = in->turn ? in->turn->lo[k] : x.nodes[r].lo[k] - in->shift_d[k];
+                hi[nb][k] = in->turn ? in->turn->hi[k] : x.nodes[r].hi[k] - in->shift_d[k];
             }
             memmove(obj + nb + 1, obj + nb, (size_t)nu * sizeof *obj);
             memmove(src + nb + 1, src + nb, (size_t)nu * sizeof *src);
@@ -994,7 +994,7 @@ static int csg_object_turned(csg_query *q, int k, int ni, csg_hit *h)
     double tmax_d = q->tmax_d, d[3], p[3], o2[3], d2[3], tin, t0d;
     int hit, i, own = r0->excl_prim >= in->first && r0->excl_prim - in->first < in->count;
     if (!own) {
-        if (bbox_miss(in->lo, in->hi, &r0->b, 0, tmax_d, &tin))
+        if (bbox_miss(in->turn->lo, in->turn->hi, &r0->b, 0, tmax_d, &tin))
             return 0;
         t0 = num_from_d(tin);
         t0 = t0 < NUM_ZERO ? NUM_ZERO : t0 < tmax ? t0 : tmax;
@@ -1003,8 +1003,8 @@ static int csg_object_turned(csg_query *q, int k, int ni, csg_hit *h)
     vec3_to_d(r0->d, d);
     for (i = 0; i < 3; i++)
         p[i] = r0->b.o[i] + t0d * d[i];
-    dmath_m3_mul_v(in->q, p, o2);
-    dmath_m3_mul_v(in->q, d, d2);
+    dmath_m3_mul_v(in->turn->q, p, o2);
+    dmath_m3_mul_v(in->turn->q, d, d2);
     for (i = 0; i < 3; i++)
         o2[i] += in->shift_d[i];
     r.o = vec3_from_d(o2);
@@ -1040,7 +1040,7 @@ static int csg_object_inst(csg_query *q, int k, int ni, int tested, csg_hit *h)
     const prim_ray *r0 = q->r;
     prim_ray r = *r0;
     int hit;
-    if (in->turned)
+    if (in->turn)
         return csg_object_turned(q, k, ni, h);
     r.o = vec3_add(r.o, in->shift);
     vec3_to_d(r.o, r.b.o);

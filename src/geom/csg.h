@@ -59,22 +59,27 @@ typedef struct csg_node {
  * qualifies; a deeper one keeps them in the query's arena. */
 #define CSG_TODO_LOCAL 64
 
+/* The frame change of a turned instance: a point p of the object
+ * stands at q p + shift_d (csg_inst) in its master. */
+typedef struct csg_turn {
+    double q[9];             /* row-major rotation */
+    double lo[3], hi[3];     /* the object's own box, padded */
+} csg_turn;
+
 /* An object traced through an earlier object's compiled tree (an
- * instance, model/scene_inst.h): the ray carried by q (when turned) and
- * moved by shift meets that tree's primitives where it would meet the
- * object's own, and primitive i of the object (first <= i < first +
- * count) stands where that tree's i - dprim does. count 0: the object's
- * own tree. */
+ * instance, model/scene_inst.h): the ray carried by turn->q (where
+ * turned) and moved by shift meets that tree's primitives where it would
+ * meet the object's own, and primitive i of the object (first <= i <
+ * first + count) stands where that tree's i - dprim does. count 0: the
+ * object's own tree. */
 typedef struct csg_inst {
     vec3 shift;              /* in num; |shift| < 2 sqrt(3) GEOM_W */
     double shift_d[3];       /* the same in binary64 */
     int master;              /* while building: the root index copied */
     int first, count, dprim;
-    int turned;              /* 0: q is the identity, the ray only moves */
-    double q[9];             /* row-major rotation, the object's frame to
-                                its master's: a point p of the object
-                                stands at q p + shift_d in the master */
-    double lo[3], hi[3];     /* turned: the object's own box, padded */
+    const csg_turn *turn;    /* NULL: translated, the ray only moves; else
+                                kept by the caller of csg_build as long as
+                                the tree */
 } csg_inst;
 
 typedef struct csg {

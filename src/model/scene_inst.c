@@ -21,12 +21,13 @@ typedef struct si_obj {
     int half;            /* it holds a half-space */
     int master;          /* the object it copies, or -1 */
     int meets;           /* its box comes within gap of another's */
-    int turned;          /* rot is not the identity */
-    int inv_state;       /* as a master: 0 inv not formed, 1 formed, -1
-                            its first primitive's linear part singular */
-    double inv[9];       /* as a master: that linear part's inverse */
+    int turned;          /* turned: the motion from its master is
+                            p -> rot[i] p + c (si_ctx); else p -> p + c */
+    int inv_state;       /* as a master: 0 inv[i] not formed, 1 formed,
+                            -1 its first primitive's linear part
+                            singular */
     uint64_t hash;
-    double rot[9], c[3]; /* the motion from its master: p -> rot p + c */
+    double c[3];
     double lo[3], hi[3]; /* its box; lo[0] > hi[0]: none */
 } si_obj;
 
@@ -39,6 +40,10 @@ typedef struct si_ctx {
                             -2 more than one */
     int *stk;
     size_t scap;
+    double (*rot)[9];    /* per object, formed once one is turned: its
+                            rotation from its master */
+    double (*inv)[9];    /* per object as a master, likewise: its first
+                            primitive's linear part's inverse */
 } si_ctx;
 
 /* Earlier objects of an object's hash it is compared with at most: past
@@ -119,14 +124,14 @@ static int si_walk(si_ctx *x, int i)
  * world_from_object; A^-1 formed once per master): 0, or -1 when there is
  * none within SCENE_INST_ORTHO (a singular A, a scale, a shear, a
  * reflection). */
-static int si_rotation(si_obj *m, const scene_prim *a, const scene_prim *b, double r[9])
+static int si_rotation(si_obj *m, double minv[9], const scene_prim *a, const scene_prim *b, double r[9])
 {
-    const double *ma = a->world_from_object, *mb = b->world_from_object, *inv = m->inv;
+    const double *ma = a->world_from_object, *mb = b->world_from_object, *inv = minv;
     double det;
     int i, j, k;
     if (!m->inv_state) {
         double la[9] = {ma[0], ma[1], ma[2], ma[4], ma[5], ma[6], ma[8], ma[9], ma[10]};
-        m->inv_state = dmath_m3_inverse(la, m->inv) ? -1 : 1;
+        m->inv_state = dmath_m3_inverse(la, minv) ? -1 : 1;
     }
     if (m->inv_state < 0)
         return -1;
@@ -168,15 +173,30 @@ static int si_lands(const scene_prim *a, const scene_prim *b, const double rot[9
     return 1;
 }
 
-/* 1 when object i copies object m (scene_inst.h), with the motion from m
- * to i in i->rot, i->c and i->turned. The first primitives decide the
- * motion: twins, the identity and the difference of their translations;
- * otherwise the rotation between their linear parts, and the translation
- * that then carries the one's origin onto the other's. */
-static int si_same(const si_ctx *x, si_obj *m, si_obj *i, double tol)
+/* 1 when twins a and b lie apart by c within tol on every axis: si_lands
+ * with the identity, whose linear parts twins have alike. */
+static int si_moved(const scene_prim *a, const scene_prim *b, const double c[3], double tol)
 {
+    int j;
+    for (j = 0; j < 3; j++)
+        if (!(fabs(b->world_from_object[4 * j + 3] - a->world_from_object[4 * j + 3] - c[j]) <= tol))
+            return 0;
+    return 1;
+}
+
+/* 1 when object i copies object m (scene_inst.h), with the motion from m
+ * to i in i->c, i->turned and x->rot[i]; -1 when memory runs out. The
+ * first primitives decide the motion: twins, the identity and the
+ * difference of their translations; otherwise the rotation between their
+ * linear parts, and the translation that then carries the one's origin
+ * onto the other's. */
+static int si_same(si_ctx *x, si_obj *m, si_obj *i, double tol)
+{
+    static const double id[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     const scene *sc = x->sc;
     const si_step *a = x->steps + m->seq, *b = x->steps + i->seq;
+    const double *rot = id;
+    size_t n = sc->nroots;
     int k, j, leaf = 0;
     if (m->nseq != i->nseq || m->count != i->count || memcmp(a, b, (size_t)m->nseq * sizeof *a))
         return 0;
@@ -190,18 +210,19 @@ static int si_same(const si_ctx *x, si_obj *m, si_obj *i, double tol)
             return 0;
         if (!leaf++) {
             const double *mm = pm->world_from_object, *mi = pi->world_from_object;
-            i->turned = !prim_twin_same(pm, pi);
-            if (i->turned && si_rotation(m, pm, pi, i->rot))
-                return 0;
-            if (!i->turned)
-                for (j = 0; j < 9; j++)
-                    i->rot[j] = j % 4 == 0;
+            if ((i->turned = !prim_twin_same(pm, pi))) {
+                if (!x->rot && (!(x->rot = mem_alloc(n * sizeof *x->rot)) || !(x->inv = mem_alloc(n * sizeof *x->inv))))
+                    return -1;
+                rot = x->rot[i - x->o];
+                if (si_rotation(m, x->inv[m - x->o], pm, pi, x->rot[i - x->o]))
+                    return 0;
+            }
             for (j = 0; j < 3; j++)
-                i->c[j] = mi[4 * j + 3] - (i->rot[3 * j] * mm[3] + i->rot[3 * j + 1] * mm[7] + i->rot[3 * j + 2] * mm[11]);
+                i->c[j] = mi[4 * j + 3] - (rot[3 * j] * mm[3] + rot[3 * j + 1] * mm[7] + rot[3 * j + 2] * mm[11]);
             if (!(isfinite(i->c[0]) && isfinite(i->c[1]) && isfinite(i->c[2])))
                 return 0;
         }
-        if ((!i->turned && !prim_twin_same(pm, pi)) || !si_lands(pm, pi, i->rot, i->c, tol))
+        if (i->turned ? !si_lands(pm, pi, rot, i->c, tol) : !prim_twin_same(pm, pi) || !si_moved(pm, pi, i->c, tol))
             return 0;
     }
     return leaf;
@@ -509,7 +530,8 @@ static int si_planes(si_ctx *x, size_t n, double gap)
 int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out)
 {
     si_ctx x;
-    size_t n = sc->nroots, i, cap = 16, found = 0, maxseq = 0;
+    size_t n = sc->nroots, i, cap = 16, found = 0, nturn = 0, maxseq = 0;
+    scene_inst_turn *turn;
     double (*box)[6] = NULL;
     int *table = NULL, status = -1, r;
     *out = NULL;
@@ -543,8 +565,12 @@ int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out)
         if (!o->usable)
             continue;
         for (h = (size_t)o->hash & (cap - 1), tries = 0; table[h] >= 0; h = (h + 1) & (cap - 1))
-            if (x.o[table[h]].hash == o->hash && (++tries > SI_TRIES || si_same(&x, &x.o[table[h]], o, tol)))
-                break;
+            if (x.o[table[h]].hash == o->hash) {
+                if (++tries > SI_TRIES || (r = si_same(&x, &x.o[table[h]], o, tol)) > 0)
+                    break;
+                if (r < 0)
+                    goto stop;
+            }
         if (table[h] < 0)
             table[h] = (int)i;
         else if (tries <= SI_TRIES)
@@ -580,30 +606,36 @@ int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out)
     }
     if ((r = si_apart(&x, n, gap)) || (r = si_planes(&x, n, gap)))
         goto stop;
-    for (i = 0; i < n; i++)
+    for (i = 0; i < n; i++) {
         found += x.o[i].master >= 0 && !x.o[i].meets;
+        nturn += x.o[i].master >= 0 && !x.o[i].meets && x.o[i].turned;
+    }
     status = 0;
     if (!found)
         goto done;
-    if (!(*out = mem_alloc(n * sizeof **out))) {
+    /* one block: an entry per root, then the turned ones' motions */
+    if (!(*out = mem_alloc(n * sizeof **out + nturn * sizeof(scene_inst_turn)))) {
         status = -1;
         goto done;
     }
+    turn = (scene_inst_turn *)(*out + n);
     for (i = 0; i < n; i++) {
         const si_obj *o = &x.o[i];
         scene_inst *e = &(*out)[i];
-        memset(e, 0, sizeof *e);
         e->master = o->master >= 0 && !o->meets ? o->master : -1;
+        e->turn = NULL;
         if (e->master < 0)
             continue;
         e->first = o->first;
         e->count = o->count;
         e->dprim = o->first - x.o[o->master].first;
-        e->turned = o->turned;
-        memcpy(e->rot, o->rot, sizeof e->rot);
         memcpy(e->shift, o->c, sizeof e->shift);
-        memcpy(e->lo, o->lo, sizeof e->lo);
-        memcpy(e->hi, o->hi, sizeof e->hi);
+        if (o->turned) {
+            memcpy(turn->rot, x.rot[i], sizeof turn->rot);
+            memcpy(turn->lo, o->lo, sizeof turn->lo);
+            memcpy(turn->hi, o->hi, sizeof turn->hi);
+            e->turn = turn++;
+        }
     }
     status = (int)found;
     goto done;
@@ -616,5 +648,7 @@ done:
     mem_free(x.stk);
     mem_free(table);
     mem_free(box);
+    mem_free(x.rot);
+    mem_free(x.inv);
     return status;
 }

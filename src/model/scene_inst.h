@@ -10,6 +10,13 @@
 #define MODEL_SCENE_INST_H
 #include "model/scene.h"
 
+/* A turned copy's motion and box. */
+typedef struct scene_inst_turn {
+    double rot[9];       /* row-major rotation: a point p of the master
+                            stands at rot p + shift in the copy */
+    double lo[3], hi[3]; /* the copy's box (as the CSG compiler bounds it) */
+} scene_inst_turn;
+
 typedef struct scene_inst {
     int master;          /* the root index of the object copied, or -1:
                             not an instance */
@@ -18,12 +25,11 @@ typedef struct scene_inst {
     int dprim;           /* first minus the master's first: the copy's
                             primitive i stands where the master's i - dprim
                             does */
-    int turned;          /* 0: rot is the identity (the primitives are
-                            twins, prim_twin, of the master's) */
-    double rot[9];       /* row-major rotation and translation: a point p */
-    double shift[3];     /* of the master stands at rot p + shift in the
-                            copy */
-    double lo[3], hi[3]; /* the copy's box (as the CSG compiler bounds it) */
+    double shift[3];     /* a point p of the master stands at p + shift in
+                            the copy, or turned, at turn->rot p + shift */
+    const scene_inst_turn *turn;   /* NULL: translated (the primitives are
+                            twins, prim_twin, of the master's); else in
+                            the block of the entries */
 } scene_inst;
 
 /* Finds the instances among sc's objects (its roots), one entry per root
@@ -44,7 +50,7 @@ typedef struct scene_inst {
  *    gap from every other object's (of their bounded primitives) and from
  *    the plane of every half-space.
  * The number of instances (0: *out NULL, none found or none sought), or -1
- * when memory runs out. */
+ * when memory runs out. *out is one block (mem_free it once). */
 #define SCENE_INST_ORTHO (1.0 / 1073741824.0)
 int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out);
 #endif

@@ -28,7 +28,7 @@ void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int ne
     const prim *p = cscene_prim_of(cs, pi, &in);
     double w[3], m[3];
     int i;
-    if (!in->turned) {
+    if (!in->turn) {
         NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
         vec3_to_d(pt, out->p);    /* the point itself, not its master's */
         return;
@@ -37,7 +37,7 @@ void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int ne
      * once), the master's normal and tangents carried back */
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
-        m[i] = dmath_dot3(in->q + 3 * i, w) + in->shift_d[i];
+        m[i] = dmath_dot3(in->turn->q + 3 * i, w) + in->shift_d[i];
     NS(prim_surface)(p, face, vec3_from_d(m), need_uv, out);
     memcpy(out->p, w, sizeof w);
     NS(cscene_inst_back)(in, out->n);
@@ -433,30 +433,30 @@ static prim_lin *cscene_lin_room(cscene *cs, size_t k)
 #define CSCENE_INST_MIN 1024
 #define CSCENE_INST_GAP (1.0 / 1024)
 
-/* The frame change of a turned instance e into *in: in the normalised
+/* The frame change of a turned instance e into *in and *tu: in the normalised
  * world (scale s, offset f) a point p of the object stands at
  * q p + shift in its master, q = rot^-1 and shift = f - q (f + s c).
  * Its box is its own, padded by twice CSG_BOX_PAD: once as every box is,
  * once for the carried ray's offset (csg_object_turned), which is kept
  * under a quarter of the gap between objects: an object whose box
  * diagonal would allow more is not taken (1). */
-static int cscene_turned(const cscene *cs, const scene_inst *e, csg_inst *in)
+static int cscene_turned(const cscene *cs, const scene_inst *e, csg_inst *in, csg_turn *tu)
 {
     const double s = cs->nm.scale, *f = cs->nm.off;
     double a[3], diag = 0, unit = NUM_IS_FIXED ? num_to_d(NUM_ULP) : 2 * GEOM_W * num_to_d(NUM_ULP);
     int j;
-    if (dmath_m3_inverse(e->rot, in->q))
+    if (dmath_m3_inverse(e->turn->rot, tu->q))
         return 1;
     for (j = 0; j < 3; j++) {
-        in->lo[j] = s * e->lo[j] + f[j] - 2 * CSG_BOX_PAD;
-        in->hi[j] = s * e->hi[j] + f[j] + 2 * CSG_BOX_PAD;
-        diag += s * (e->hi[j] - e->lo[j]) * s * (e->hi[j] - e->lo[j]);
+        tu->lo[j] = s * e->turn->lo[j] + f[j] - 2 * CSG_BOX_PAD;
+        tu->hi[j] = s * e->turn->hi[j] + f[j] + 2 * CSG_BOX_PAD;
+        diag += s * (e->turn->hi[j] - e->turn->lo[j]) * s * (e->turn->hi[j] - e->turn->lo[j]);
         a[j] = f[j] + s * e->shift[j];
     }
     if (!((1 + sqrt(diag)) * sqrt(3.0) / 2 * unit <= CSCENE_INST_GAP / 4))
         return 1;
     for (j = 0; j < 3; j++)
-        in->shift_d[j] = f[j] - dmath_dot3(in->q + 3 * j, a);
+        in->shift_d[j] = f[j] - dmath_dot3(tu->q + 3 * j, a);
     in->shift = vec3_from_d(in->shift_d);
     return 0;
 }
@@ -464,31 +464,36 @@ static int cscene_turned(const cscene *cs, const scene_inst *e, csg_inst *in)
 static int cscene_instances(const scene *sc, cscene *cs, size_t *nprims, diag *err)
 {
     scene_inst *si = NULL;
-    size_t i;
+    size_t i, nturn = 0;
     int n = scene_inst_find(sc, PRIM_SAME_TOL / cs->nm.scale, CSCENE_INST_GAP / cs->nm.scale, &si), j;
     *nprims = 0;
     if (n < CSCENE_INST_MIN) {
         mem_free(si);
         return n < 0 ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
     }
+    for (i = 0; i < sc->nroots; i++)
+        nturn += si[i].master >= 0 && si[i].turn;
     cs->root_inst = mem_calloc(sc->nroots, sizeof *cs->root_inst);
     cs->prim_root = mem_alloc(sc->nprims * sizeof *cs->prim_root);
-    if (!cs->root_inst || !cs->prim_root) {
+    cs->inst_turn = mem_alloc((nturn ? nturn : 1) * sizeof *cs->inst_turn);
+    if (!cs->root_inst || !cs->prim_root || !cs->inst_turn) {
         mem_free(si);
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
     }
     for (i = 0; i < sc->nprims; i++)
         cs->prim_root[i] = -1;
+    nturn = 0;
     for (i = 0; i < sc->nroots; i++) {
         csg_inst *in = &cs->root_inst[i];
         double d[3];
         if (si[i].master < 0)
             continue;
-        if ((in->turned = si[i].turned)) {
-            if (cscene_turned(cs, &si[i], in)) {
-                in->turned = 0;   /* too large for the mode: its own */
-                continue;
-            }
+        if (si[i].turn) {
+            csg_turn *tu = &cs->inst_turn[nturn];
+            if (cscene_turned(cs, &si[i], in, tu))
+                continue;         /* too large for the mode: its own */
+            in->turn = tu;
+            nturn++;
         } else {
             for (j = 0; j < 3; j++)
                 d[j] = -si[i].shift[j] * cs->nm.scale;
@@ -692,6 +697,7 @@ void NS(cscene_free)(cscene *cs)
     mem_free(cs->prim_fr);
     mem_free(cs->prim_root);
     mem_free(cs->root_inst);
+    mem_free(cs->inst_turn);
     for (i = 0; i < cs->nlin_blk; i++)
         mem_free(cs->lin_blk[i]);
     mem_free(cs->lin_blk);

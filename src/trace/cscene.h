@@ -51,6 +51,7 @@ typedef struct cscene {
      * where the scene has none. An instance's primitives are not compiled:
      * its master's stand for them (cscene_prim_of, cscene_surface). */
     csg_inst *root_inst;
+    csg_turn *inst_turn;           /* the turned ones' frame changes */
     int *prim_root;
     prim_lin **lin_blk;            /* the distinct linear parts (twins share
                                       one), CSCENE_LIN_BLOCK a block, in
@@ -118,13 +119,13 @@ static inline const prim *cscene_prim_of(const cscene *cs, int pi, const csg_ins
     return &cs->prims[pi - (*in)->dprim];
 }
 
-/* A direction v of a turned instance's master (csg_inst.q) carried back
+/* A direction v of a turned instance's master (csg_turn.q) carried back
  * into the instance: q^T v (q is a rotation, its inverse its transpose
  * to within SCENE_INST_ORTHO), in place. */
 static inline void NS(cscene_inst_back)(const csg_inst *in, double v[3])
 {
     double w[3];
-    dmath_m3_tmul_v(in->q, v, w);
+    dmath_m3_tmul_v(in->turn->q, v, w);
     memcpy(v, w, sizeof w);
 }
 

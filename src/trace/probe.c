@@ -67,13 +67,13 @@ static int probe_prim_span(const void *v, int pi, const double *o, const double 
     if (pi < 0 || (size_t)pi >= cs->nprims || probe_ray(cs, o, d, &r))
         return 0;
     pr = cscene_prim_of(cs, pi, &in);
-    if (in && in->turned) {       /* a turned instance's: its master's */
+    if (in && in->turn) {       /* a turned instance's: its master's */
         double od[3], dd[3], o2[3], d2[3];
         int i;
         vec3_to_d(r.o, od);
         vec3_to_d(r.d, dd);
-        dmath_m3_mul_v(in->q, od, o2);
-        dmath_m3_mul_v(in->q, dd, d2);
+        dmath_m3_mul_v(in->turn->q, od, o2);
+        dmath_m3_mul_v(in->turn->q, dd, d2);
         for (i = 0; i < 3; i++)
             o2[i] += in->shift_d[i];
         prim_ray_set(&r, vec3_from_d(o2), vec3_from_d(d2), -1, 0);

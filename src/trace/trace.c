@@ -55,7 +55,7 @@ static inline void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_f
         if (f->flat_k >= 0) {
             const csg_inst *in;
             memcpy(sf->n, cscene_prim_of(cs, h->prim, &in)->pl_d[f->flat_k], sizeof sf->n);
-            if (in && in->turned)
+            if (in && in->turn)
                 NS(cscene_inst_back)(in, sf->n);
             return;
         }

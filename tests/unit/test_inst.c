@@ -53,6 +53,7 @@ static void test_inst_translated_copy(void **state)
     assert_int_equal(si[1].count, 5);
     assert_int_equal(si[1].dprim, 5);
     assert_int_equal(si[1].first, 5);
+    assert_null(si[1].turn);
     assert_true(fabs(si[1].shift[0] - 2.9) < 1e-12 && fabs(si[1].shift[1] - 0.1) < 1e-12
                 && fabs(si[1].shift[2]) < 1e-12);
     mem_free(si);
@@ -77,13 +78,13 @@ static void test_inst_turned_copy(void **state)
     (void)state;
     assert_int_equal(inst_find("OBJECT PART\nOBJECT PART ROTATE Z 90 TRANSLATE 5 0 0\n", &si, &sc), 1);
     assert_int_equal(si[1].master, 0);
-    assert_int_equal(si[1].turned, 1);
+    assert_non_null(si[1].turn);
     for (k = 0; k < 9; k++)
-        assert_true(fabs(si[1].rot[k] - rz90[k]) < 1e-12);
+        assert_true(fabs(si[1].turn->rot[k] - rz90[k]) < 1e-12);
     assert_true(fabs(si[1].shift[0] - 5) < 1e-12 && fabs(si[1].shift[1]) < 1e-12 && fabs(si[1].shift[2]) < 1e-12);
     /* its box: the block's turned, met with the ball's (not the ball's
      * box of corners, sqrt(3) times wider) */
-    assert_true(fabs(si[1].lo[0] - 4) < 1e-9 && fabs(si[1].hi[0] - 6) < 1e-9);
+    assert_true(fabs(si[1].turn->lo[0] - 4) < 1e-9 && fabs(si[1].turn->hi[0] - 6) < 1e-9);
     mem_free(si);
     /* a primitive's linear part off by 5e-10 (the bore reaches 3 along
      * its axis: 1.5e-9, beyond tol), then by 2e-10 (6e-10, within) */
@@ -96,12 +97,12 @@ static void test_inst_turned_copy(void **state)
     /* through the floor's plane, no face near parallel to it */
     assert_int_equal(inst_find("OBJECT PART\nOBJECT PART ROTATE X 30 ROTATE Y 20 TRANSLATE 5 0 -0.5\n"
                                "OBJECT GROUND\n", &si, &sc), 1);
-    assert_int_equal(si[1].turned, 1);
+    assert_non_null(si[1].turn);
     mem_free(si);
     scene_free(sc);
     /* turned by a hair: no twins, a rotation all the same */
     assert_int_equal(inst_find("OBJECT PART\nOBJECT PART ROTATE Z 1e-14 TRANSLATE 5 0 0\n", &si, &sc), 1);
-    assert_int_equal(si[1].turned, 1);
+    assert_non_null(si[1].turn);
     mem_free(si);
     scene_free(sc);
 }
