@@ -223,3 +223,5 @@ bench-grow: deps-bench all $(BUILD)/bench/cputime
 	@sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime
 	@echo "parts turned each its own way (GROW_TURN=1):"
 	@GROW_TURN=1 sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime
+	@echo "parts turned and each of a size of its own, none a copy (GROW_TURN=1 GROW_VARY=1):"
+	@GROW_TURN=1 GROW_VARY=1 sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime

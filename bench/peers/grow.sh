@@ -11,7 +11,11 @@
 # written here, both from the one list of placements. GROW_TURN=1 turns
 # each object about x, then y, then z by angles drawn from a fixed
 # pseudo-random sequence (awk's srand(1)): no two objects then share a
-# linear part, and the twins of the grid (model/prim_twin.h) give nothing.
+# linear part, and the twins of the grid (model/prim_twin.h) give nothing,
+# though each is still a turned copy of the first (an instance,
+# docs/numerics.md). GROW_VARY=1 scales object k by 1 + 10^-3 k / n^2
+# besides: no object is then a copy of another, and each is traced as its
+# own.
 # Usage: sh bench/peers/grow.sh [MAPRT [CPUTIME]]
 # sh bench/peers/grow.sh --deck N FILE writes the deck of the n x n grid
 # to FILE and does nothing else (for timing one size alone, tools/ab.sh);
@@ -21,12 +25,13 @@ dir=$(dirname "$0")
 # place N: the grid's scale, turns (degrees about x, y, z) and
 # translations, one object a line
 place() {
-  awk -v n="$1" -v turn="${GROW_TURN:-0}" 'BEGIN {
+  awk -v n="$1" -v turn="${GROW_TURN:-0}" -v vary="${GROW_VARY:-0}" 'BEGIN {
     s = 9 / n; step = 27 / n; srand(1)
     for (i = 0; i < n; i++) for (j = 0; j < n; j++) {
       ax = ay = az = 0
       if (turn == 1) { ax = 360 * rand(); ay = 360 * rand(); az = 360 * rand() }
-      printf "%.6f %.4f %.4f %.4f %.6f %.6f %.6f\n", s, ax, ay, az,
+      sk = vary == 1 ? s * (1 + 1e-3 * (n * i + j) / (n * n)) : s
+      printf (vary == 1 ? "%.9f" : "%.6f") " %.4f %.4f %.4f %.6f %.6f %.6f\n", sk, ax, ay, az,
              -13.5 + step * (i + 0.5), -13.5 + step * (j + 0.5), s - 1
     }
   }'
