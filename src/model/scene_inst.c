@@ -28,6 +28,8 @@ typedef struct si_obj {
                             singular */
     uint64_t hash;
     double c[3];
+    double size;         /* its first primitive's linear part's squared
+                            Frobenius norm, which a rotation keeps */
     double lo[3], hi[3]; /* its box; lo[0] > hi[0]: none */
 } si_obj;
 
@@ -50,6 +52,11 @@ typedef struct si_ctx {
  * that (many objects alike in all but their primitives' places) it is
  * neither an instance nor a master, so n objects cost O(n). */
 #define SI_TRIES 8
+
+/* Relative difference of si_obj.size beyond which two objects are not
+ * copies: a rotation orthonormal within SCENE_INST_ORTHO and the
+ * tolerance of the placement change it by orders of magnitude less. */
+#define SI_SIZE_TOL 1e-6
 
 static uint64_t si_mix(uint64_t h, uint64_t w) { return (h ^ w) * 0x100000001b3u; }
 
@@ -111,8 +118,13 @@ static int si_walk(si_ctx *x, int i)
             memcpy(w, sp->dim, sizeof w);
             x->steps[k].off -= lo;
             h = si_mix(si_mix(h, (uint64_t)x->steps[k].off), (uint64_t)sp->kind);
-            if (!o->count++)
+            if (!o->count++) {
+                const double *m = sp->world_from_object;
+                int j;
                 h = si_mix(si_mix(si_mix(h, w[0]), w[1]), w[2]);
+                for (j = 0, o->size = 0; j < 12; j++)
+                    o->size += j % 4 == 3 ? 0 : m[j] * m[j];
+            }
         }
     o->usable &= !o->half && o->count > 0 && hi - lo + 1 == o->count;
     o->hash = h;
@@ -198,6 +210,10 @@ static int si_same(si_ctx *x, si_obj *m, si_obj *i, double tol)
     const double *rot = id;
     size_t n = sc->nroots;
     int k, j, leaf = 0;
+    /* objects of one tree at different scales: told apart at once
+     * (a copy's size is its master's to within far less) */
+    if (!(fabs(i->size - m->size) <= SI_SIZE_TOL * m->size))
+        return 0;
     if (m->nseq != i->nseq || m->count != i->count || memcmp(a, b, (size_t)m->nseq * sizeof *a))
         return 0;
     for (k = 0; k < m->nseq; k++) {
