@@ -252,11 +252,16 @@ static int si_same(si_ctx *x, si_obj *m, si_obj *i, double tol)
  * planes lies (si_planes keeps instances off those).
  * Its steps are read backwards, so each operator finds its left operand's
  * box on top of the stack and its right one's below (stk: room for nseq
- * boxes). An empty box (lo[0] > hi[0]) holds nothing. */
-static void si_box(const si_ctx *x, si_obj *o, double (*stk)[6])
+ * boxes). A first pass forwards marks the leaves the result depends on
+ * (need: room for 2 nseq + 1), none under a difference's right operand:
+ * the others' boxes are not formed (a part's bores: three of its five).
+ * An empty box (lo[0] > hi[0]) holds nothing. */
+static void si_box(const si_ctx *x, si_obj *o, double (*stk)[6], unsigned char *need)
 {
     const si_step *s = x->steps + o->seq;
-    int k, j, top = 0;
+    unsigned char *pend = need + o->nseq;   /* the operands to come, in
+                                               preorder: left on top */
+    int k, j, top = 0, np = 0;
     if (o->half) {
         for (j = 0; j < 3; j++) {
             o->lo[j] = HUGE_VAL;
@@ -267,6 +272,14 @@ static void si_box(const si_ctx *x, si_obj *o, double (*stk)[6])
                 scene_prim_grow_tight_box(&x->sc->prims[o->first + s[k].off], o->lo, o->hi);
         return;                   /* none: lo[0] > hi[0] */
     }
+    pend[np++] = 1;
+    for (k = 0; k < o->nseq; k++) {
+        need[k] = pend[--np];
+        if (s[k].op != CSG_LEAF) {
+            pend[np++] = need[k] && s[k].op != CSG_DIFF;
+            pend[np++] = need[k];
+        }
+    }
     for (k = o->nseq; k-- > 0;) {
         double *b;
         if (s[k].op == CSG_LEAF) {
@@ -275,7 +288,8 @@ static void si_box(const si_ctx *x, si_obj *o, double (*stk)[6])
                 b[j] = HUGE_VAL;
                 b[3 + j] = -HUGE_VAL;
             }
-            scene_prim_grow_tight_box(&x->sc->prims[o->first + s[k].off], b, b + 3);
+            if (need[k])
+                scene_prim_grow_tight_box(&x->sc->prims[o->first + s[k].off], b, b + 3);
             continue;
         }
         b = stk[top - 1];         /* the left operand's, then the result */
@@ -549,6 +563,7 @@ int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out)
     size_t n = sc->nroots, i, cap = 16, found = 0, nturn = 0, maxseq = 0;
     scene_inst_turn *turn;
     double (*box)[6] = NULL;
+    unsigned char *need = NULL;
     int *table = NULL, status = -1, r;
     *out = NULL;
     if (n < 2 || n > INT32_MAX / 4 || sc->nprims > INT32_MAX)
@@ -601,18 +616,18 @@ int scene_inst_find(const scene *sc, double tol, double gap, scene_inst **out)
         goto done;
     found = 0;
     status = -1;
-    if (!(box = mem_alloc((maxseq ? maxseq : 1) * sizeof *box)))
+    if (!(box = mem_alloc((maxseq ? maxseq : 1) * sizeof *box)) || !(need = mem_alloc(2 * maxseq + 1)))
         goto done;
     for (i = 0; i < n; i++)
         if (x.o[i].master < 0 && x.o[i].nseq)
-            si_box(&x, &x.o[i], box);
+            si_box(&x, &x.o[i], box, need);
     for (i = 0; i < n; i++) {
         si_obj *o = &x.o[i];
         int k;
         if (o->master < 0)
             continue;
         if (o->turned) {          /* turned: its own */
-            si_box(&x, o, box);
+            si_box(&x, o, box, need);
             continue;
         }
         for (k = 0; k < 3; k++) {
@@ -664,6 +679,7 @@ done:
     mem_free(x.stk);
     mem_free(table);
     mem_free(box);
+    mem_free(need);
     mem_free(x.rot);
     mem_free(x.inv);
     return status;
