@@ -41,14 +41,18 @@ typedef struct scene_inst {
  *    and m's lie at i's index less dprim;
  *  - one rotation R (orthonormal within SCENE_INST_ORTHO, determinant
  *    positive) and one translation c carry each of m's primitives onto
- *    i's counterpart to within tol: world_from_object's rows, linear part
- *    and translation, differ by at most tol summed over a row (no point
- *    of the canonical solids, all inside [-1, 1]^3, moves farther than
- *    tol on any axis). Where their first primitives are twins
- *    (prim_twin), R is the identity exactly and every pair must be twins;
- *  - i's box (of its primitives' scene_prim_grow_box) keeps farther than
- *    gap from every other object's (of their bounded primitives) and from
- *    the plane of every half-space.
+ *    i's counterpart to within tol: on every row of world_from_object,
+ *    the difference of the translation plus those of the linear part,
+ *    each times the solid's reach along that axis (its canonical box), at
+ *    most tol, so no point of the solid moves farther than tol on any
+ *    axis. Where their first primitives are twins (prim_twin), R is the
+ *    identity exactly and every pair must be twins;
+ *  - i's box (of its primitives' scene_prim_grow_tight_box, as the CSG
+ *    compiler combines them) keeps farther than gap from every other
+ *    object's (of their bounded primitives);
+ *  - where i's box comes within gap of the plane of a half-space, no
+ *    planar face of i is near parallel to that plane (sine of the angle
+ *    below 1/16) while its primitive's box comes within gap of it.
  * The number of instances (0: *out NULL, none found or none sought), or -1
  * when memory runs out. *out is one block (mem_free it once). */
 #define SCENE_INST_ORTHO (1.0 / 1073741824.0)
