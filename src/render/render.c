@@ -79,6 +79,9 @@ void render_stats_add(render_stats *a, const render_stats *b)
     a->uv_skipped += b->uv_skipped;
     a->shadow_skipped += b->shadow_skipped;
     a->rays_capped += b->rays_capped;
+    a->objects = b->objects > a->objects ? b->objects : a->objects;
+    a->inst_moved = b->inst_moved > a->inst_moved ? b->inst_moved : a->inst_moved;
+    a->inst_turned = b->inst_turned > a->inst_turned ? b->inst_turned : a->inst_turned;
 }
 
 void render_stats_print(FILE *f, const render_stats *st)
@@ -87,11 +90,12 @@ void render_stats_print(FILE *f, const render_stats *st)
     fprintf(f, "rays.primary=%llu\nrays.shadow=%llu\nrays.reflected=%llu\nrays.refracted=%llu\n"
                "pds.lookups=%llu\nfx.overflows=%llu\ntests.prim=%llu\ntests.bound=%llu\n"
                "csg.pruned=%llu\nskipped.uv=%llu\nskipped.shadow=%llu\n"
+               "objects=%llu\ninstances.moved=%llu\ninstances.turned=%llu\n"
                "time.compile_s=%.6f\ntime.render_s=%.6f\n",
             st->rays_primary, st->rays_shadow, st->rays_reflected, st->rays_refracted,
             st->pds_lookups, st->fx_overflows, st->prim_tests, st->bound_tests,
-            st->csg_pruned, st->uv_skipped, st->shadow_skipped, st->time_compile_s,
-            st->time_render_s);
+            st->csg_pruned, st->uv_skipped, st->shadow_skipped, st->objects, st->inst_moved,
+            st->inst_turned, st->time_compile_s, st->time_render_s);
     for (k = 0; k < HFP_EXC_N; k++)
         fprintf(f, "hfp.%s=%llu\n", hfp_exc_name[k], st->hfp_exc[k]);
     if (st->arena_full)
@@ -216,6 +220,7 @@ int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
     if ((status = ops->compile(sc, &cs, err)) != 0)
         return status;
     total.time_compile_s = omp_get_wtime() - t0;
+    ops->counts(cs, &total);
     if ((status = image_alloc(&out.img, opt.width, opt.height, 3, "render", err)) != 0)
         goto done;
     if (!opt.skip_pid)

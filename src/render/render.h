@@ -33,6 +33,11 @@ typedef struct render_stats {
      * attribute has no diffuse or specular term) */
     unsigned long long uv_skipped, shadow_skipped;
     unsigned long long rays_capped;   /* secondary rays not traced: the pixel's ray cap was spent */
+    /* the compiled scene: its objects, and those traced through an earlier
+     * object's tree moved by a translation or a turn (instances,
+     * model/scene_inst.h); the scene's, the same in every part of a split
+     * render */
+    unsigned long long objects, inst_moved, inst_turned;
     double time_compile_s, time_render_s;
 } render_stats;
 
@@ -83,6 +88,9 @@ typedef struct render_ops {
     const char *isa;          /* the code it was compiled for: "baseline" or
                                  "x86-64-v3" (Makefile, ISA_V3) */
     int (*compile)(const scene *sc, void **cs, diag *err);
+    /* Sets st's objects, inst_moved and inst_turned to the compiled
+     * scene's. */
+    void (*counts)(const void *cs, render_stats *st);
     void (*free)(void *cs);
     int (*thread_new)(const void *cs, void **tc);     /* 0, or -1 out of memory */
     void (*thread_free)(void *tc);
@@ -116,7 +124,9 @@ int render_region_check(const int region[4], int width, int height);
 int render_scene(const scene *sc, const render_ops *ops, const render_opts *o,
                  render_fb *fb, render_stats *st, diag *err);
 void render_fb_free(render_fb *fb);
-/* Adds b's counters (not its times) to a. */
+/* Adds b's counters (not its times) to a; of the scene's counts (objects,
+ * inst_moved, inst_turned) a keeps the larger, so that the parts of one
+ * render report them once. */
 void render_stats_add(render_stats *a, const render_stats *b);
 /* Prints the counters as key=value lines (the --stats format). */
 void render_stats_print(FILE *f, const render_stats *st);

@@ -3,7 +3,7 @@
 #include "util/mem.h"
 #include <string.h>
 
-static const char render_part_magic[8] = {'M', 'A', 'P', 'R', 'T', 'P', 'T', '2'};
+static const char render_part_magic[8] = {'M', 'A', 'P', 'R', 'T', 'P', 'T', '3'};
 
 /* Every field of render_stats is in the layout: one that is added there
  * without a place here stops the build. */
@@ -31,16 +31,17 @@ static uint64_t render_part_get64(const uint8_t *p)
     return (uint64_t)render_part_get32(p) << 32 | render_part_get32(p + 4);
 }
 
-/* The counters in the order of the layout: fourteen, then the HFP
+/* The counters in the order of the layout: the named ones, then the HFP
  * exceptions. */
+#define RENDER_PART_NAMED (RENDER_PART_COUNTERS - HFP_EXC_N)
 static unsigned long long *render_part_counter(render_stats *s, int i)
 {
-    unsigned long long *const c[14] = {
+    unsigned long long *const c[RENDER_PART_NAMED] = {
         &s->rays_primary, &s->rays_shadow, &s->rays_reflected, &s->rays_refracted,
         &s->pds_lookups, &s->fx_overflows, &s->prim_tests, &s->bound_tests,
         &s->csg_pruned, &s->arena_full, &s->range_cut, &s->uv_skipped, &s->shadow_skipped,
-        &s->rays_capped};
-    return i < 14 ? c[i] : &s->hfp_exc[i - 14];
+        &s->rays_capped, &s->objects, &s->inst_moved, &s->inst_turned};
+    return i < RENDER_PART_NAMED ? c[i] : &s->hfp_exc[i - RENDER_PART_NAMED];
 }
 
 size_t render_part_bytes(const int region[4], int ids)
@@ -122,16 +123,18 @@ int render_part_decode(const char *name, const uint8_t *buf, size_t len, render_
     uint64_t bits;
     int i;
     memset(&in, 0, sizeof in);
-    if (len >= 8 && !memcmp(buf, "MAPRTPT1", 8))
-        return diag_offset(err, DIAG_INPUT, name, 0, "a region file of format 1 (MAPRTPT1, from an "
-                           "older maprt); this maprt reads format 2 (MAPRTPT2): render the part "
-                           "again");
+    /* an older format's header places fields elsewhere: named, not misread */
+    if (len >= 8 && !memcmp(buf, render_part_magic, 7) && buf[7] >= '1' && buf[7] < render_part_magic[7])
+        return diag_offset(err, DIAG_INPUT, name, 0, "a region file of format %c (%.8s, made by an "
+                           "older maprt); this maprt reads format %c (%.8s): render the part again",
+                           buf[7], (const char *)buf, render_part_magic[7], render_part_magic);
     if (len < RENDER_PART_HEADER)
         return diag_offset(err, DIAG_INPUT, name, (long long)len,
                            "a region file has a %d-byte header; this one ends first",
                            RENDER_PART_HEADER);
     if (memcmp(buf, render_part_magic, 8))
-        return diag_offset(err, DIAG_INPUT, name, 0, "not a maprt region file (magic MAPRTPT2)");
+        return diag_offset(err, DIAG_INPUT, name, 0, "not a maprt region file (magic %.8s)",
+                           render_part_magic);
     if (render_part_get32(buf + 8) < 1 || render_part_get32(buf + 8) > SCENE_MAX_SIDE ||
         render_part_get32(buf + 12) < 1 || render_part_get32(buf + 12) > SCENE_MAX_SIDE)
         return diag_offset(err, DIAG_INPUT, name, 8, "image size %lux%lu is outside 1..%d",

@@ -4,17 +4,18 @@
  * whole framebuffer and write exactly the bytes a single process writes.
  *
  * Layout (docs/cluster.md), all integers big-endian:
- *   0   8  magic "MAPRTPT2" (format 2; "MAPRTPT1", without the contents
- *          word and the identity map, is refused with a message)
+ *   0   8  magic "MAPRTPT3" (format 3; the older "MAPRTPT1" and
+ *          "MAPRTPT2", without the scene's counts, are refused with a
+ *          message)
  *   8   4  image width          12  4  image height
  *   16 16  region x0 y0 x1 y1   (pixels [x0,x1) x [y0,y1))
  *   32  4  samples per pixel side (--aa)
  *   36  8  numeric mode name, NUL-padded ("q16", "f64", ...)
  *   44  4  contents: bit 0 = the identity map follows the ids; others 0
- *   48 160 render_stats: 20 counters (u64: the fourteen of render_stats,
- *          then the six HFP exceptions), then compile and render seconds as
- *          binary64 bit patterns (u64)
- *   224    region pixels, rows top first: RGB8 (3 bytes each), then the
+ *   48 184 render_stats: 23 counters (u64: the seventeen of render_stats,
+ *          the scene's three counts last, then the six HFP exceptions),
+ *          then compile and render seconds as binary64 bit patterns (u64)
+ *   248    region pixels, rows top first: RGB8 (3 bytes each), then the
  *          primitive ids (i32 each, -1 = background), then with bit 0 the
  *          identity map records (24 bytes each: primitive, face, region,
  *          flags as i32, distance as a binary64 bit pattern)
@@ -26,7 +27,7 @@
 #include "render/render.h"
 #include "util/diag.h"
 
-#define RENDER_PART_COUNTERS (14 + HFP_EXC_N)
+#define RENDER_PART_COUNTERS (17 + HFP_EXC_N)
 #define RENDER_PART_HEADER (48 + 8 * RENDER_PART_COUNTERS + 16)
 #define RENDER_PART_IDS 1     /* contents bit: the identity map is included */
 /* Bytes per pixel: RGB8 and the primitive id, and an identity record. */

@@ -499,6 +499,7 @@ static int cscene_instances(const scene *sc, cscene *cs, size_t *nprims, diag *e
                 d[j] = -si[i].shift[j] * cs->nm.scale;
             in->shift = vec3_from_d(d);
             vec3_to_d(in->shift, in->shift_d);
+            cs->inst_moved++;
         }
         in->master = si[i].master;
         in->first = si[i].first;
@@ -508,6 +509,7 @@ static int cscene_instances(const scene *sc, cscene *cs, size_t *nprims, diag *e
             cs->prim_root[in->first + j] = (int)i;
         *nprims += (size_t)in->count;
     }
+    cs->inst_turned = nturn;
     mem_free(si);
     return 0;
 }

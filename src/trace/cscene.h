@@ -52,6 +52,8 @@ typedef struct cscene {
      * its master's stand for them (cscene_prim_of, cscene_surface). */
     csg_inst *root_inst;
     csg_turn *inst_turn;           /* the turned ones' frame changes */
+    size_t inst_moved, inst_turned;   /* the instances taken, translated
+                                         and turned (render --stats) */
     int *prim_root;
     prim_lin **lin_blk;            /* the distinct linear parts (twins share
                                       one), CSCENE_LIN_BLOCK a block, in

@@ -14,6 +14,14 @@ static int render_ops_compile(const scene *sc, void **cs, diag *err)
     return st;
 }
 
+static void render_ops_counts(const void *vcs, render_stats *st)
+{
+    const cscene *cs = vcs;
+    st->objects = cs->sc->nroots;
+    st->inst_moved = cs->inst_moved;
+    st->inst_turned = cs->inst_turned;
+}
+
 static void render_ops_free(void *cs) { NS(cscene_free)(cs); }
 
 static int render_ops_thread_new(const void *cs, void **tc)
@@ -226,6 +234,7 @@ const render_ops NS(render_ops) = {
     .name = NUM_NAME,
     .isa = NUM_ISA_NAME,
     .compile = render_ops_compile,
+    .counts = render_ops_counts,
     .free = render_ops_free,
     .thread_new = render_ops_thread_new,
     .thread_free = render_ops_thread_free,

@@ -1,12 +1,12 @@
 #!/bin/sh
 # maprt-mpi under mpirun (Open MPI): three ranks (oversubscribed on a small
 # machine) write exactly the bytes of a single-process render, PNG, DL5080
-# and identity map, with the counters summed over ranks and each rank's
-# share; bench writes the CSV rows of one process (timings and the rank
-# column aside) with the cells spread over the ranks; a failed cell, a bad
-# deck or a rank killed mid-render or mid-sweep fails the job with a message
-# and leaves no output. maprt, which links no MPI, refuses to be one of
-# several ranks.
+# and identity map, with the counters summed over ranks (the scene's
+# objects and instances given once) and each rank's share; bench writes
+# the CSV rows of one process (timings and the rank column aside) with the
+# cells spread over the ranks; a failed cell, a bad deck or a rank killed
+# mid-render or mid-sweep fails the job with a message and leaves no
+# output. maprt, which links no MPI, refuses to be one of several ranks.
 # Exit 77 (skipped) when there is no maprt-mpi (no Open MPI at build time)
 # or no mpirun.
 set -u
@@ -51,6 +51,17 @@ cmp -s "$tmp/one-i.png" "$tmp/mpi-i.png" || fail "--ids: PNG differs from the si
 grep -v '^time\.' "$tmp/one-i.st" > "$tmp/a"
 grep -v '^time\.\|^mpi\.' "$tmp/mpi-i.st" > "$tmp/b"
 cmp -s "$tmp/a" "$tmp/b" || fail "--ids: counters differ: $(diff "$tmp/a" "$tmp/b" | tr '\n' ' ')"
+# A grid of turned copies: the scene's counts (objects, instances) once,
+# not times the ranks.
+GROW_TURN=1 sh bench/peers/grow.sh --deck 33 "$tmp/t33.scene" || fail "grow.sh --deck 33"
+$MAPRT render "$tmp/t33.scene" -o "$tmp/one-t.png" --size 48x70 --numeric q16 --stats > "$tmp/one-t.st" \
+  || fail "single render of the grid"
+mpi $mpibin render "$tmp/t33.scene" -o "$tmp/mpi-t.png" --size 48x70 --numeric q16 --threads 1 --stats \
+  > "$tmp/mpi-t.st" || fail "mpirun render of the grid"
+grep -E '^(objects|instances\.)' "$tmp/one-t.st" > "$tmp/a"
+grep -E '^(objects|instances\.)' "$tmp/mpi-t.st" > "$tmp/b"
+grep -qx 'instances.turned=1056' "$tmp/a" && cmp -s "$tmp/a" "$tmp/b" \
+  || fail "grid: the scene's counts differ: $(cat "$tmp/a" "$tmp/b" | tr '\n' ' ')"
 
 # bench: the rows of one process, in its order, but for the timings
 # (seconds_median, rays_per_s) and the rank that ran each row.

@@ -10,8 +10,25 @@ $MAPRT render scenes/fig1.scene -o "$tmp/a.png" --size 40x30 --threads 2 --aa 2 
   || fail "render failed"
 [ -s "$tmp/a.png" ] || fail "no PNG written"
 grep -qx 'rays.primary=4800' "$tmp/stats" || fail "rays.primary should be 40*30*4"
-for k in rays.shadow rays.reflected rays.refracted pds.lookups fx.overflows time.render_s csg.pruned skipped.uv skipped.shadow; do
+for k in rays.shadow rays.reflected rays.refracted pds.lookups fx.overflows time.render_s csg.pruned skipped.uv \
+  skipped.shadow objects instances.moved instances.turned; do
   grep -q "^$k=" "$tmp/stats" || fail "--stats lacks $k"
+done
+# The instances the compile took, in a coarse mode and a fine one: fig1's
+# five objects are no copies; of the growth bench's 33 x 33 parts (and
+# floor) every part but the first is a translated copy, and turned
+# (GROW_TURN=1) 1,056 meet scene_inst_find's criteria; at 10 x 10 they
+# are too few for the compile to take (CSCENE_INST_MIN).
+sh bench/peers/grow.sh --deck 33 "$tmp/g33.scene" && GROW_TURN=1 sh bench/peers/grow.sh --deck 33 "$tmp/t33.scene" \
+  && sh bench/peers/grow.sh --deck 10 "$tmp/g10.scene" || fail "grow.sh --deck"
+for want in "fig1 scenes/fig1.scene 5 0 0" "g33 $tmp/g33.scene 1090 1088 0" "t33 $tmp/t33.scene 1090 0 1056" \
+  "g10 $tmp/g10.scene 101 0 0"; do
+  set -- $want
+  for m in q16 f64; do
+    $MAPRT render "$2" -o "$tmp/i.png" --size 8x6 --threads 1 --numeric $m --stats > "$tmp/st" || fail "$1 $m: render"
+    got=$(grep -E '^(objects|instances\.(moved|turned))=' "$tmp/st" | cut -d= -f2 | tr '\n' ' ')
+    [ "$got" = "$3 $4 $5 " ] || fail "$1 $m: objects, instances.moved, instances.turned are $got, not $3 $4 $5"
+  done
 done
 for m in q16 q32 f32 f64; do
   $MAPRT render scenes/csg.scene -o "$tmp/$m.png" --size 16x16 --numeric $m || fail "mode $m"

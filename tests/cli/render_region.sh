@@ -1,8 +1,10 @@
 #!/bin/sh
 # maprt render --region/--part and maprt merge: regions that do not follow
 # the tile grid assemble into exactly the bytes of one whole render (PNG,
-# DL5080 and, with --part-ids, the identity map), with the same counters, for
-# a fixed split and a random one; bad part sets are refused with the reason.
+# DL5080 and, with --part-ids, the identity map), with the same counters
+# (the scene's objects and instances once, not per part), for a fixed split
+# and a random one; bad part sets, and parts of older formats, are refused
+# with the reason.
 set -u
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
@@ -41,10 +43,24 @@ done
 $MAPRT merge "$tmp"/r-* --deck $deck -o "$tmp/r2.png" --ids "$tmp/r2.ids" || fail "split $split: merge"
 cmp -s "$tmp/r1.ids" "$tmp/r2.ids" && cmp -s "$tmp/r1.png" "$tmp/r2.png" \
   || fail "split $split: merged outputs differ from the whole render's"
-for k in rays.primary rays.shadow rays.reflected pds.lookups tests.prim fx.overflows; do
-  grep "^$k=" "$tmp/one.st" > "$tmp/a" && grep "^$k=" "$tmp/m.st" > "$tmp/b" || fail "no $k"
-  cmp -s "$tmp/a" "$tmp/b" || fail "$k differs: $(cat "$tmp/a") vs $(cat "$tmp/b")"
+# The counters sum over the parts; the scene's counts are given once (here
+# 5 objects, and of a grid of copies its instances, not times the parts).
+samestats() {
+  for k in rays.primary rays.shadow rays.reflected pds.lookups tests.prim fx.overflows objects \
+    instances.moved instances.turned; do
+    grep "^$k=" "$1" > "$tmp/a" && grep "^$k=" "$2" > "$tmp/b" || fail "$3: no $k"
+    cmp -s "$tmp/a" "$tmp/b" || fail "$3: $k differs: $(cat "$tmp/a") vs $(cat "$tmp/b")"
+  done
+}
+samestats "$tmp/one.st" "$tmp/m.st" fig1
+GROW_TURN=1 sh bench/peers/grow.sh --deck 33 "$tmp/t33.scene" || fail "grow.sh --deck 33"
+$MAPRT render "$tmp/t33.scene" -o "$tmp/t.png" --size 24x9 --numeric q16 --stats > "$tmp/t.st" || fail "grid"
+for r in 0,0,24,5 0,5,24,9; do
+  $MAPRT render "$tmp/t33.scene" --size 24x9 --numeric q16 --region $r --part "$tmp/t-$r" || fail "grid $r"
 done
+$MAPRT merge "$tmp"/t-* -o "$tmp/tm.png" --stats > "$tmp/tm.st" || fail "grid merge"
+grep -qx 'instances.turned=1056' "$tmp/tm.st" || fail "grid merge: $(grep '^inst' "$tmp/tm.st" | tr '\n' ' ')"
+samestats "$tmp/t.st" "$tmp/tm.st" "grid of turned copies"
 # A whole-image part merges to the same bytes too.
 $MAPRT render $deck --size 90x70 --aa 2 --numeric f64 --part "$tmp/all" || fail "--part alone"
 $MAPRT merge "$tmp/all" --deck $deck -o "$tmp/m2.png" && cmp -s "$tmp/one.png" "$tmp/m2.png" || fail "whole part"
@@ -59,11 +75,15 @@ $MAPRT merge "$tmp/p-0,0,90,33" "$tmp/q16" -o "$tmp/x.png" 2> "$tmp/e"; [ $? -eq
 grep -q 'first part is 90x70 f64 with --aa 2' "$tmp/e" || fail "mix: $(cat "$tmp/e")"
 head -c 100 "$tmp/all" > "$tmp/short"
 $MAPRT merge "$tmp/short" -o "$tmp/x.png" 2> "$tmp/e"; [ $? -eq 1 ] || fail "short"
-grep -q 'offset 100: error: a region file has a 224-byte header' "$tmp/e" || fail "short: $(cat "$tmp/e")"
-# Format 1 (before the identity map) is refused by name.
-{ printf 'MAPRTPT1'; tail -c +9 "$tmp/all"; } > "$tmp/old"
-$MAPRT merge "$tmp/old" -o "$tmp/x.png" 2> "$tmp/e"; [ $? -eq 1 ] || fail "format 1: exit"
-grep -q 'offset 0: error: a region file of format 1' "$tmp/e" || fail "format 1: $(cat "$tmp/e")"
+grep -q 'offset 100: error: a region file has a 248-byte header' "$tmp/e" || fail "short: $(cat "$tmp/e")"
+# Formats 1 (before the identity map) and 2 (before the scene's counts)
+# are refused by name.
+for f in 1 2; do
+  { printf "MAPRTPT$f"; tail -c +9 "$tmp/all"; } > "$tmp/old"
+  $MAPRT merge "$tmp/old" -o "$tmp/x.png" 2> "$tmp/e"; [ $? -eq 1 ] || fail "format $f: exit"
+  grep -q "offset 0: error: a region file of format $f (MAPRTPT$f, made by an older maprt); this maprt reads format 3 (MAPRTPT3): render the part again" "$tmp/e" \
+    || fail "format $f: $(cat "$tmp/e")"
+done
 # Parts with and without the identity map do not mix; --ids needs it.
 $MAPRT merge "$tmp/p-0,0,90,33" "$tmp/i-0,33,41,70" "$tmp/i-41,33,90,70" -o "$tmp/x.png" 2> "$tmp/e"
 [ $? -eq 1 ] && grep -q 'part carries an identity map; the first part does not' "$tmp/e" \

@@ -35,9 +35,10 @@ static void part_random_fb(render_fb *fb, int w, int h, uint64_t *s)
     }
 }
 
-/* Each field of render_stats (20 counters, 2 times) given a distinct value
- * comes back as it went: a field left out of the layout, or two counters
- * sharing a place, fails here. */
+/* Each field of render_stats (23 counters, the scene's three counts
+ * among them, and 2 times) given a distinct value comes back as it went: a
+ * field left out of the layout, or two counters sharing a place, fails
+ * here. */
 static void test_part_stats_every_field(void **state)
 {
     render_fb fb;
@@ -63,6 +64,8 @@ static void test_part_stats_every_field(void **state)
     assert_int_equal(render_part_encode(&fb, &in, &buf, &len, &err), 0);
     assert_int_equal(render_part_decode("t", buf, len, &out, &err), 0);
     assert_memory_equal(&out.stats, &in.stats, sizeof in.stats);
+    assert_true(out.stats.objects == in.stats.objects && out.stats.inst_moved == in.stats.inst_moved
+                && out.stats.inst_turned == in.stats.inst_turned);
     assert_string_equal(out.mode, "hfp64");
     assert_int_equal(out.aa, 2);
     assert_int_equal(out.ids, 0);
@@ -135,8 +138,9 @@ static void test_part_random_regions(void **state)
     }
 }
 
-/* Format 1, unknown contents bits and a missing identity map are refused
- * at the offset of the field. */
+/* Formats 1 and 2 (older maprts', without the scene's counts), unknown
+ * contents bits and a missing identity map are refused at the offset of
+ * the field. */
 static void test_part_bad_headers(void **state)
 {
     render_fb fb;
@@ -155,11 +159,22 @@ static void test_part_bad_headers(void **state)
     strcpy(in.mode, "f64");
     diag_init(&err);
     assert_int_equal(render_part_encode(&fb, &in, &buf, &len, &err), 0);
+    assert_memory_equal(buf, "MAPRTPT3", 8);
     buf[7] = '1';
     assert_int_equal(render_part_decode("t", buf, len, &out, &err), DIAG_INPUT);
     assert_int_equal(err.offset, 0);
-    assert_non_null(strstr(err.msg, "format 1"));
+    assert_non_null(strstr(err.msg, "format 1 (MAPRTPT1, made by an older maprt)"));
     buf[7] = '2';
+    diag_init(&err);
+    assert_int_equal(render_part_decode("t", buf, len, &out, &err), DIAG_INPUT);
+    assert_int_equal(err.offset, 0);
+    assert_non_null(strstr(err.msg, "format 2 (MAPRTPT2, made by an older maprt); this maprt reads "
+                                    "format 3 (MAPRTPT3): render the part again"));
+    buf[7] = '4';             /* a later format is no region file this maprt knows */
+    diag_init(&err);
+    assert_int_equal(render_part_decode("t", buf, len, &out, &err), DIAG_INPUT);
+    assert_non_null(strstr(err.msg, "not a maprt region file"));
+    buf[7] = '3';
     buf[46] = 1;              /* contents bit 8 */
     diag_init(&err);
     assert_int_equal(render_part_decode("t", buf, len, &out, &err), DIAG_INPUT);
