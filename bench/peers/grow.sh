@@ -5,10 +5,13 @@
 # the same 27 x 27 square on the same mirror floor, seen by the same camera
 # and lights: n = 1, 3, 10, 32, 100 (1 to 10,000 objects, 5 to 50,000
 # primitives). One thread, whole process, medians of N alternated runs
-# (GROW_RUNS, default 3); printed: CPU seconds and each tool's cost over its
-# own cost at one object, by the medians and (last three columns) by the
-# minima, the runs a shared machine disturbed least. The scenes are
-# written here, both from the one list of placements. GROW_TURN=1 turns
+# (GROW_RUNS, default 3); printed: CPU seconds (medians) and each tool's
+# cost over its own cost at one object: the median of the ratios of runs
+# paired in time (each round runs the one-object scene just before the
+# n x n one, so that a shared machine's load, which drifts over the
+# minutes a table takes, weighs on both alike) and (last three columns)
+# the ratio of the minima, the runs such a machine disturbed least. The
+# scenes are written here, both from the one list of placements. GROW_TURN=1 turns
 # each object about x, then y, then z by angles drawn from a fixed
 # pseudo-random sequence (awk's srand(1)): no two objects then share a
 # linear part, and the twins of the grid (model/prim_twin.h) give nothing,
@@ -97,6 +100,20 @@ scenes() {
   pov "$tmp/place" > "$tmp/g$n.pov"
 }
 
+# paired T N: the median over the rounds of T's CPU at n = N over its CPU
+# at one object in the same round (1.00 for N = 1)
+paired() {
+  [ "$2" = 1 ] && { echo 1.00; return; }
+  paste -d ' ' "$tmp/$1$2.t" "$tmp/${1}1_$2.t" | awk '$5 > 0 { print $1 / $5 }' | sort -n |
+    awk '{ v[NR] = $1 } END { printf "%.2f\n", (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
+
+# least1 T N: T's least CPU at one object, of the n = 1 runs and those
+# paired with n = N
+least1() {
+  cat "$tmp/${1}1.t" $( [ "$2" = 1 ] || echo "$tmp/${1}1_$2.t") | sort -n | awk 'NR == 1 { printf "%.3f\n", $1 }'
+}
+
 echo "objects,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_growth,f64_growth,pov_growth,pixels_over_8,q16_growth_min,f64_growth_min,pov_growth_min"
 for n in 1 3 10 32 100; do
   scenes "$n"
@@ -106,13 +123,23 @@ for n in 1 3 10 32 100; do
   over=$("$bin" compare "$tmp/g.ppm" "$tmp/g.png" | sed -n 's/^pixels_over=//p')
   i=0
   while [ "$i" -lt "$runs" ]; do
-    run "q$n" "$bin" render "$tmp/g$n.scene" -o "$tmp/o.png" --size "$size" --numeric q16 --threads 1 --quiet
-    run "f$n" "$bin" render "$tmp/g$n.scene" -o "$tmp/o.png" --size "$size" --numeric f64 --threads 1 --quiet
-    run "p$n" povray "+I$tmp/g$n.pov" "+L$dir" "+O$tmp/p.png" "+W$w" "+H$h" +WT1 -D "File_Gamma=1.0" Display=off
+    for t in q f p; do
+      # the pair: one object (from the second size on), then n x n
+      for k in $( [ "$n" = 1 ] && echo "$n" || echo "1 $n"); do
+        label=$t$k; [ "$k" != "$n" ] && label=${t}1_$n
+        case $t in
+          q) run "$label" "$bin" render "$tmp/g$k.scene" -o "$tmp/o.png" --size "$size" --numeric q16 --threads 1 --quiet ;;
+          f) run "$label" "$bin" render "$tmp/g$k.scene" -o "$tmp/o.png" --size "$size" --numeric f64 --threads 1 --quiet ;;
+          p) run "$label" povray "+I$tmp/g$k.pov" "+L$dir" "+O$tmp/p.png" "+W$w" "+H$h" +WT1 -D "File_Gamma=1.0" Display=off ;;
+        esac
+      done
+    done
     i=$((i + 1))
   done
-  q=$(med "q$n" 1); f=$(med "f$n" 1); p=$(med "p$n" 1)
-  ql=$(least "q$n" 1); fl=$(least "f$n" 1); pl=$(least "p$n" 1)
-  [ "$n" = 1 ] && { q1=$q; f1=$f; p1=$p; ql1=$ql; fl1=$fl; pl1=$pl; }
-  echo "$((n * n)),$q,$f,$p,$(ratio "$q" "$q1"),$(ratio "$f" "$f1"),$(ratio "$p" "$p1"),$over,$(ratio "$ql" "$ql1"),$(ratio "$fl" "$fl1"),$(ratio "$pl" "$pl1")"
+  row="$((n * n))"
+  for t in q f p; do row="$row,$(med "$t$n" 1)"; done
+  for t in q f p; do row="$row,$(paired "$t" "$n")"; done
+  row="$row,$over"
+  for t in q f p; do row="$row,$(ratio "$(least "$t$n" 1)" "$(least1 "$t" "$n")")"; done
+  echo "$row"
 done
