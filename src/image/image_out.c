@@ -42,6 +42,28 @@ int image_out_choose(const char *name, image_out_format given, image_out_format 
     return 0;
 }
 
+/* Writes the n parts of a file (part k: len[k] bytes at data[k]) to path
+ * ("-": standard output). 0, or DIAG_IO. */
+static int image_out_parts(const char *path, const void *const *data, const size_t *len, int n, diag *err)
+{
+    outfile of;
+    int k;
+    if (!strcmp(path, "-")) {
+        for (k = 0; k < n; k++)
+            if (fwrite(data[k], 1, len[k], stdout) != len[k])
+                return diag_at(err, DIAG_IO, "standard output", 0, 0, "write failed");
+        return fflush(stdout) ? diag_at(err, DIAG_IO, "standard output", 0, 0, "write failed") : 0;
+    }
+    if (outfile_open(&of, path, err))
+        return err->status;
+    for (k = 0; k < n; k++)
+        if (outfile_write(&of, data[k], len[k], err)) {
+            outfile_abort(&of);
+            return DIAG_IO;
+        }
+    return outfile_commit(&of, err);
+}
+
 int image_out_write(const char *path, image_out_format f, const image *img, const image_meta *m,
                     diag *err)
 {
@@ -56,22 +78,24 @@ int image_out_write(const char *path, image_out_format f, const image *img, cons
             buf = tagged;
             len = tlen;
         }
-    } else {
-        char comments[IMAGE_META_MAX * (IMAGE_META_KEY + IMAGE_META_VALUE + 8)];
-        if (m)
-            image_meta_comments(m, comments, sizeof comments);
-        rc = pnm_encode(img, f == IMAGE_OUT_PAM, m ? comments : NULL, &buf, &len, err);
-    }
-    if (rc) {
+        if (!rc)
+            rc = image_out_parts(path, (const void *const *)&buf, &len, 1, err);
         mem_free(buf);
         return rc;
-    }
-    if (!strcmp(path, "-")) {
-        if (fwrite(buf, 1, len, stdout) != len || fflush(stdout) != 0)
-            rc = diag_at(err, DIAG_IO, "standard output", 0, 0, "write failed");
     } else {
-        rc = outfile_write_all(path, buf, len, err);
+        /* the header, then the raster straight from the picture: no copy
+         * of a file as large as the picture itself */
+        char comments[IMAGE_META_MAX * (IMAGE_META_KEY + IMAGE_META_VALUE + 8)];
+        char head[3 + sizeof comments + PNM_HEAD_MAX];
+        const void *part[2];
+        size_t plen[2];
+        if (m)
+            image_meta_comments(m, comments, sizeof comments);
+        if (!(plen[0] = pnm_header(img, f == IMAGE_OUT_PAM, m ? comments : NULL, head, sizeof head)))
+            return diag_at(err, DIAG_IO, path, 0, 0, "PNM header too long");
+        part[0] = head;
+        part[1] = img->px;
+        plen[1] = (size_t)img->width * (size_t)img->height * (size_t)img->channels;
+        return image_out_parts(path, part, plen, 2, err);
     }
-    mem_free(buf);
-    return rc;
 }

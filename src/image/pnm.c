@@ -225,28 +225,38 @@ int pnm_read_memory(const char *name, const void *data, size_t len, int channels
     return 0;
 }
 
+size_t pnm_header(const image *img, int pam, const char *comments, char *head, size_t cap)
+{
+    size_t cn = comments ? strlen(comments) : 0;
+    int grey = img->channels == 1, n;
+    if (cap < 3 + cn + PNM_HEAD_MAX)
+        return 0;
+    head[0] = 'P';
+    head[1] = pam ? '7' : grey ? '5' : '6';
+    head[2] = '\n';
+    memcpy(head + 3, comments ? comments : "", cn);
+    if (pam)
+        n = snprintf(head + 3 + cn, PNM_HEAD_MAX, "WIDTH %d\nHEIGHT %d\nDEPTH %d\nMAXVAL 255\n"
+                     "TUPLTYPE %s\nENDHDR\n", img->width, img->height, img->channels,
+                     grey ? "GRAYSCALE" : "RGB");
+    else
+        n = snprintf(head + 3 + cn, PNM_HEAD_MAX, "%d %d\n255\n", img->width, img->height);
+    return n > 0 && n < PNM_HEAD_MAX ? 3 + cn + (size_t)n : 0;
+}
+
 int pnm_encode(const image *img, int pam, const char *comments, void **buf, size_t *len, diag *err)
 {
-    char head[160];
-    size_t hn, cn = comments ? strlen(comments) : 0;
+    size_t cap = 3 + (comments ? strlen(comments) : 0) + PNM_HEAD_MAX, hn;
     size_t raster = (size_t)img->width * (size_t)img->height * (size_t)img->channels;
     unsigned char *o;
-    int grey = img->channels == 1;
-    if (pam)
-        hn = (size_t)snprintf(head, sizeof head, "WIDTH %d\nHEIGHT %d\nDEPTH %d\nMAXVAL 255\n"
-                              "TUPLTYPE %s\nENDHDR\n", img->width, img->height, img->channels,
-                              grey ? "GRAYSCALE" : "RGB");
-    else
-        hn = (size_t)snprintf(head, sizeof head, "%d %d\n255\n", img->width, img->height);
-    if (!(o = mem_alloc(3 + cn + hn + raster)))
+    if (!(o = mem_alloc(cap + raster)))
         return diag_at(err, DIAG_IO, "PNM", 0, 0, "out of memory");
-    o[0] = 'P';
-    o[1] = pam ? '7' : grey ? '5' : '6';
-    o[2] = '\n';
-    memcpy(o + 3, comments ? comments : "", cn);
-    memcpy(o + 3 + cn, head, hn);
-    memcpy(o + 3 + cn + hn, img->px, raster);
+    if (!(hn = pnm_header(img, pam, comments, (char *)o, cap))) {
+        mem_free(o);
+        return diag_at(err, DIAG_IO, "PNM", 0, 0, "header too long");
+    }
+    memcpy(o + hn, img->px, raster);
     *buf = o;
-    *len = 3 + cn + hn + raster;
+    *len = hn + raster;
     return 0;
 }

@@ -34,9 +34,16 @@ int pnm_read_header(const char *name, const void *data, size_t len, pnm_info *in
 int pnm_read_memory(const char *name, const void *data, size_t len, int channels,
                     image *out, diag *err);
 
-/* Encodes img (1 or 3 channels) as binary PGM/PPM (P5/P6, maxval 255) or,
- * with pam, as PAM (P7, TUPLTYPE GRAYSCALE or RGB). comments, if not NULL,
- * is inserted after the magic: lines that each start with '#'. *buf
+/* The header of img (1 or 3 channels) as binary PGM/PPM (P5/P6, maxval
+ * 255) or, with pam, as PAM (P7, TUPLTYPE GRAYSCALE or RGB), into head
+ * (cap bytes, PNM_HEAD_MAX more than the comments need): the file is that
+ * header, then img->px as it is, so a writer streams the raster from the
+ * picture without a copy of it. comments, if not NULL, is inserted after
+ * the magic: lines that each start with '#'. Its length, or 0 when head is
+ * too small. */
+#define PNM_HEAD_MAX 160
+size_t pnm_header(const image *img, int pam, const char *comments, char *head, size_t cap);
+/* The whole file as pnm_header and the raster describe it, in memory: *buf
  * (mem_free it) and *len; DIAG_IO when out of memory. */
 int pnm_encode(const image *img, int pam, const char *comments, void **buf, size_t *len, diag *err);
 #endif

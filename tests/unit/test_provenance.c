@@ -2,7 +2,8 @@
  * conventions: SHA-256 against the FIPS 180-4 example vectors (and a long
  * input crossing block boundaries in odd pieces), tEXt chunks read back by
  * libpng's own reader (which checks their CRCs), PPM/PAM encodings read back
- * by the PNM reader, and the edit distance behind "did you mean". */
+ * by the PNM reader, the files image_out streams against those encodings,
+ * and the edit distance behind "did you mean". */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -11,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "image/image_meta.h"
 #include "image/image_out.h"
 #include "image/image_png.h"
@@ -199,6 +201,47 @@ static void test_provenance_pnm_roundtrip(void **state)
     }
 }
 
+/* The files image_out_write streams (the header, then the raster straight
+ * from the picture) hold byte for byte what pnm_encode builds in memory,
+ * provenance comments included; a header with no room for itself is
+ * refused (0), not cut. */
+static void test_provenance_pnm_streamed(void **state)
+{
+    char dir[] = "/tmp/maprt-pnm-XXXXXX", path[64], comments[4096], small[16];
+    image img;
+    image_meta m;
+    void *buf;
+    size_t len, flen;
+    diag err;
+    int c, pam, x;
+    (void)state;
+    assert_non_null(mkdtemp(dir));
+    image_meta_init(&m);
+    image_meta_add(&m, "maprt:deck", "%s", "streamed.scene");
+    image_meta_comments(&m, comments, sizeof comments);
+    for (c = 1; c <= 3; c += 2)
+        for (pam = 0; pam <= 1; pam++) {
+            char *file;
+            diag_init(&err);
+            assert_int_equal(image_alloc(&img, 5, 3, c, "t", &err), 0);
+            for (x = 0; x < 15 * c; x++)
+                img.px[x] = (uint8_t)(x * 53 + 7);
+            snprintf(path, sizeof path, "%s/p.%s", dir, pam ? "pam" : "ppm");
+            assert_int_equal(image_out_write(path, pam ? IMAGE_OUT_PAM : IMAGE_OUT_PPM, &img, &m, &err), 0);
+            assert_int_equal(pnm_encode(&img, pam, comments, &buf, &len, &err), 0);
+            file = test_read_file(path, &flen);
+            assert_non_null(file);
+            assert_int_equal(flen, len);
+            assert_memory_equal(file, buf, len);
+            assert_int_equal(pnm_header(&img, pam, comments, small, sizeof small), 0);
+            mem_free(file);
+            mem_free(buf);
+            assert_int_equal(unlink(path), 0);
+            image_free(&img);
+        }
+    assert_int_equal(rmdir(dir), 0);
+}
+
 static void test_provenance_output_names(void **state)
 {
     image_out_format f;
@@ -246,6 +289,7 @@ int main(void)
         cmocka_unit_test(test_provenance_sha256_block_edges),
         cmocka_unit_test(test_provenance_png_text),
         cmocka_unit_test(test_provenance_pnm_roundtrip),
+        cmocka_unit_test(test_provenance_pnm_streamed),
         cmocka_unit_test(test_provenance_output_names),
         cmocka_unit_test(test_provenance_suggest),
     };
