@@ -1111,7 +1111,7 @@ VEC_HOT int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
          * objects instead of walking (where the buffer answers for it) */
         if (q->lb && q->lb->start) {
             const int *item;
-            double d[3];
+            double d[3], reach;
             int m, i;
             q->st->bound_tests += 2;
             if (bbox_miss2(nodes[k].lo, nodes[k].hi, &rb, q->tmax_d, tin) == 3) {
@@ -1120,8 +1120,17 @@ VEC_HOT int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
             }
             vec3_to_d(q->r->d, d);
             if (lightbuf_lookup(q->lb, q->r->b.o, d, q->tmax_d, q->any, &item, &m)) {
+                /* the cell's boxes come nearest the point first: from the
+                 * first one beyond the ray's reach on, none holds a point
+                 * of it (a hit's point lies in its object's box) */
+                reach = lightbuf_ray_far(q->lb, q->r->b.o, d, q->tmax_d, q->any);
                 for (i = -q->lb->nnear; i < m; i++) {   /* the near list, then the cell */
                     int ob = i < 0 ? q->lb->near[~i] : item[i];
+                    double tmax_d = q->tmax_d;
+                    if (i >= 0 && q->lb->far[ob] > reach) {
+                        q->st->pruned += m - i;
+                        break;
+                    }
                     q->st->bound_tests++;
                     if (bbox_miss(c->olo[ob], c->ohi[ob], &q->r->b, 0, q->tmax_d, &tin[0])) {
                         q->st->pruned++;
@@ -1130,6 +1139,8 @@ VEC_HOT int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
                     csg_object(q, ob, 1, best, found);
                     if (q->any && *found)
                         return 1;
+                    if (q->tmax_d < tmax_d)             /* a hit: the reach shrinks */
+                        reach = lightbuf_ray_far(q->lb, q->r->b.o, d, q->tmax_d, q->any);
                 }
                 return 0;
             }

@@ -62,6 +62,17 @@ static int lightbuf_is_near(const lightbuf *lb, const double lo[3], const double
     return near;
 }
 
+/* The square root of d2, a box's squared distance from the point as the
+ * build forms it, as a float no greater than the distance itself: made
+ * smaller by 2^-20 of itself, far more than the rounding of d2 and of the
+ * root, then rounded down. */
+static float lightbuf_down(double d2)
+{
+    double v = sqrt(d2) * (1 - 0x1p-20);
+    float f = (float)v;
+    return (double)f > v ? nextafterf(f, 0.0f) : f;
+}
+
 /* The cells of face r->f that rect r covers: [c[0], c[1]] x [c[2], c[3]].
  * A cell is the floor of a coordinate clamped to [0, n], which truncation
  * gives. */
@@ -137,6 +148,8 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     first = s->first;
     key = s->key;
     cell = s->cell;
+    if (!(lb->far = mem_alloc((n ? n : 1) * sizeof *lb->far)))
+        goto done;
     for (f = 0; f < 6; f++) {
         ext[f][0] = ext[f][2] = HUGE_VAL;
         ext[f][1] = ext[f][3] = -HUGE_VAL;
@@ -151,6 +164,7 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
             d2 += g * g;
         }
         key[i] = radix_key_d(d2);
+        lb->far[i] = lightbuf_down(d2);
         first[i] = (int)nr;
         if (lightbuf_is_near(lb, lo[i], hi[i])) {
             rc[nr++].f = -1;
@@ -240,7 +254,9 @@ void lightbuf_free(lightbuf *lb)
 {
     mem_free(lb->start);
     mem_free(lb->item);
+    mem_free(lb->far);
     mem_free(lb->near);
     lb->start = lb->item = lb->near = NULL;
+    lb->far = NULL;
     lb->nnear = 0;
 }

@@ -18,6 +18,7 @@
 #ifndef UTIL_LIGHTBUF_H
 #define UTIL_LIGHTBUF_H
 #include <stddef.h>
+#include <math.h>
 #include <stdint.h>
 
 typedef struct lightbuf {
@@ -30,6 +31,12 @@ typedef struct lightbuf {
     int *start;              /* cell c's items are item[start[c] ..
                                 start[c + 1] - 1] */
     int *item;
+    float *far;              /* per box: its distance from the point,
+                                rounded down. A cell lists its boxes
+                                nearest first, so a ray that comes no
+                                farther from the point than lightbuf_ray_far
+                                says meets none from the first one farther
+                                on */
     int *near;               /* the boxes near the light, which every
                                 direction can meet: nnear of them */
     int nnear;
@@ -109,5 +116,27 @@ static inline int lightbuf_lookup(const lightbuf *lb, const double o[3], const d
     *items = lb->item + lb->start[cell];
     *n = lb->start[cell + 1] - lb->start[cell];
     return 1;
+}
+
+/* How far from the point any point of the ray from o along d over
+ * parameters [0, tmax] lies at most, a little more (relative 2^-30, far
+ * above the rounding here): |o - point| + tmax |d| for a ray leaving it,
+ * and for one going to it (`toward`) the larger of its ends' distances,
+ * a segment's distance from a point being convex. A box in the ray's list
+ * whose distance (lightbuf.far) is greater holds no point of the ray:
+ * neither it nor any listed after it needs testing. */
+static inline double lightbuf_ray_far(const lightbuf *lb, const double o[3], const double d[3], double tmax,
+                                    int toward)
+{
+    double r0 = 0, r1 = 0, dd = 0, reach;
+    int k;
+    for (k = 0; k < 3; k++) {
+        double a = o[k] - lb->at[k], b = a + tmax * d[k];
+        r0 += a * a;
+        r1 += b * b;
+        dd += d[k] * d[k];
+    }
+    reach = toward ? sqrt(r0 > r1 ? r0 : r1) : sqrt(r0) + tmax * sqrt(dd);
+    return reach * (1 + 0x1p-30);
 }
 #endif

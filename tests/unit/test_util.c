@@ -256,7 +256,10 @@ static int util_segment_meets(const double *o, const double *d, double tmax, con
  * through the light, some around the light itself) and rays that pass the
  * light at up to about the boxes' growth: to the light from anywhere
  * (stopping short of it or past it) and away from it. Where the lookup
- * answers, every box the segment meets is in the cell's list, once; it
+ * answers, every box the segment meets is in the cell's list, once, and
+ * before the first whose distance from the light (lightbuf.far, ascending
+ * and no greater than the box's own) exceeds the ray's reach
+ * (lightbuf_ray_far), where csg_nearest stops reading the list; it
  * answers whenever the ray passes within 0.99 of grow / 2 and stops (or
  * starts) within as much of its closest point, and never beyond 1.01 of
  * it. A buffer whose cells would hold too many entries is not built and
@@ -267,7 +270,7 @@ static void test_util_lightbuf_lists_every_box_a_ray_meets(void **state)
     static double lo[N][3], hi[N][3];
     static int listed[N];
     uint64_t s = test_seed("test_util_lightbuf_lists_every_box_a_ray_meets");
-    long answered = 0, met = 0, refused = 0, unbuilt = 0;
+    long answered = 0, met = 0, refused = 0, unbuilt = 0, cuts = 0;
     lightbuf_scratch scratch;              /* shared by the builds, as the
                                               scene compiler's; grows with n */
     int trial;
@@ -298,7 +301,7 @@ static void test_util_lightbuf_lists_every_box_a_ray_meets(void **state)
         assert_true(built == 0 || built == 1);
         unbuilt += built;                  /* too many entries: no buffer */
         for (k = 0; k < RAYS; k++) {
-            int toward = k % 2 == 0, m = 0, got, j;
+            int toward = k % 2 == 0, m = 0, got, j, cut;
             const int *item = NULL;
             double o[3], d[3], u[3], len = 0, off, tmax, p[3], dd = 0, rd = 0, c2 = 0, ts, gap;
             for (a = 0; a < 3; a++)
@@ -353,26 +356,40 @@ static void test_util_lightbuf_lists_every_box_a_ray_meets(void **state)
                 continue;
             }
             answered++;
+            /* listed: 1 before the cut lightbuf_ray_far allows, 2 after;
+             * the distances ascend and bound each box's own */
             memset(listed, 0, sizeof listed);
-            for (j = -lb.nnear; j < m; j++) {
+            for (j = -lb.nnear, cut = 0; j < m; j++) {
                 int b = j < 0 ? lb.near[~j] : item[j];
                 assert_true(b >= 0 && b < (int)n);
-                assert_int_equal(listed[b]++, 0);
+                assert_int_equal(listed[b], 0);
+                if (j >= 0) {
+                    double g2 = 0;
+                    for (a = 0; a < 3; a++) {
+                        double g = lo[b][a] > at[a] ? lo[b][a] - at[a] : at[a] > hi[b][a] ? at[a] - hi[b][a] : 0;
+                        g2 += g * g;
+                    }
+                    assert_true((double)lb.far[b] <= sqrt(g2));
+                    assert_true(j == 0 || lb.far[item[j - 1]] <= lb.far[b]);
+                    cut |= lb.far[b] > lightbuf_ray_far(&lb, o, d, tmax, toward);
+                }
+                listed[b] = 1 + cut;
+                cuts += cut;
             }
             for (i = 0; i < (int)n; i++)
                 if (util_segment_meets(o, d, tmax, lo[i], hi[i])) {
                     met++;
-                    if (!listed[i])
+                    if (listed[i] != 1)
                         fail_msg("trial %d ray %d: box %d met (line %.3g from the light, grow %.3g) "
-                                 "but not listed", trial, k, i, sqrt(c2), grow);
+                                 "but %s", trial, k, i, sqrt(c2), grow, listed[i] ? "past the cut" : "not listed");
                 }
         }
         lightbuf_free(&lb);
     }
     lightbuf_scratch_free(&scratch);
-    print_message("lightbuf: %ld of 24 buffers built, %ld rays answered, %ld refused, %ld boxes met\n",
-                  24 - unbuilt, answered, refused, met);
-    assert_true(unbuilt <= 8 && answered > 20000 && refused > 2000 && met > 20000);
+    print_message("lightbuf: %ld of 24 buffers built, %ld rays answered, %ld refused, %ld boxes met, "
+                  "%ld listed past the cut\n", 24 - unbuilt, answered, refused, met, cuts);
+    assert_true(unbuilt <= 8 && answered > 20000 && refused > 2000 && met > 20000 && cuts > 1000);
     for (trial = 0; trial < 4; trial++) {
         lightbuf lb;
         double at[3] = {0, 0, 0};
