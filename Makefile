@@ -217,11 +217,20 @@ check-rsqrt: $(BUILD)/tools/rsqrt_bound
 bench-peers: deps all $(BUILD)/bench/minimal $(if $(ISA_V3),$(BUILD)/bench/minimal-v3) $(BUILD)/bench/cputime
 	@sh bench/peers/run.sh $(BIN) $(BUILD)/bench/minimal $(BUILD)/bench/cputime
 
-.PHONY: bench-grow
-bench-grow: deps-bench all $(BUILD)/bench/cputime
+.PHONY: bench-grow bench-phases
+# $(call grow_decks,SCRIPT): SCRIPT (bench/peers) on the three decks of
+# grow.sh, each table under its name
+define grow_decks
 	@echo "grid of parts alike:"
-	@sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime
+	@sh bench/peers/$(1) $(BIN) $(BUILD)/bench/cputime
 	@echo "parts turned each its own way (GROW_TURN=1):"
-	@GROW_TURN=1 sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime
+	@GROW_TURN=1 sh bench/peers/$(1) $(BIN) $(BUILD)/bench/cputime
 	@echo "parts turned and each of a size of its own, none a copy (GROW_TURN=1 GROW_VARY=1):"
-	@GROW_TURN=1 GROW_VARY=1 sh bench/peers/grow.sh $(BIN) $(BUILD)/bench/cputime
+	@GROW_TURN=1 GROW_VARY=1 sh bench/peers/$(1) $(BIN) $(BUILD)/bench/cputime
+endef
+
+bench-grow: deps-bench all $(BUILD)/bench/cputime
+	$(call grow_decks,grow.sh)
+
+bench-phases: deps-bench all $(BUILD)/bench/cputime
+	$(call grow_decks,phases.sh)

@@ -5,7 +5,8 @@
 # writes bench-grow's n x n deck, which maprt reads, and --pov N its
 # POV-Ray scene (with GROW_TURN=1 each part turned its own way, the deck
 # within 72 columns); both refuse a bad N and a file they read as the
-# output.
+# output. bench/peers/phases.sh, run against a stand-in for POV-Ray that
+# prints its phase times, reports them and their growth per phase.
 # Exit 77 (skipped) without a C compiler.
 set -u
 cc=${CC:-cc}
@@ -54,4 +55,23 @@ done
 err=$(CPUTIME="$tmp/cputime" sh tools/ab.sh x "$MAPRT" "$MAPRT" --version 2>&1 >/dev/null) \
   && fail "tools/ab.sh took a count that is not one"
 printf '%s\n' "$err" | grep -q "N must be a count" || fail "tools/ab.sh on a bad count: $err"
-echo "ok: cputime's record, tools/ab.sh, grow.sh --deck and --pov"
+mkdir "$tmp/bin"
+cat > "$tmp/bin/povray" <<'POV'
+#!/bin/sh
+# stands in for POV-Ray 3.7: its statistics' phase lines on standard error,
+# 1 x 1 parts parsed in 0.010 s and bounded at once, 2 x 2 in 0.030 + 0.002
+case $1 in *g1.pov) p=0.010 b=0.000 t=0.300 ;; *) p=0.030 b=0.002 t=0.330 ;; esac
+echo "  Parse Time:       0 hours  0 minutes  0 seconds ($p seconds)" >&2
+echo "  Bounding Time:    0 hours  0 minutes  0 seconds ($b seconds)" >&2
+echo "  Trace Time:       0 hours  0 minutes  0 seconds ($t seconds)" >&2
+POV
+chmod +x "$tmp/bin/povray"
+out=$(PATH="$tmp/bin:$PATH" PHASES_N=2 PHASES_RUNS=1 GROW_SIZE=16x12 sh bench/peers/phases.sh "$MAPRT" "$tmp/cputime") \
+  || fail "phases.sh failed: $out"
+printf '%s\n' "$out" | grep -q '^load,4,[0-9.]*,[0-9.]*,0.0100,0.0320,[0-9.]*,3.20,[-0-9.]*,7333.33$' \
+  || fail "phases.sh's load row: $out"
+printf '%s\n' "$out" | grep -q '^render,4,[0-9.]*,[0-9.]*,0.3000,0.3300,[0-9.]*,1.10,[-0-9.]*,10000.00$' \
+  || fail "phases.sh's render row: $out"
+PATH="$tmp/bin:$PATH" PHASES_N=1 sh bench/peers/phases.sh "$MAPRT" "$tmp/cputime" 2>/dev/null \
+  && fail "phases.sh took PHASES_N=1"
+echo "ok: cputime's record, tools/ab.sh, grow.sh --deck and --pov, phases.sh"
