@@ -52,7 +52,7 @@ static prim_twin_entry *prim_twin_table(size_t cap)
 int prim_twin_init(prim_twin *t)
 {
     t->mask = 15;
-    t->used = 0;
+    t->used = t->looked = t->met = 0;
     return (t->e = prim_twin_table(t->mask + 1)) ? 0 : -1;
 }
 
@@ -62,13 +62,21 @@ void prim_twin_free(prim_twin *t)
     t->e = NULL;
 }
 
-prim_twin_entry *prim_twin_at(const prim_twin *t, const scene_prim *prims, const scene_prim *sp)
+prim_twin_entry *prim_twin_at(prim_twin *t, const scene_prim *prims, const scene_prim *sp)
 {
-    uint64_t h = prim_twin_hash(sp);
-    size_t i = (size_t)h & t->mask;
+    uint64_t h;
+    size_t i;
+    if (t->e && t->looked >= PRIM_TWIN_TRIAL && t->met < t->looked / PRIM_TWIN_RARE)
+        prim_twin_free(t);
+    if (!t->e)
+        return NULL;
+    h = prim_twin_hash(sp);
+    i = (size_t)h & t->mask;
     while (t->e[i].index != PRIM_TWIN_NONE
            && (t->e[i].hash != (uint32_t)h || !prim_twin_same(&prims[t->e[i].index], sp)))
         i = (i + 1) & t->mask;
+    t->looked++;
+    t->met += t->e[i].index != PRIM_TWIN_NONE;
     return &t->e[i];
 }
 

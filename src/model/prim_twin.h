@@ -26,10 +26,23 @@ typedef struct prim_twin_entry {
 } prim_twin_entry;
 
 typedef struct prim_twin {
-    prim_twin_entry *e;
+    prim_twin_entry *e;        /* NULL once closed */
     size_t mask;               /* entries - 1, a power of two less one */
     size_t used;               /* entries filled, at most half of them */
+    size_t looked, met;        /* lookups, and those that found a twin */
 } prim_twin;
+
+/* The index closes where twins are rare: once PRIM_TWIN_TRIAL primitives
+ * have been looked up and fewer than one in PRIM_TWIN_RARE of them found
+ * a twin, it frees its table and every later lookup answers NULL. The
+ * rest are then compiled on their own, to the same bits (a twin hands on
+ * only what the same kind, dimensions and linear part give). Open, the
+ * table of 10,000 distinct parts grows to 2 MiB and each lookup misses
+ * the cache: 5 to 9 % of the load (docs/performance.md, run AS). A deck
+ * whose copies all come after that many distinct primitives compiles
+ * those copies on their own too: more work, the same picture. */
+#define PRIM_TWIN_TRIAL 4096
+#define PRIM_TWIN_RARE 16
 
 /* 1 when a and b are twins: kind, dimensions and the linear part of
  * world_from_object alike bit for bit. */
@@ -46,8 +59,9 @@ void prim_twin_free(prim_twin *t);
 
 /* The entry of sp among primitives of prims: an earlier primitive's, whose
  * kind, dimensions and linear part are sp's bit for bit, or the empty one
- * where sp belongs, which prim_twin_add fills to enter sp. */
-prim_twin_entry *prim_twin_at(const prim_twin *t, const scene_prim *prims, const scene_prim *sp);
+ * where sp belongs, which prim_twin_add fills to enter sp; NULL once the
+ * index has closed (it counts the lookup first). */
+prim_twin_entry *prim_twin_at(prim_twin *t, const scene_prim *prims, const scene_prim *sp);
 
 /* Enters primitive `index` of prims with its note in e, the empty entry
  * prim_twin_at gave for it; an index of PRIM_TWIN_NONE or more is not

@@ -520,7 +520,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     const scene_view *v = &sc->view;
     double fwd[3], d[3];
     size_t i, npl = 0, nlin = 0, nown = 0, ninst = 0;
-    prim_twin tw = {NULL, 0, 0};
+    prim_twin tw = {NULL, 0, 0, 0, 0};
     prim_lin *lin = NULL;
     int status = DIAG_IO;
 
@@ -604,7 +604,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
             continue;
         }
         e = prim_twin_at(&tw, sc->prims, sp);
-        known = e->index != PRIM_TWIN_NONE;
+        known = e && e->index != PRIM_TWIN_NONE;
         radius = known ? e->note : 0;
         if (!known && !(lin = cscene_lin_room(cs, nlin))) {
             status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
@@ -615,7 +615,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
                                        &cs->prims[i], cscene_file(sc), err)))
             goto fail;
         if (!known) {
-            if (prim_twin_add(&tw, sc->prims, e, i, radius)) {
+            if (e && prim_twin_add(&tw, sc->prims, e, i, radius)) {
                 status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
                 goto fail;
             }

@@ -669,6 +669,51 @@ static void test_cscene_twins_index_grows(void **state)
     test_free(p);
 }
 
+/* The index closes where twins are rare: PRIM_TWIN_TRIAL distinct
+ * primitives are each looked up and entered, and the next lookup answers
+ * NULL, its table freed; where one primitive in eight is a twin of the
+ * one before it, the index stays open and finds every such twin. */
+static void test_cscene_twins_index_closes(void **state)
+{
+    enum { N = 2 * PRIM_TWIN_TRIAL };
+    scene_prim *p = test_calloc(N + 1, sizeof *p);
+    prim_twin tw;
+    int i, pass;
+    (void)state;
+    for (pass = 0; pass < 2; pass++) {
+        size_t found = 0;
+        for (i = 0; i <= N; i++) {
+            /* pass 1: primitive 8k + 7 repeats primitive 8k + 6 */
+            int v = pass && i % 8 == 7 ? i - 1 : i;
+            memset(&p[i], 0, sizeof p[i]);
+            p[i].kind = PRIM_SPHERE;
+            p[i].dim[0] = 1 + v / 1024.0;
+            p[i].world_from_object[0] = p[i].world_from_object[5] = p[i].world_from_object[10] = 1;
+            p[i].world_from_object[3] = i;
+        }
+        assert_int_equal(prim_twin_init(&tw), 0);
+        for (i = 0; i < N; i++) {
+            prim_twin_entry *e = prim_twin_at(&tw, p, &p[i]);
+            if (!pass && i >= PRIM_TWIN_TRIAL) {
+                assert_null(e);
+                assert_null(tw.e);
+                continue;
+            }
+            assert_non_null(e);
+            if (e->index != PRIM_TWIN_NONE) {
+                assert_int_equal(e->index, i - 1);
+                found++;
+                continue;
+            }
+            assert_int_equal(prim_twin_add(&tw, p, e, (size_t)i, 0), 0);
+        }
+        assert_int_equal(found, pass ? N / 8 : 0);
+        prim_twin_free(&tw);
+        prim_twin_free(&tw);              /* closed or freed: a no-op */
+    }
+    test_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -681,6 +726,7 @@ int main(void)
         cmocka_unit_test(test_cscene_twins_compile_alike),
         cmocka_unit_test(test_cscene_twins_bit_for_bit),
         cmocka_unit_test(test_cscene_twins_index_grows),
+        cmocka_unit_test(test_cscene_twins_index_closes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
