@@ -405,20 +405,30 @@ static int cscene_lights(cscene *cs, diag *err)
     return status ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
 }
 
+/* Linear parts a block holds from the fourth block on: as many as fill
+ * two huge pages with the allocator's header (util/mem.h). */
+#define CSCENE_LIN_BIG ((2 * (size_t)MEM_HUGE_PAGE - 2 * (size_t)MEM_HUGE_SLACK) / sizeof(prim_lin))
+
 /* Room for linear part k (the next one), in a new block when the last is
- * full: a grid of copies of one part needs a few of nprims, and a block
- * of room for them all would be touched at its start alone. NULL when
- * memory runs out. */
+ * full: blocks of CSCENE_LIN_BLOCK parts, 8 times more in each next one,
+ * then CSCENE_LIN_BIG a block. A grid of copies of one part needs a few of
+ * nprims and touches the first block alone; 10,000 distinct parts need
+ * 50,000, most of them in blocks large enough for huge pages, where blocks
+ * of 64 each took 1,800 faults of 4 KiB (docs/performance.md, run AS).
+ * NULL when memory runs out. */
 static prim_lin *cscene_lin_room(cscene *cs, size_t k)
 {
-    if (k % CSCENE_LIN_BLOCK == 0) {
+    if (k == cs->lin_end) {
+        size_t n = cs->nlin_blk < 3 ? (size_t)CSCENE_LIN_BLOCK << 3 * cs->nlin_blk : CSCENE_LIN_BIG;
         prim_lin *b;
         if (mem_grow((void **)&cs->lin_blk, &cs->cap_lin_blk, cs->nlin_blk + 1, sizeof *cs->lin_blk)
-            || !(b = mem_alloc(CSCENE_LIN_BLOCK * sizeof *b)))
+            || !(b = mem_alloc(n * sizeof *b)))
             return NULL;
         cs->lin_blk[cs->nlin_blk++] = b;
+        cs->lin_start = k;
+        cs->lin_end = k + n;
     }
-    return &cs->lin_blk[k / CSCENE_LIN_BLOCK][k % CSCENE_LIN_BLOCK];
+    return &cs->lin_blk[cs->nlin_blk - 1][k - cs->lin_start];
 }
 
 /* The objects traced as translated or turned copies of an earlier one

@@ -15,7 +15,9 @@
 #define CSCENE_MAX_PLANES 64  /* half-spaces a primary ray is advanced over */
 #define CSCENE_LBUF_MIN 8      /* bounded objects for a light buffer */
 #define CSCENE_LBUF_GROW (1.0 / 32)   /* its boxes' growth, normalised world */
-#define CSCENE_LIN_BLOCK 64    /* linear parts a block (cscene.lin_blk) */
+#define CSCENE_LIN_BLOCK 64    /* linear parts in the first block
+                                  (cscene.lin_blk), 8 times more in each
+                                  next one, up to CSCENE_LIN_BIG */
 
 typedef struct cscene_light {
     vec3 pos;                 /* normalised world */
@@ -56,10 +58,11 @@ typedef struct cscene {
                                          and turned (render --stats) */
     int *prim_root;
     prim_lin **lin_blk;            /* the distinct linear parts (twins share
-                                      one), CSCENE_LIN_BLOCK a block, in
-                                      nlin_blk blocks allocated as they
-                                      fill: the frames point into them */
+                                      one), in nlin_blk blocks allocated
+                                      as they fill (cscene_lin_room): the
+                                      frames point into them */
     size_t nlin_blk, cap_lin_blk;
+    size_t lin_start, lin_end;     /* the parts the last block holds */
     csg tree;
     cscene_light *lights;
     size_t nlights;
