@@ -60,7 +60,7 @@ void prim_twin_free(prim_twin *t);
 /* The entry of sp among primitives of prims: an earlier primitive's, whose
  * kind, dimensions and linear part are sp's bit for bit, or the empty one
  * where sp belongs, which prim_twin_add fills to enter sp; NULL once the
- * index has closed (it counts the lookup first). */
+ * index has closed. Each answered lookup is counted towards closing. */
 prim_twin_entry *prim_twin_at(prim_twin *t, const scene_prim *prims, const scene_prim *sp);
 
 /* Enters primitive `index` of prims with its note in e, the empty entry

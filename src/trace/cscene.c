@@ -419,7 +419,7 @@ static int cscene_lights(cscene *cs, diag *err)
 static prim_lin *cscene_lin_room(cscene *cs, size_t k)
 {
     if (k == cs->lin_end) {
-        size_t n = cs->nlin_blk < 3 ? (size_t)CSCENE_LIN_BLOCK << 3 * cs->nlin_blk : CSCENE_LIN_BIG;
+        size_t n = cs->nlin_blk < 3 ? (size_t)CSCENE_LIN_BLOCK << (3 * cs->nlin_blk) : CSCENE_LIN_BIG;
         prim_lin *b;
         if (mem_grow((void **)&cs->lin_blk, &cs->cap_lin_blk, cs->nlin_blk + 1, sizeof *cs->lin_blk)
             || !(b = mem_alloc(n * sizeof *b)))
