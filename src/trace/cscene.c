@@ -405,30 +405,46 @@ static int cscene_lights(cscene *cs, diag *err)
     return status ? diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene") : 0;
 }
 
-/* Linear parts a block holds from the fourth block on: as many as fill
- * two huge pages with the allocator's header (util/mem.h). */
-#define CSCENE_LIN_BIG ((2 * (size_t)MEM_HUGE_PAGE - 2 * (size_t)MEM_HUGE_SLACK) / sizeof(prim_lin))
-
-/* Room for linear part k (the next one), in a new block when the last is
- * full: blocks of CSCENE_LIN_BLOCK parts, 8 times more in each next one,
- * then CSCENE_LIN_BIG a block. A grid of copies of one part needs a few of
- * nprims and touches the first block alone; 10,000 distinct parts need
- * 50,000, most of them in blocks large enough for huge pages, where blocks
- * of 64 each took 1,800 faults of 4 KiB (docs/performance.md, run AS).
- * NULL when memory runs out. */
-static prim_lin *cscene_lin_room(cscene *cs, size_t k)
+/* The offset of an array of count elements of size bytes at *at, which
+ * moves past it to the next 64-byte boundary; SIZE_MAX, there and on,
+ * once the sizes overflow. */
+static size_t cscene_carve(size_t *at, size_t count, size_t size)
 {
-    if (k == cs->lin_end) {
-        size_t n = cs->nlin_blk < 3 ? (size_t)CSCENE_LIN_BLOCK << (3 * cs->nlin_blk) : CSCENE_LIN_BIG;
-        prim_lin *b;
-        if (mem_grow((void **)&cs->lin_blk, &cs->cap_lin_blk, cs->nlin_blk + 1, sizeof *cs->lin_blk)
-            || !(b = mem_alloc(n * sizeof *b)))
-            return NULL;
-        cs->lin_blk[cs->nlin_blk++] = b;
-        cs->lin_start = k;
-        cs->lin_end = k + n;
-    }
-    return &cs->lin_blk[cs->nlin_blk - 1][k - cs->lin_start];
+    size_t start = *at;
+    if (start == SIZE_MAX || (size && count > (SIZE_MAX - 2 * MEM_LINE - start) / size))
+        return *at = SIZE_MAX;
+    *at = (start + count * size + MEM_LINE - 1) & ~(size_t)(MEM_LINE - 1);
+    return start;
+}
+
+/* The compiled primitives' arrays in one block (cscene.prim_mem), each
+ * from a 64-byte boundary: n primitives, npl planes (in num and, apart
+ * from them outside binary64, in double), n frames, n face rows, and
+ * room for n linear parts, last, so that the room twins leave unused is
+ * never touched. A large block is rounded up to whole huge pages once,
+ * where five arrays were each (docs/performance.md, run AT); room is
+ * mem_calloc, or mem_calloc_sparse where instances leave most of it
+ * unwritten. 0, or -1 when memory runs out or the sizes overflow. */
+static int cscene_prim_room(cscene *cs, size_t n, size_t npl, void *(*room)(size_t, size_t))
+{
+    size_t at = 0, o_pl, o_pl_d, o_fr, o_row, o_lin;
+    unsigned char *b;
+    (void)cscene_carve(&at, n, sizeof *cs->prims);
+    o_pl = cscene_carve(&at, npl, sizeof *cs->prim_pl);
+    o_pl_d = PRIM_PL_SHARED ? o_pl : cscene_carve(&at, npl, sizeof *cs->prim_pl_d);
+    o_fr = cscene_carve(&at, n, sizeof *cs->prim_fr);
+    o_row = cscene_carve(&at, n, sizeof *cs->face_row);
+    o_lin = cscene_carve(&at, n, sizeof *cs->lins);
+    if (at == SIZE_MAX || !(cs->prim_mem = room(1, at + MEM_LINE)))
+        return -1;
+    b = mem_align_line(cs->prim_mem);
+    cs->prims = (prim *)(void *)b;
+    cs->prim_pl = (prim_plane *)(void *)(b + o_pl);
+    cs->prim_pl_d = (double (*)[4])(void *)(b + o_pl_d);
+    cs->prim_fr = (prim_frame *)(void *)(b + o_fr);
+    cs->face_row = (size_t *)(void *)(b + o_row);
+    cs->lins = (prim_lin *)(void *)(b + o_lin);
+    return 0;
 }
 
 /* The objects traced as translated or turned copies of an earlier one
@@ -531,7 +547,6 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     double fwd[3], d[3];
     size_t i, npl = 0, nlin = 0, nown = 0, ninst = 0;
     prim_twin tw = {NULL, 0, 0, 0, 0};
-    prim_lin *lin = NULL;
     int status = DIAG_IO;
 
     if (!cscene_finite3(v->eye) || !cscene_finite3(v->look) || !cscene_finite3(v->up)
@@ -579,14 +594,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
     if (sc->nprims) {
         /* where instances leave most primitives uncompiled, their arrays
          * are mostly never written: small pages (mem_calloc_sparse) */
-        void *(*room)(size_t, size_t) = 2 * ninst > sc->nprims ? mem_calloc_sparse : mem_calloc;
-        cs->prims = room(sc->nprims, sizeof *cs->prims);
-        cs->prim_pl = room(npl ? npl : 1, sizeof *cs->prim_pl);
-        cs->prim_pl_d = PRIM_PL_SHARED ? (double (*)[4])cs->prim_pl
-                                       : room(npl ? npl : 1, sizeof *cs->prim_pl_d);
-        cs->prim_fr = room(sc->nprims, sizeof *cs->prim_fr);
-        cs->face_row = mem_calloc(sc->nprims, sizeof *cs->face_row);
-        if (!cs->prims || !cs->prim_pl || !cs->prim_pl_d || !cs->prim_fr || !cs->face_row) {
+        if (cscene_prim_room(cs, sc->nprims, npl, 2 * ninst > sc->nprims ? mem_calloc_sparse : mem_calloc)) {
             diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
             goto fail;
         }
@@ -616,12 +624,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         e = prim_twin_at(&tw, sc->prims, sp);
         known = e && e->index != PRIM_TWIN_NONE;
         radius = known ? e->note : 0;
-        if (!known && !(lin = cscene_lin_room(cs, nlin))) {
-            status = diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
-            goto fail;
-        }
         if ((status = NS(prim_compile)(sp, (int)i, &cs->nm, cs->prim_pl + npl, cs->prim_pl_d + npl, cs->prim_fr + i,
-                                       known ? NULL : lin, known ? &cs->prims[e->index] : NULL, &radius,
+                                       known ? NULL : cs->lins + nlin, known ? &cs->prims[e->index] : NULL, &radius,
                                        &cs->prims[i], cscene_file(sc), err)))
             goto fail;
         if (!known) {
@@ -700,19 +704,11 @@ void NS(cscene_free)(cscene *cs)
         NS(pds_free)(cs->maps[i]);
     mem_free(cs->maps);
     mem_free(cs->faces);
-    mem_free(cs->face_row);
     NS(csg_free)(&cs->tree);
-    mem_free(cs->prims);
-    mem_free(cs->prim_pl);
-    if (!PRIM_PL_SHARED)
-        mem_free(cs->prim_pl_d);
-    mem_free(cs->prim_fr);
+    mem_free(cs->prim_mem);
     mem_free(cs->prim_root);
     mem_free(cs->root_inst);
     mem_free(cs->inst_turn);
-    for (i = 0; i < cs->nlin_blk; i++)
-        mem_free(cs->lin_blk[i]);
-    mem_free(cs->lin_blk);
     for (i = 0; cs->lbuf && i < cs->nlights; i++)
         lightbuf_free(&cs->lbuf[i]);
     mem_free(cs->lbuf);

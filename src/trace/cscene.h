@@ -15,9 +15,6 @@
 #define CSCENE_MAX_PLANES 64  /* half-spaces a primary ray is advanced over */
 #define CSCENE_LBUF_MIN 8      /* bounded objects for a light buffer */
 #define CSCENE_LBUF_GROW (1.0 / 32)   /* its boxes' growth, normalised world */
-#define CSCENE_LIN_BLOCK 64    /* linear parts in the first block
-                                  (cscene.lin_blk), 8 times more in each
-                                  next one, up to CSCENE_LIN_BIG */
 
 typedef struct cscene_light {
     vec3 pos;                 /* normalised world */
@@ -57,12 +54,12 @@ typedef struct cscene {
     size_t inst_moved, inst_turned;   /* the instances taken, translated
                                          and turned (render --stats) */
     int *prim_root;
-    prim_lin **lin_blk;            /* the distinct linear parts (twins share
-                                      one), in nlin_blk blocks allocated
-                                      as they fill (cscene_lin_room): the
-                                      frames point into them */
-    size_t nlin_blk, cap_lin_blk;
-    size_t lin_start, lin_end;     /* the parts the last block holds */
+    prim_lin *lins;                /* the distinct linear parts (twins share
+                                      one), in order: the frames point
+                                      into them */
+    void *prim_mem;                /* the one block of prims, prim_pl,
+                                      prim_pl_d, prim_fr, face_row and
+                                      lins (cscene_prim_room) */
     csg tree;
     cscene_light *lights;
     size_t nlights;
