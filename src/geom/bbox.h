@@ -54,22 +54,18 @@ static inline void bbox_slab(double lo, double hi, double o, double rcp, double 
     *tmax = tf < *tmax ? tf : *tmax;
 }
 
-/* 1 when the ray misses the box [lo, hi] for every parameter in
- * [tmin, tmax]; else 0 and *tin the parameter in [tmin, tmax] where it
- * enters the box (tmin when it starts inside). Branch-free: the three axes
- * are written out (GCC at -O2 keeps a loop over them). */
-static inline int bbox_miss(const double lo[3], const double hi[3], const bbox_ray *r,
-                            double tmin, double tmax, double *tin)
-{
 #if defined(__SSE2__)
-    /* x and y in the two lanes of one register, z in the low lane of
-     * another (its high lane a copy of x, which changes nothing) */
+/* bbox_miss on a box in registers: x and y in the two lanes of xy, z in
+ * the low lane of z (its high lane a copy of x, which changes nothing). */
+static inline int bbox_miss_sse(__m128d lxy, __m128d hxy, __m128d lz, __m128d hz, const bbox_ray *r,
+                                double tmin, double tmax, double *tin)
+{
     __m128d o = _mm_loadu_pd(r->o), rc = _mm_loadu_pd(r->rcp);
     __m128d oz = _mm_set_pd(r->o[0], r->o[2]), rz = _mm_set_pd(r->rcp[0], r->rcp[2]);
-    __m128d u = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(lo), o), rc);
-    __m128d v = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(hi), o), rc);
-    __m128d uz = _mm_mul_pd(_mm_sub_pd(_mm_set_pd(lo[0], lo[2]), oz), rz);
-    __m128d vz = _mm_mul_pd(_mm_sub_pd(_mm_set_pd(hi[0], hi[2]), oz), rz);
+    __m128d u = _mm_mul_pd(_mm_sub_pd(lxy, o), rc);
+    __m128d v = _mm_mul_pd(_mm_sub_pd(hxy, o), rc);
+    __m128d uz = _mm_mul_pd(_mm_sub_pd(lz, oz), rz);
+    __m128d vz = _mm_mul_pd(_mm_sub_pd(hz, oz), rz);
     __m128d n = _mm_max_pd(_mm_min_pd(u, v), _mm_min_pd(uz, vz));
     __m128d f = _mm_min_pd(_mm_max_pd(u, v), _mm_max_pd(uz, vz));
     /* tmin and tmax in both lanes (only the low one counts): _mm_set_sd
@@ -79,12 +75,50 @@ static inline int bbox_miss(const double lo[3], const double hi[3], const bbox_r
     f = _mm_min_sd(_mm_min_sd(f, _mm_unpackhi_pd(f, f)), _mm_set1_pd(tmax));
     *tin = _mm_cvtsd_f64(n);
     return _mm_comigt_sd(n, f);
+}
+
+/* The x and y of a box corner in binary32, widened (exactly) to binary64. */
+static inline __m128d bbox_xy_f(const float *c)
+{
+    return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)(const void *)c)));
+}
+#endif
+
+/* 1 when the ray misses the box [lo, hi] for every parameter in
+ * [tmin, tmax]; else 0 and *tin the parameter in [tmin, tmax] where it
+ * enters the box (tmin when it starts inside). Branch-free: the three axes
+ * are written out (GCC at -O2 keeps a loop over them). */
+static inline int bbox_miss(const double lo[3], const double hi[3], const bbox_ray *r,
+                            double tmin, double tmax, double *tin)
+{
+#if defined(__SSE2__)
+    return bbox_miss_sse(_mm_loadu_pd(lo), _mm_loadu_pd(hi), _mm_set_pd(lo[0], lo[2]), _mm_set_pd(hi[0], hi[2]), r,
+                         tmin, tmax, tin);
 #else
     bbox_slab(lo[0], hi[0], r->o[0], r->rcp[0], &tmin, &tmax);
     bbox_slab(lo[1], hi[1], r->o[1], r->rcp[1], &tmin, &tmax);
     bbox_slab(lo[2], hi[2], r->o[2], r->rcp[2], &tmin, &tmax);
     *tin = tmin;
     return tmin > tmax;
+#endif
+}
+
+/* bbox_miss for a box held in binary32 (a CSG node's), the same test on
+ * its exact binary64 values. */
+static inline int bbox_miss_f(const float lo[3], const float hi[3], const bbox_ray *r,
+                              double tmin, double tmax, double *tin)
+{
+#if defined(__SSE2__)
+    return bbox_miss_sse(bbox_xy_f(lo), bbox_xy_f(hi), _mm_set_pd(lo[0], lo[2]), _mm_set_pd(hi[0], hi[2]), r, tmin,
+                         tmax, tin);
+#else
+    double l[3], h[3];
+    int i;
+    for (i = 0; i < 3; i++) {
+        l[i] = lo[i];
+        h[i] = hi[i];
+    }
+    return bbox_miss(l, h, r, tmin, tmax, tin);
 #endif
 }
 

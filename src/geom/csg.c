@@ -51,13 +51,27 @@ static int csg_err(csg_ctx *x, int status, const char *what)
     return diag_at(x->err, status, x->sc->source ? x->sc->source : "", 0, 0, "%s", what);
 }
 
-/* The node's binary64 box: its bound's box padded outwards by CSG_BOX_PAD. */
+/* x in binary32, rounded down, and rounded up. */
+static float csg_f32_down(double x)
+{
+    float f = (float)x;
+    return (double)f > x ? nextafterf(f, -INFINITY) : f;
+}
+
+static float csg_f32_up(double x)
+{
+    float f = (float)x;
+    return (double)f < x ? nextafterf(f, INFINITY) : f;
+}
+
+/* The node's box: its bound's box padded outwards by CSG_BOX_PAD, then
+ * rounded outwards to binary32. */
 static void csg_set_box(csg_node *nd, const csg_bound *b)
 {
     int i;
     for (i = 0; i < 3; i++) {
-        nd->lo[i] = b->lo[i] - CSG_BOX_PAD;
-        nd->hi[i] = b->hi[i] + CSG_BOX_PAD;
+        nd->lo[i] = csg_f32_down(b->lo[i] - CSG_BOX_PAD);
+        nd->hi[i] = csg_f32_up(b->hi[i] + CSG_BOX_PAD);
     }
 }
 
@@ -87,10 +101,9 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
     b = &x->bd[x->n - x->b0];
     memset(nd, 0, sizeof *nd);
     memset(b, 0, sizeof *b);
-    nd->op = op;
-    nd->left = l;
-    nd->right = r;
-    nd->prim = pi;
+    nd->op = (unsigned)op;
+    nd->left = op == CSG_LEAF ? 0 : (unsigned)l;
+    nd->right = op == CSG_LEAF ? pi : r;
     if (op == CSG_LEAF) {
         const prim *p = &x->prims[pi];
         b->bounded = p->bounded;
@@ -334,7 +347,7 @@ static void csg_hull(const csg_node *nodes, int ni, int hull[CSG_HULL])
         if (k == CSG_HULL)
             return;               /* full: the rest goes unrecorded */
         if (nd->op == CSG_LEAF) {
-            hull[k] = nd->prim;
+            hull[k] = csg_leaf_prim(nd);
             return;
         }
         if (nd->op == CSG_UNION)
@@ -365,7 +378,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg 
     if (cap > (size_t)1 << 26)
         return csg_err(&x, DIAG_INPUT, "CSG tree too large");
     x.cap = (int)cap;
-    out->nodes_mem = mem_calloc(cap + 1, sizeof *x.nodes);
+    out->nodes_mem = mem_calloc(cap + MEM_LINE / sizeof *x.nodes, sizeof *x.nodes);   /* and a line to align */
     x.nodes = mem_align_line(out->nodes_mem);
     obj = mem_calloc(sc->nroots + 1, sizeof *obj);
     hull = mem_calloc(sc->nroots + 1, sizeof *hull);
@@ -404,8 +417,10 @@ int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg 
         if (x.nodes[r].bounded) {
             memmove(obj + nb + 1, obj + nb, (size_t)nu * sizeof *obj);
             memmove(src + nb + 1, src + nb, (size_t)nu * sizeof *src);
-            memcpy(lo[nb], x.nodes[r].lo, sizeof lo[nb]);
-            memcpy(hi[nb], x.nodes[r].hi, sizeof hi[nb]);
+            for (k = 0; k < 3; k++) {
+                lo[nb][k] = x.nodes[r].lo[k];
+                hi[nb][k] = x.nodes[r].hi[k];
+            }
             src[nb] = (int)i;
             obj[nb++] = r;
         } else {
@@ -516,8 +531,8 @@ VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, in
     if (!nd->bounded || (!box && nd->op != CSG_LEAF))
         return 0;
     q->st->bound_tests++;
-    if ((box && bbox_miss(nd->lo, nd->hi, &q->r->b, num_to_d(lo), num_to_d(hi), &tin))
-        || (nd->op == CSG_LEAF && vec3_sphere_miss(q->prims[nd->prim].bc, q->prims[nd->prim].br, q->r->o, q->r->d,
+    if ((box && bbox_miss_f(nd->lo, nd->hi, &q->r->b, num_to_d(lo), num_to_d(hi), &tin))
+        || (nd->op == CSG_LEAF && vec3_sphere_miss(q->prims[csg_leaf_prim(nd)].bc, q->prims[csg_leaf_prim(nd)].br, q->r->o, q->r->d,
                                                    lo, hi, tc))) {
         q->st->pruned++;
         return 1;
@@ -622,7 +637,7 @@ VEC_HOT int csg_eval(csg_query *q, int ni, num lo, num hi, int alike, span **out
         q->st->arena_full++;
         return 0;
     }
-    if (!NS(prim_intersect_tc)(&q->prims[nd->prim], q->r, tc, dst)) {
+    if (!NS(prim_intersect_tc)(&q->prims[csg_leaf_prim(nd)], q->r, tc, dst)) {
         arena_release(q->ar, mark);
         return 0;
     }
@@ -774,7 +789,7 @@ static int csg_bounds_clear(csg_query *q, int ni, num lo, num hi)
     if (csg_bounds_miss(q, nd, lo, hi, 0, &tc))
         return 1;
     if (nd->op == CSG_LEAF)
-        return csg_leaf_clear(q, &q->prims[nd->prim], lo, hi);
+        return csg_leaf_clear(q, &q->prims[csg_leaf_prim(nd)], lo, hi);
     if (!csg_bounds_clear(q, nd->left, lo, hi))
         return 0;
     return nd->op != CSG_UNION || csg_bounds_clear(q, nd->right, lo, hi);
@@ -906,8 +921,9 @@ static int csg_diff_first(csg_query *q, int ni, int tested, csg_hit *h)
     int nl;
     if (a->op == CSG_INTER) {
         const csg_node *sp = &q->c->nodes[a->right];
-        if (sp->op == CSG_LEAF && q->prims[sp->prim].kind == PRIM_SPHERE && q->r->excl_prim != sp->prim)
-            return csg_diff_sphere(q, nd, a, &q->prims[sp->prim], tested, h);
+        if (sp->op == CSG_LEAF && q->prims[csg_leaf_prim(sp)].kind == PRIM_SPHERE
+            && q->r->excl_prim != csg_leaf_prim(sp))
+            return csg_diff_sphere(q, nd, a, &q->prims[csg_leaf_prim(sp)], tested, h);
     }
     if ((nl = csg_eval(q, nd->left, NUM_ZERO, q->tmax, tested, &l)) == 0) {
         q->st->pruned++;          /* B cannot matter */
@@ -961,7 +977,7 @@ VEC_HOT int csg_object_hit(csg_query *q, int k, int ni, int tested, csg_hit *h)
     num tc = NUM_ZERO;
     if (nd->op == CSG_LEAF) {     /* one primitive: one span, no arena */
         span s;
-        const prim *p = &q->prims[nd->prim];
+        const prim *p = &q->prims[csg_leaf_prim(nd)];
         if (nd->bounded && vec3_sphere_miss(p->bc, p->br, q->r->o, q->r->d, NUM_ZERO, q->tmax, &tc)) {
             q->st->pruned++;
             return 0;
@@ -1100,7 +1116,7 @@ VEC_HOT int csg_nearest(csg_query *q, csg_todo *todo, csg_hit *best, int *found)
     if (k < 0) {                  /* one bounded object: its own box */
         const csg_node *nd = &c->nodes[c->objects[~k]];
         q->st->bound_tests++;
-        if (bbox_miss(nd->lo, nd->hi, &q->r->b, 0, q->tmax_d, &tin[0])) {
+        if (bbox_miss_f(nd->lo, nd->hi, &q->r->b, 0, q->tmax_d, &tin[0])) {
             q->st->pruned++;
             return 0;
         }

@@ -37,18 +37,29 @@
 #define CSG_BOX_PAD (CSG_BOX_PAD_ULPS > 1.0 / 1024 ? CSG_BOX_PAD_ULPS : 1.0 / 1024)
 #endif
 
-/* One 64-byte line, on a line of its own (csg_build aligns the array): a
- * node's visit reads one line. A leaf's bounding sphere is its
+/* Half a 64-byte line (csg_build aligns the array): a node's visit reads
+ * one line, and an object's nodes take half the lines they took with the
+ * box in binary64 (docs/performance.md, run AT). The box is rounded
+ * outwards to binary32, which only widens it by a unit in its last place
+ * (2^-9 at the 2^14 the normalised world stays below): the test in
+ * binary64 still only culls (bbox.h). A leaf's bounding sphere is its
  * primitive's (prim.bc, prim.br). */
 typedef struct csg_node {
-    int left, right;         /* operator operands (compiled node indices) */
-    int prim;                /* leaf: primitive index */
-    unsigned char op;        /* CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF */
-    unsigned char bounded;
-    unsigned char same_box;  /* the box is its parent's, whose test over the
+    float lo[3], hi[3];      /* bounding box (world), padded by CSG_BOX_PAD */
+    unsigned left : 27;      /* an operator's left operand (csg_build
+                                keeps indices below 2^26) */
+    unsigned op : 2;         /* CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF */
+    unsigned bounded : 1;
+    unsigned same_box : 1;   /* the box is its parent's, whose test over the
                                 same parameters stands for its own */
-    double lo[3], hi[3];     /* bounding box (world), padded by CSG_BOX_PAD */
+    int right;               /* an operator's right operand; a leaf's
+                                primitive index (csg_leaf_prim) */
 } csg_node;
+
+typedef char csg_node_is_half_a_line[sizeof(csg_node) == 32 ? 1 : -1];
+
+/* The primitive of leaf nd. */
+static inline int csg_leaf_prim(const csg_node *nd) { return nd->right; }
 
 /* Primitives recorded per object that contain it (csg->hull). */
 #define CSG_HULL 4
@@ -103,7 +114,7 @@ typedef struct csg {
                                 the light buffers are built over, and what
                                 a buffered query tests of each object in its
                                 cell, read from 240 KB arrays at 10,000
-                                objects, not from the roots among 6 MB of
+                                objects, not from the roots among 3 MB of
                                 nodes */
     csg_inst *inst;          /* per object (as objects[]), or NULL where
                                 none is an instance */
