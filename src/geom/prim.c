@@ -190,7 +190,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     const double *d = sp->dim, *m = sp->world_from_object;
 
     memset(&p, 0, sizeof p);
-    if (!prim_finite(m, 16))
+    if (!prim_finite(m, 12))
         return prim_fail(err, file, sp, "transform is not finite");
     if (!prim_finite(d, 3))
         return prim_fail(err, file, sp, "dimension is not finite");

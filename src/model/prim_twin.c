@@ -6,7 +6,7 @@
 #include <string.h>
 
 /* The words compared: the dimensions, then the linear part of the row-major
- * 4x4 world_from_object (its translation column left out). */
+ * 3x4 world_from_object (its translation column left out). */
 static const int prim_twin_lin[9] = {0, 1, 2, 4, 5, 6, 8, 9, 10};
 
 int prim_twin_same(const scene_prim *a, const scene_prim *b)

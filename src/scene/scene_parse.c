@@ -636,16 +636,18 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int m
     int left = -1;
     if (d->op == CSG_LEAF) {
         scene_prim *pr = &s->prims[s->nprims];
-        if (scene_xform_is_identity(d->m)) {
-            memcpy(pr->world_from_object, m, sizeof pr->world_from_object);
-        } else {
-            scene_xform_mul(pr->world_from_object, m, d->m);
+        double t[16];
+        const double *w = m;
+        if (!scene_xform_is_identity(d->m)) {
+            scene_xform_mul(t, m, d->m);
+            w = t;
             m_ok = 0;
         }
-        if (!m_ok && !scene_xform_ok(pr->world_from_object)) {
+        if (!m_ok && !scene_xform_ok(w)) {
             *bad = d;
             return -1;
         }
+        memcpy(pr->world_from_object, w, sizeof pr->world_from_object);
         pr->kind = d->kind;
         memcpy(pr->dim, d->dim, sizeof pr->dim);
         pr->attr = d->attr >= 0 ? d->attr : attr;

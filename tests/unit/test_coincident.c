@@ -424,7 +424,7 @@ static void test_coincident_random_placements(void **state)
         for (kind = 0; kind < CO_KINDS; kind++) {
             co_case c;
             scene *sc;
-            double o[CO_RAYS][3], d[CO_RAYS][3], tt[CO_RAYS], mo[16];
+            double o[CO_RAYS][3], d[CO_RAYS][3], tt[CO_RAYS], mo[12];
             unsigned mask[CO_RAYS];
             int truth[CO_RAYS], map[CO_MAXP], i, ref;
             co_build(&s, kind, &c);

@@ -618,7 +618,6 @@ static void test_cscene_twins_bit_for_bit(void **state)
         p[i].dim[0] = 1;
         p[i].dim[1] = 2;
         p[i].world_from_object[0] = p[i].world_from_object[5] = p[i].world_from_object[10] = 1;
-        p[i].world_from_object[15] = 1;
     }
     p[1].world_from_object[3] = 7;         /* moved: a twin */
     p[2].world_from_object[1] = -0.0;      /* the other zero: none */

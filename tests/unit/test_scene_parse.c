@@ -44,14 +44,14 @@ static void addf(char **buf, size_t *len, size_t *cap, const char *fmt, ...)
     *len += (size_t)n;
 }
 
-static void apply(const double m[16], const double p[3], double out[3])
+static void apply(const double m[12], const double p[3], double out[3])
 {
     int i;
     for (i = 0; i < 3; i++)
         out[i] = m[i * 4] * p[0] + m[i * 4 + 1] * p[1] + m[i * 4 + 2] * p[2] + m[i * 4 + 3];
 }
 
-static void assert_point(const double m[16], double x, double y, double z,
+static void assert_point(const double m[12], double x, double y, double z,
                          double ex, double ey, double ez)
 {
     double p[3] = { x, y, z }, q[3];
