@@ -189,6 +189,40 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
     }
 }
 
+/* Every bounded leaf of 2,000 random decks keeps its primitive's box,
+ * padded by CSG_BOX_PAD, as the tightest binary32 box around it: each
+ * bound on the outer side, and the next binary32 inwards on the inner. */
+static void test_cscene_node_boxes_rounded_outwards(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_node_boxes_rounded_outwards");
+    int deck, leaves = 0;
+    (void)state;
+    for (deck = 0; deck < 2000; deck++) {
+        char text[2048];
+        scene *sc = cscene_test_deck(&seed, text, sizeof text);
+        cscene *cs = cscene_test_compile(sc);
+        int k, i;
+        for (k = 0; k < cs->tree.nnodes; k++) {
+            const csg_node *nd = &cs->tree.nodes[k];
+            double lo[3], hi[3];
+            if (nd->op != CSG_LEAF || !nd->bounded)
+                continue;
+            f64_prim_box(&cs->prims[csg_leaf_prim(nd)], lo, hi);
+            for (i = 0; i < 3; i++) {
+                double l = lo[i] - CSG_BOX_PAD, h = hi[i] + CSG_BOX_PAD;
+                if (!(nd->lo[i] <= l && nextafterf(nd->lo[i], INFINITY) > l && nd->hi[i] >= h
+                      && nextafterf(nd->hi[i], -INFINITY) < h))
+                    fail_msg("deck %d node %d axis %d: [%.9g, %.9g] around [%.17g, %.17g]\n%s", deck, k, i,
+                             (double)nd->lo[i], (double)nd->hi[i], l, h, text);
+            }
+            leaves++;
+        }
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+    assert_true(leaves > 2000);
+}
+
 /* The names of the primitives recorded in hull (up to CSG_HULL), sorted
  * and joined: "A,B". */
 static void cscene_test_hull_names(const scene *sc, const int *hull, char *out, size_t cap)
@@ -726,6 +760,7 @@ int main(void)
         cmocka_unit_test(test_cscene_twins_bit_for_bit),
         cmocka_unit_test(test_cscene_twins_index_grows),
         cmocka_unit_test(test_cscene_twins_index_closes),
+        cmocka_unit_test(test_cscene_node_boxes_rounded_outwards),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
