@@ -446,7 +446,7 @@ static int prim_skey_alike(const prim_skey *a, const prim_skey *b)
 /* The bytes of scratch prim_share works in for np planes, m curved solids
  * and n primitives, the larger of its two phases' needs (each part rounded
  * up to ARENA_ALIGN): the planes' references and the order that sorts
- * them, then the solids' records twice, their matches, keys and order.
+ * them, then the solids' records, their matches, keys and order.
  * One block for both: the second phase reuses the pages the first one
  * faulted in (docs/performance.md, run AH). 0 when that overflows. */
 static size_t prim_share_bytes(size_t np, size_t m, size_t n)
@@ -455,7 +455,7 @@ static size_t prim_share_bytes(size_t np, size_t m, size_t n)
     if (!rp || !rm || np > SIZE_MAX / 64 || m > SIZE_MAX / 256 || n > SIZE_MAX / 16)
         return 0;
     planes = rp + (np ? np : 1) * sizeof(prim_pref) + 2 * a;
-    solids = n * sizeof(long) + 2 * m * sizeof(prim_skey) + rm + m * sizeof(uint64_t) + 5 * a;
+    solids = n * sizeof(long) + m * sizeof(prim_skey) + rm + m * sizeof(uint64_t) + 4 * a;
     return planes > solids ? planes : solids;
 }
 
@@ -468,7 +468,7 @@ static size_t prim_share_bytes(size_t np, size_t m, size_t n)
  * Works in ar (prim_share_bytes). */
 static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
 {
-    prim_skey *sk = arena_alloc(ar, m * sizeof *sk), *by;
+    prim_skey *sk = arena_alloc(ar, m * sizeof *sk);
     long *match = arena_alloc(ar, n * sizeof *match);
     void *rb = arena_alloc(ar, radix_bytes(m));
     uint64_t *sort = arena_alloc(ar, m * sizeof *sort);
@@ -496,11 +496,26 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
         sort[m] = radix_key_d(key);
         sk[m++].i = i;
     }
+    /* by key, ties in index order: the records moved along each cycle of
+     * the order in place (a sorted copy made the scratch's peak, run AT),
+     * each place marked done by pointing at itself */
     ord = radix_order_in(sort, m, rb);
-    by = arena_alloc(ar, m * sizeof *by);
-    for (p = 0; p < m; p++)             /* by key, ties in index order */
-        by[p] = sk[ord[p]];
-    sk = by;
+    for (p = 0; p < m; p++) {
+        prim_skey t;
+        if (ord[p] == p)
+            continue;
+        t = sk[p];
+        for (q = p;;) {
+            size_t from = ord[q];
+            ord[q] = q;
+            if (from == p) {
+                sk[q] = t;
+                break;
+            }
+            sk[q] = sk[from];
+            q = from;
+        }
+    }
     for (p = 0, r0 = r1 = 0; p < m; p++) {
         size_t bi = sk[p].i;
         if (p == r1) {            /* the run of keys equal to p's: [r0, r1) */
