@@ -548,8 +548,9 @@ VEC_HOT int csg_bounds_miss(csg_query *q, const csg_node *nd, num lo, num hi, in
         return 0;
     q->st->bound_tests++;
     if ((box && bbox_miss_f(nd->lo, nd->hi, &q->r->b, num_to_d(lo), num_to_d(hi), &tin))
-        || (nd->op == CSG_LEAF && vec3_sphere_miss(q->prims[csg_leaf_prim(nd)].bc, q->prims[csg_leaf_prim(nd)].br, q->r->o, q->r->d,
-                                                   lo, hi, tc))) {
+        || (nd->op == CSG_LEAF
+            && vec3_sphere_miss(q->prims[csg_leaf_prim(nd)].bc, q->prims[csg_leaf_prim(nd)].br, q->r->o, q->r->d,
+                                lo, hi, tc))) {
         q->st->pruned++;
         return 1;
     }
