@@ -21,12 +21,13 @@ static double cli_idcheck_scale(const scene *sc)
     int r, c;
     for (i = 0; i < sc->nprims; i++) {
         const scene_prim *p = &sc->prims[i];
-        double t = 0, a = 0, dm = fabs(p->dim[0]);
-        if (p->kind == PRIM_HALFSPACE)
+        const double *d = p->shape->dim;
+        double t = 0, a = 0, dm = fabs(d[0]);
+        if (p->shape->kind == PRIM_HALFSPACE)
             continue;
         for (r = 1; r < 3; r++)
-            if (fabs(p->dim[r]) > dm)
-                dm = fabs(p->dim[r]);
+            if (fabs(d[r]) > dm)
+                dm = fabs(d[r]);
         for (r = 0; r < 3; r++) {
             t += p->world_from_object[4 * r + 3] * p->world_from_object[4 * r + 3];
             for (c = 0; c < 3; c++)
@@ -50,7 +51,8 @@ static int cli_idcheck_write_input(FILE *f, const scene *sc, int w, int h)
             (unsigned long)sc->nroots);
     for (i = 0; i < sc->nprims; i++) {
         const scene_prim *p = &sc->prims[i];
-        fprintf(f, "%d %.17g %.17g %.17g", (int)p->kind, p->dim[0], p->dim[1], p->dim[2]);
+        const scene_shape *sh = p->shape;
+        fprintf(f, "%d %.17g %.17g %.17g", (int)sh->kind, sh->dim[0], sh->dim[1], sh->dim[2]);
         for (k = 0; k < 12; k++)
             fprintf(f, " %.17g", p->world_from_object[k]);
         fputc('\n', f);

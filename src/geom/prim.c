@@ -90,8 +90,8 @@ static unsigned prim_cols(const mat3 *m)
 
 static int prim_fail(diag *err, const char *file, const scene_prim *sp, const char *what)
 {
-    return diag_at(err, DIAG_INPUT, file, sp->loc.line, sp->loc.col,
-                   "primitive '%s': %s", sp->name, what);
+    return diag_at(err, DIAG_INPUT, file, sp->shape->loc.line, sp->shape->loc.col,
+                   "primitive '%s': %s", sp->shape->name, what);
 }
 
 /* Canonical planes per kind: outward normal and a point; in face order
@@ -136,7 +136,7 @@ static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, con
     if (p->bounded && (p->smin == NUM_ZERO || num_to_d(p->inv_smin) < frob * (1 - 1e-3)))
         return prim_fail(err, file, sp, "too small for the numeric range");
     *r = 0;
-    if (sp->kind == PRIM_SPHERE) {
+    if (sp->shape->kind == PRIM_SPHERE) {
         *r = dmath_m3_spectral_norm(lin->a_d);
     } else if (p->bounded) {
         int k;
@@ -187,21 +187,21 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     double r = 0, bc[3];
     const prim_cplane *cp = NULL;
     int i, j, ncp = 0, st;
-    const double *d = sp->dim, *m = sp->world_from_object;
+    const double *d = sp->shape->dim, *m = sp->world_from_object;
 
     memset(&p, 0, sizeof p);
     if (!prim_finite(m, 12))
         return prim_fail(err, file, sp, "transform is not finite");
     if (!prim_finite(d, 3))
         return prim_fail(err, file, sp, "dimension is not finite");
-    p.kind = sp->kind;
+    p.kind = sp->shape->kind;
     p.pl = pl;
     p.pl_d = pl_d;
     p.fr = fr;                  /* every field written below on success */
     p.id = id;
     p.attr = sp->attr;
     p.bounded = 1;
-    switch (sp->kind) {
+    switch (sp->shape->kind) {
     case PRIM_SPHERE:
         if (!(d[0] > 0)) return prim_fail(err, file, sp, "sphere radius must be positive");
         break;

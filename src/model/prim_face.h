@@ -1,5 +1,5 @@
 /* prim_face — the faces of each primitive kind: their numbers (the index of
- * scene_prim.face_map and of a hit's face), their deck names (FACE
+ * scene_shape.face_map and of a hit's face), their deck names (FACE
  * statement) and their count. The (u,v) mapping of each face is documented
  * in docs/primitives.md. */
 #ifndef MODEL_PRIM_FACE_H

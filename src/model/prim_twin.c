@@ -12,7 +12,7 @@ static const int prim_twin_lin[9] = {0, 1, 2, 4, 5, 6, 8, 9, 10};
 int prim_twin_same(const scene_prim *a, const scene_prim *b)
 {
     int k;
-    if (a->kind != b->kind || memcmp(a->dim, b->dim, sizeof a->dim))
+    if (a->shape->kind != b->shape->kind || memcmp(a->shape->dim, b->shape->dim, sizeof a->shape->dim))
         return 0;
     for (k = 0; k < 9; k++)
         if (memcmp(&a->world_from_object[prim_twin_lin[k]], &b->world_from_object[prim_twin_lin[k]],
@@ -25,10 +25,10 @@ int prim_twin_same(const scene_prim *a, const scene_prim *b)
  * words, then a final mix of the high bits into the low ones). */
 uint64_t prim_twin_hash(const scene_prim *sp)
 {
-    uint64_t h = 0xcbf29ce484222325u ^ (uint64_t)sp->kind, w;
+    uint64_t h = 0xcbf29ce484222325u ^ (uint64_t)sp->shape->kind, w;
     int k;
     for (k = 0; k < 12; k++) {
-        const double *v = k < 3 ? &sp->dim[k] : &sp->world_from_object[prim_twin_lin[k - 3]];
+        const double *v = k < 3 ? &sp->shape->dim[k] : &sp->world_from_object[prim_twin_lin[k - 3]];
         memcpy(&w, v, sizeof w);
         h = (h ^ w) * 0x100000001b3u;
     }

@@ -21,6 +21,9 @@ void scene_free(scene *s)
     mem_free(s->source);
     mem_free(s->attrs);
     mem_free(s->prims);
+    for (i = 0; i < s->nshapes; i++)
+        mem_free(s->shapes[i]);
+    mem_free(s->shapes);
     mem_free(s->nodes);
     mem_free(s->roots);
     mem_free(s->lights);

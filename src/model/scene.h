@@ -97,18 +97,26 @@ typedef struct scene_bump {
     scene_loc loc;
 } scene_bump;
 
-typedef struct scene_prim {
+/* What a primitive statement defines, the same for every placement of it:
+ * kept once per placed definition (scene.shapes), not once per placement
+ * (10,000 objects of five primitives: 4.4 MB less, docs/performance.md,
+ * run AU). */
+typedef struct scene_shape {
     prim_kind kind;
     double dim[3];                    /* see the table above */
-    double world_from_object[12];     /* row-major 3x4 affine: 10,000
-                                         objects' primitives keep 1.6 MB
-                                         less than the full 4x4 */
-    int attr;                         /* index into attrs (plain attribute) */
     int face_map[SCENE_MAX_FACES];    /* per face: the planar division
                                          structure bound by FACE (index into
                                          maps), -1 = the plain attr only */
     char name[SCENE_NAME_MAX + 1];    /* the deck's name for it */
     scene_loc loc;
+} scene_shape;
+
+typedef struct scene_prim {
+    const scene_shape *shape;         /* its definition, in scene.shapes */
+    int attr;                         /* index into attrs (plain attribute) */
+    double world_from_object[12];     /* row-major 3x4 affine: 10,000
+                                         objects' primitives keep 1.6 MB
+                                         less than the full 4x4 */
 } scene_prim;
 
 typedef enum csg_op { CSG_LEAF, CSG_UNION, CSG_INTER, CSG_DIFF } csg_op;
@@ -143,6 +151,8 @@ typedef struct scene {
 
     scene_attr *attrs;   size_t nattrs;
     scene_prim *prims;   size_t nprims;
+    scene_shape **shapes; size_t nshapes; /* each allocated on its own, so
+                                             that prims may point at it */
     scene_node *nodes;   size_t nnodes;
     int *roots;          size_t nroots;   /* rendered objects, each a solid of its own */
     scene_light *lights; size_t nlights;

@@ -4,8 +4,8 @@
 
 int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3])
 {
-    const double *d = sp->dim;
-    switch (sp->kind) {
+    const double *d = sp->shape->dim;
+    switch (sp->shape->kind) {
     case PRIM_SPHERE:   c[0] = c[1] = c[2] = d[0]; lo[0] = lo[1] = lo[2] = -1; return 0;
     case PRIM_CYLINDER: c[0] = c[1] = d[0]; c[2] = d[1]; lo[0] = lo[1] = -1; lo[2] = 0; return 0;
     case PRIM_CONE:     c[0] = c[1] = d[0] > d[1] ? d[0] : d[1]; c[2] = d[2];
@@ -63,10 +63,10 @@ void scene_prim_grow_box(const scene_prim *sp, double *lo, double *hi)
 
 void scene_prim_grow_tight_box(const scene_prim *sp, double *lo, double *hi)
 {
-    const double *m = sp->world_from_object, *d = sp->dim, k = 1 + 0x1p-40;
+    const double *m = sp->world_from_object, *d = sp->shape->dim, k = 1 + 0x1p-40;
     double r0, r1, h;
     int i;
-    switch (sp->kind) {
+    switch (sp->shape->kind) {
     case PRIM_SPHERE:   r0 = r1 = d[0]; h = 0; break;
     case PRIM_CYLINDER: r0 = r1 = d[0]; h = d[1]; break;
     case PRIM_CONE:     r0 = d[0]; r1 = d[1]; h = d[2]; break;
@@ -75,7 +75,7 @@ void scene_prim_grow_tight_box(const scene_prim *sp, double *lo, double *hi)
     for (i = 0; i < 3; i++) {
         const double *a = m + 4 * i;
         /* the disc (or the sphere's ball) about each centre */
-        double w = sp->kind == PRIM_SPHERE ? sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
+        double w = sp->shape->kind == PRIM_SPHERE ? sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
                                            : sqrt(a[0] * a[0] + a[1] * a[1]);
         double c0 = a[3], c1 = a[3] + a[2] * h;
         double l = fmin(c0 - k * r0 * w, c1 - k * r1 * w), u = fmax(c0 + k * r0 * w, c1 + k * r1 * w);

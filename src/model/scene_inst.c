@@ -96,7 +96,7 @@ static int si_walk(si_ctx *x, int i)
                 return 1;
             lo = nd->prim < lo ? nd->prim : lo;
             hi = nd->prim > hi ? nd->prim : hi;
-            o->half |= sc->prims[nd->prim].kind == PRIM_HALFSPACE;
+            o->half |= sc->prims[nd->prim].shape->kind == PRIM_HALFSPACE;
             x->owner[nd->prim] = x->owner[nd->prim] == -1 ? i : -2;
             continue;
         }
@@ -115,9 +115,9 @@ static int si_walk(si_ctx *x, int i)
         if (x->steps[k].op == CSG_LEAF) {
             const scene_prim *sp = &sc->prims[x->steps[k].off];
             uint64_t w[3];
-            memcpy(w, sp->dim, sizeof w);
+            memcpy(w, sp->shape->dim, sizeof w);
             x->steps[k].off -= lo;
-            h = si_mix(si_mix(h, (uint64_t)x->steps[k].off), (uint64_t)sp->kind);
+            h = si_mix(si_mix(h, (uint64_t)x->steps[k].off), (uint64_t)sp->shape->kind);
             if (!o->count++) {
                 const double *m = sp->world_from_object;
                 int j;
@@ -222,7 +222,7 @@ static int si_same(si_ctx *x, si_obj *m, si_obj *i, double tol)
             continue;
         pm = &sc->prims[m->first + a[k].off];
         pi = &sc->prims[i->first + a[k].off];
-        if (pm->kind != pi->kind || memcmp(pm->dim, pi->dim, sizeof pm->dim))
+        if (pm->shape->kind != pi->shape->kind || memcmp(pm->shape->dim, pi->shape->dim, sizeof pm->shape->dim))
             return 0;
         if (!leaf++) {
             const double *mm = pm->world_from_object, *mi = pi->world_from_object;
@@ -491,13 +491,13 @@ static int si_faces_near(const si_ctx *x, const si_obj *o, const double n[3], do
         if (s[k].op != CSG_LEAF)
             continue;
         sp = &x->sc->prims[o->first + s[k].off];
-        if (sp->kind == PRIM_SPHERE)
+        if (sp->shape->kind == PRIM_SPHERE)
             continue;             /* no planar face */
         m = sp->world_from_object;
         /* a face's normal on axis a lies along the cross product of the
          * linear part's other two columns (the block has faces on every
          * axis, the caps on z alone) */
-        for (a = sp->kind == PRIM_BLOCK ? 0 : 2; a < 3 && !near; a++) {
+        for (a = sp->shape->kind == PRIM_BLOCK ? 0 : 2; a < 3 && !near; a++) {
             double u[3], v[3], f[3], cr[3];
             for (j = 0; j < 3; j++) {
                 u[j] = m[4 * j + (a + 1) % 3];
@@ -533,7 +533,7 @@ static int si_planes(si_ctx *x, size_t n, double gap)
         const double *m = sc->prims[p].world_from_object;
         double a[9] = {m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]}, inv[9], nn[3], d, len;
         int k;
-        if (sc->prims[p].kind != PRIM_HALFSPACE)
+        if (sc->prims[p].shape->kind != PRIM_HALFSPACE)
             continue;
         if (dmath_m3_inverse(a, inv))
             return 1;

@@ -2,7 +2,7 @@
  * statement): its definition in double precision (pds_def.h), which the
  * per-mode scene compilers turn into lookup structures, and where the deck
  * defined it. FACE binds one to a face of a primitive through
- * scene_prim.face_map. */
+ * scene_shape.face_map. */
 #ifndef SCENE_MAP_H
 #define SCENE_MAP_H
 #include "model/pds_def.h"

@@ -1,8 +1,8 @@
 /* scene_face — FACE solid face pdsname: binds a PDS closed earlier to one
  * face of a primitive definition (face names from prim_face_name). The
- * binding is kept with the definition and copied into every primitive an
- * OBJECT expands from it afterwards (scene_prim.face_map), so FACE must come
- * before the first OBJECT that places the primitive. */
+ * binding is kept with the definition and goes into the shape its
+ * placements share (scene_shape.face_map), made at the first OBJECT that
+ * places it: so FACE must come before that OBJECT. */
 #include <stdio.h>
 #include "model/prim_face.h"
 #include "scene/scene_parser.h"

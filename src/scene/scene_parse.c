@@ -615,12 +615,31 @@ static int scene_parse_diff(scene_parser *p, scene_cur *c) { return scene_parse_
 
 /* ---- OBJECT: expansion --------------------------------------------------- */
 
+/* The shape of leaf definition d (its kind, dimensions, FACE bindings,
+ * name and place), added to the scene; NULL when memory runs out. Made at
+ * d's first placement: FACE must come before it, so the shape is final. */
+static const scene_shape *scene_parse_shape(scene_parser *p, const scene_parse_def *d)
+{
+    scene *s = p->s;
+    scene_shape *sh;
+    if (mem_grow((void **)&s->shapes, &p->cap_shapes, s->nshapes + 1, sizeof *s->shapes) ||
+        !(sh = mem_alloc(sizeof *sh)))
+        return NULL;
+    sh->kind = d->kind;
+    memcpy(sh->dim, d->dim, sizeof sh->dim);
+    memcpy(sh->face_map, d->face_map, sizeof sh->face_map);
+    memcpy(sh->name, d->name, sizeof sh->name);
+    sh->loc = d->loc;
+    s->shapes[s->nshapes++] = sh;
+    return sh;
+}
+
 /* Expands definition di under transform m and inherited attribute attr into
  * prims and nodes (capacity reserved by the caller) for the OBJECT on record
- * rec; returns the node index or -1 when a composed transform is unusable
- * (*bad names the primitive). Each primitive copy takes its definition's
- * FACE bindings, and the definition remembers the first OBJECT that placed
- * it. m and every transform of the parser come from scene_xform_identity
+ * rec; returns the node index, -1 when a composed transform is unusable
+ * (*bad names the primitive) or -2 when memory runs out. Each primitive
+ * points at its definition's shape, and the definition remembers the first
+ * OBJECT that placed it. m and every transform of the parser come from scene_xform_identity
  * or scene_xform_mul, so a product with a transform that is the identity
  * would be m again and is not formed; m_ok is 1 when m itself passed
  * scene_xform_ok (an OBJECT's transforms did), which a primitive placed by
@@ -647,15 +666,13 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int m
             *bad = d;
             return -1;
         }
-        memcpy(pr->world_from_object, w, sizeof pr->world_from_object);
-        pr->kind = d->kind;
-        memcpy(pr->dim, d->dim, sizeof pr->dim);
-        pr->attr = d->attr >= 0 ? d->attr : attr;
-        memcpy(pr->face_map, d->face_map, sizeof pr->face_map);
+        if (!d->shape && !(d->shape = scene_parse_shape(p, d)))
+            return -2;
         if (!d->placed)
             d->placed = rec;
-        memcpy(pr->name, d->name, sizeof pr->name);
-        pr->loc = d->loc;
+        memcpy(pr->world_from_object, w, sizeof pr->world_from_object);
+        pr->shape = d->shape;
+        pr->attr = d->attr >= 0 ? d->attr : attr;
         n = &s->nodes[s->nnodes];
         n->op = CSG_LEAF;
         n->left = n->right = -1;
@@ -674,7 +691,7 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int m
         }
         r = scene_parse_expand(p, u->def, um, um_ok, u->attr >= 0 ? u->attr : attr, rec, bad);
         if (r < 0)
-            return -1;
+            return r;
         if (left < 0) {
             left = r;
             continue;
@@ -719,6 +736,8 @@ static int scene_parse_object(scene_parser *p, scene_cur *c)
     if (root < 0) {
         s->nprims = np0;
         s->nnodes = nn0;
+        if (root == -2)
+            return scene_parse_oom(p, at);
         return scene_cur_error(c, at, "transforms make primitive %s degenerate or out of range",
                                bad->name);
     }

@@ -41,10 +41,12 @@ typedef struct scene_parse_def {
     size_t leaves;            /* primitives in one expansion (saturated) */
     int depth;                /* nesting: 1 for a primitive */
     int face_map[SCENE_MAX_FACES];  /* leaf: PDS bound by FACE (index into
-                                       maps), -1 none; copied to each prim */
+                                       maps), -1 none */
     long face_rec[SCENE_MAX_FACES]; /* record of that FACE statement */
     long placed;              /* record of the first OBJECT that expanded it
                                  (0: none yet; FACE must come before) */
+    const scene_shape *shape; /* leaf: what its placements point at, made
+                                 at the first (scene.shapes) */
 } scene_parse_def;
 
 /* One use of a solid: as a CSG operand or by OBJECT. */
@@ -92,7 +94,7 @@ struct scene_parser {
     scene_parse_def *defs;     size_t ndefs, cap_defs;
     scene_parse_use *operands; size_t noperands, cap_operands;
     size_t cap_attrs, cap_lights, cap_prims, cap_nodes, cap_roots;
-    size_t cap_maps, cap_textures, cap_bumps;
+    size_t cap_maps, cap_textures, cap_bumps, cap_shapes;
     scene_loc view_loc[SCENE_PARSE_VIEW_COUNT];  /* each view statement; line 0 = none */
     scene_parse_block block;
     /* The entry the last statement found, and the body it was looked up

@@ -57,7 +57,7 @@ static int cscene_normalise(const scene *sc, geom_norm *nm, diag *err)
     size_t i;
     int j, any = 0;
     for (i = 0; i < sc->nprims; i++)
-        if (sc->prims[i].kind != PRIM_HALFSPACE) {
+        if (sc->prims[i].shape->kind != PRIM_HALFSPACE) {
             scene_prim_grow_box(&sc->prims[i], lo, hi);
             any = 1;
         }
@@ -86,7 +86,9 @@ static int cscene_normalise(const scene *sc, geom_norm *nm, diag *err)
     return 0;
 }
 
-/* Compiles every scene map that some primitive face is bound to. */
+/* Compiles every scene map that some primitive face is bound to: bound
+ * through the shapes, each of which some primitive points at, in the order
+ * the primitives first name them. */
 static int cscene_maps(const scene *sc, cscene *cs, diag *err)
 {
     size_t i;
@@ -97,15 +99,15 @@ static int cscene_maps(const scene *sc, cscene *cs, diag *err)
     if (!cs->maps)
         return diag_at(err, DIAG_IO, "", 0, 0, "out of memory compiling the scene");
     cs->nmaps = sc->nmaps;
-    for (i = 0; i < sc->nprims; i++)
+    for (i = 0; i < sc->nshapes; i++)
         for (f = 0; f < SCENE_MAX_FACES; f++) {
-            int m = sc->prims[i].face_map[f];
+            const scene_shape *sh = sc->shapes[i];
+            int m = sh->face_map[f];
             if (m < 0)
                 continue;
             if ((size_t)m >= sc->nmaps)
-                return diag_at(err, DIAG_INPUT, cscene_file(sc), sc->prims[i].loc.line,
-                               sc->prims[i].loc.col, "primitive '%s': map index out of range",
-                               sc->prims[i].name);
+                return diag_at(err, DIAG_INPUT, cscene_file(sc), sh->loc.line, sh->loc.col,
+                               "primitive '%s': map index out of range", sh->name);
             if (!cs->maps[m] &&
                 (st = NS(pds_compile)(&sc->maps[m]->def, cscene_file(sc), &cs->maps[m], err)))
                 return st;
@@ -135,7 +137,7 @@ static int cscene_face_bound(const scene_prim *sp)
 {
     int f;
     for (f = 0; f < SCENE_MAX_FACES; f++)
-        if (sp->face_map[f] >= 0)
+        if (sp->shape->face_map[f] >= 0)
             return 1;
     return 0;
 }
@@ -151,8 +153,8 @@ static int cscene_face_bound(const scene_prim *sp)
  * own cycles (docs/performance.md, run AG). */
 static size_t cscene_face_row_of(const scene_prim *sp)
 {
-    return cscene_face_bound(sp) ? CSCENE_ROW_OWN
-                                 : ((size_t)sp->attr * PRIM_KIND_COUNT + (size_t)sp->kind) * (SCENE_MAX_FACES + 1);
+    size_t kind = (size_t)sp->shape->kind;
+    return cscene_face_bound(sp) ? CSCENE_ROW_OWN : ((size_t)sp->attr * PRIM_KIND_COUNT + kind) * (SCENE_MAX_FACES + 1);
 }
 
 /* The face table (cscene_face_at), after the maps and primitives are
@@ -174,7 +176,7 @@ static int cscene_faces(const scene *sc, cscene *cs, size_t nown, diag *err)
         if (cs->face_row[i] != CSCENE_ROW_OWN)
             continue;
         cs->face_row[i] = nrows++ * row;
-        cscene_face_row(sc, cs, sp->kind, sp->attr, sp->face_map, &cs->faces[cs->face_row[i]]);
+        cscene_face_row(sc, cs, sp->shape->kind, sp->attr, sp->shape->face_map, &cs->faces[cs->face_row[i]]);
     }
     return 0;
 }
@@ -226,18 +228,18 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
                 && dmath_m3_frobenius(p->fr->lin->a_d) * dmath_m3_frobenius(p->fr->lin->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
                 && (aspect = dmath_m3_spectral_norm(p->fr->lin->a_d) * dmath_m3_spectral_norm(p->fr->lin->ainv_d))
                        > CSCENE_ASPECT_MAX)
-                return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
+                return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->shape->loc.line, sp->shape->loc.col,
                                "primitive '%s': aspect ratio %.3g is beyond the %s limit of %g "
                                "(docs/numerics.md); use --numeric q32 or f64",
-                               sp->name, aspect, NUM_NAME, CSCENE_ASPECT_MAX);
+                               sp->shape->name, aspect, NUM_NAME, CSCENE_ASPECT_MAX);
             continue;
         }
         if (fabs(p->pl_d[0][3]) > CSCENE_PLANE_MAX) {
             if (dmath_dot3(p->pl_d[0], cs->eye) > p->pl_d[0][3])
-                return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
+                return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->shape->loc.line, sp->shape->loc.col,
                                "primitive '%s': the half-space's plane lies %.3g scene widths from "
                                "the scene, beyond the %s range of %.0f (docs/numerics.md); use "
-                               "--numeric q32 or f64", sp->name, fabs(p->pl_d[0][3]) / (2 * GEOM_W),
+                               "--numeric q32 or f64", sp->shape->name, fabs(p->pl_d[0][3]) / (2 * GEOM_W),
                                NUM_NAME, CSCENE_ORIG_MAX / (2 * GEOM_W));
         }
         if (cs->nplanes < CSCENE_MAX_PLANES)   /* as placed, before the move */
@@ -587,7 +589,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
                                                                           : sc->max_depth;
     status = DIAG_IO;
     for (i = 0; i < sc->nprims; i++)
-        npl += (size_t)prim_nplanes(sc->prims[i].kind);
+        npl += (size_t)prim_nplanes(sc->prims[i].shape->kind);
     if ((status = cscene_instances(sc, cs, &ninst, err)))
         goto fail;
     status = DIAG_IO;
@@ -611,14 +613,14 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         int known;
         double radius;
         if (sp->attr < 0 || (size_t)sp->attr >= sc->nattrs) {
-            status = diag_at(err, DIAG_INPUT, cscene_file(sc), sp->loc.line, sp->loc.col,
-                             "primitive '%s': attribute index out of range", sp->name);
+            status = diag_at(err, DIAG_INPUT, cscene_file(sc), sp->shape->loc.line, sp->shape->loc.col,
+                             "primitive '%s': attribute index out of range", sp->shape->name);
             goto fail;
         }
         if (cs->prim_root && cs->prim_root[i] >= 0) {   /* traced as its master's */
             cs->face_row[i] = cscene_face_row_of(sp);
             nown += cs->face_row[i] == CSCENE_ROW_OWN;
-            npl += (size_t)prim_nplanes(sp->kind);
+            npl += (size_t)prim_nplanes(sp->shape->kind);
             continue;
         }
         e = prim_twin_at(&tw, sc->prims, sp);
@@ -637,7 +639,7 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         }
         cs->face_row[i] = cscene_face_row_of(sp);
         nown += cs->face_row[i] == CSCENE_ROW_OWN;
-        npl += (size_t)prim_nplanes(sp->kind);
+        npl += (size_t)prim_nplanes(sp->shape->kind);
     }
     prim_twin_free(&tw);
     if ((status = NS(prim_share)(cs->prims, cs->nprims, err)) || (status = cscene_ranges(sc, cs, err)))

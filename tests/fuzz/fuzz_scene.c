@@ -60,7 +60,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (s->prims[i].attr < 0 || (size_t)s->prims[i].attr >= s->nattrs)
                 __builtin_trap();
             for (f = 0; f < SCENE_MAX_FACES; f++)
-                if (s->prims[i].face_map[f] < -1 || s->prims[i].face_map[f] >= (int)s->nmaps)
+                if (s->prims[i].shape->face_map[f] < -1 || s->prims[i].shape->face_map[f] >= (int)s->nmaps)
                     __builtin_trap();
         }
         for (i = 0; i < s->nattrs; i++)

@@ -437,7 +437,7 @@ static void test_render_face_pds_lookup(void **state)
     assert_true(pds_cpg_rect(&m->def, 0, 0, 0.5, 1, 2, loc) >= 0);   /* attrs[2] = RED */
     sc->maps[0] = m;
     sc->nmaps = 1;
-    sc->prims[0].face_map[PRIM_FACE_BLOCK_YMIN] = 0;
+    sc->shapes[0]->face_map[PRIM_FACE_BLOCK_YMIN] = 0;
     for (i = 0; i < 4; i++) {
         render_fb fb;
         render_stats st;

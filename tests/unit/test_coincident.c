@@ -476,7 +476,7 @@ static void test_coincident_random_placements(void **state)
                         printf("# %s %s placement %d ray %d: truth %s t=%.6f, mode %s t=%.6f prim %s\n%s",
                                ops->name, co_kind_name[kind], n, j, truth[j] ? "hit" : "miss",
                                truth[j] ? tt[j] : 0.0, got ? "hit" : "miss", got ? h.t : 0.0,
-                               got ? sc->prims[h.prim].name : "-", c.deck);
+                               got ? sc->prims[h.prim].shape->name : "-", c.deck);
                 }
                 ops->free(cs);
             }

@@ -165,9 +165,9 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
             prim_frame fr;
             prim_lin lin;
             int i, k;
-            if (sp->kind == PRIM_SPHERE)
+            if (sp->shape->kind == PRIM_SPHERE)
                 continue;
-            if (sp->kind == PRIM_BLOCK)
+            if (sp->shape->kind == PRIM_BLOCK)
                 lo[0] = lo[1] = 0, cc[0] = cc[1] = 0.5;
             {
                 double radius;
@@ -230,7 +230,7 @@ static void cscene_test_hull_names(const scene *sc, const int *hull, char *out, 
     const char *names[CSG_HULL];
     int n = 0, i, j;
     for (i = 0; i < CSG_HULL && hull[i] >= 0; i++)
-        names[n++] = sc->prims[hull[i]].name;
+        names[n++] = sc->prims[hull[i]].shape->name;
     for (i = 1; i < n; i++)
         for (j = i; j > 0 && strcmp(names[j - 1], names[j]) > 0; j--) {
             const char *t = names[j];
@@ -642,20 +642,23 @@ static void test_cscene_twins_compile_alike(void **state)
 static void test_cscene_twins_bit_for_bit(void **state)
 {
     scene_prim p[4];
+    scene_shape sh[4];
     prim_twin tw;
     prim_twin_entry *e;
     int i;
     (void)state;
     memset(p, 0, sizeof p);
+    memset(sh, 0, sizeof sh);
     for (i = 0; i < 4; i++) {
-        p[i].kind = PRIM_CYLINDER;
-        p[i].dim[0] = 1;
-        p[i].dim[1] = 2;
+        sh[i].kind = PRIM_CYLINDER;
+        sh[i].dim[0] = 1;
+        sh[i].dim[1] = 2;
+        p[i].shape = &sh[i];
         p[i].world_from_object[0] = p[i].world_from_object[5] = p[i].world_from_object[10] = 1;
     }
     p[1].world_from_object[3] = 7;         /* moved: a twin */
     p[2].world_from_object[1] = -0.0;      /* the other zero: none */
-    p[3].kind = PRIM_CONE;
+    sh[3].kind = PRIM_CONE;
     assert_int_equal(prim_twin_init(&tw), 0);
     e = prim_twin_at(&tw, p, &p[0]);
     assert_int_equal(e->index, PRIM_TWIN_NONE);
@@ -677,12 +680,14 @@ static void test_cscene_twins_index_grows(void **state)
 {
     enum { N = 1000 };
     scene_prim *p = test_calloc(N + 1, sizeof *p);
+    scene_shape *sh = test_calloc(N + 1, sizeof *sh);
     prim_twin tw;
     int i;
     (void)state;
     for (i = 0; i <= N; i++) {
-        p[i].kind = PRIM_SPHERE;
-        p[i].dim[0] = 1 + i / 64.0;
+        sh[i].kind = PRIM_SPHERE;
+        sh[i].dim[0] = 1 + i / 64.0;
+        p[i].shape = &sh[i];
         p[i].world_from_object[0] = p[i].world_from_object[5] = p[i].world_from_object[10] = 1;
     }
     assert_int_equal(prim_twin_init(&tw), 0);
@@ -700,6 +705,7 @@ static void test_cscene_twins_index_grows(void **state)
     assert_int_equal(prim_twin_at(&tw, p, &p[N])->index, PRIM_TWIN_NONE);
     prim_twin_free(&tw);
     test_free(p);
+    test_free(sh);
 }
 
 /* The index closes where twins are rare: PRIM_TWIN_TRIAL distinct
@@ -710,6 +716,7 @@ static void test_cscene_twins_index_closes(void **state)
 {
     enum { N = 2 * PRIM_TWIN_TRIAL };
     scene_prim *p = test_calloc(N + 1, sizeof *p);
+    scene_shape *sh = test_calloc(N + 1, sizeof *sh);
     prim_twin tw;
     int i, pass;
     (void)state;
@@ -719,8 +726,9 @@ static void test_cscene_twins_index_closes(void **state)
             /* pass 1: primitive 8k + 7 repeats primitive 8k + 6 */
             int v = pass && i % 8 == 7 ? i - 1 : i;
             memset(&p[i], 0, sizeof p[i]);
-            p[i].kind = PRIM_SPHERE;
-            p[i].dim[0] = 1 + v / 1024.0;
+            sh[i].kind = PRIM_SPHERE;
+            sh[i].dim[0] = 1 + v / 1024.0;
+            p[i].shape = &sh[i];
             p[i].world_from_object[0] = p[i].world_from_object[5] = p[i].world_from_object[10] = 1;
             p[i].world_from_object[3] = i;
         }
@@ -745,6 +753,7 @@ static void test_cscene_twins_index_closes(void **state)
         prim_twin_free(&tw);              /* closed or freed: a no-op */
     }
     test_free(p);
+    test_free(sh);
 }
 
 int main(void)

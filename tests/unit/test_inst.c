@@ -212,7 +212,7 @@ static scene *inst_grid(int turned, int ref)
     assert_non_null(sc);
     for (p = 5; ref && p < 5 * INST_SIDE * INST_SIDE; p++) {
         double *m = sc->prims[p].world_from_object, dz = 1e-6 * (double)(p / 5);
-        if (sc->prims[p].kind != PRIM_CYLINDER)
+        if (sc->prims[p].shape->kind != PRIM_CYLINDER)
             continue;
         for (i = 0; i < 3; i++)
             m[4 * i + 3] += dz * m[4 * i + 2];

@@ -86,7 +86,8 @@ static void test_oracle_spans_within_bounds(void **state)
                 ry->o[i] = test_uniform(&s, -7, 7);
                 ry->d[i] = test_uniform(&s, -2.5, 2.5) - ry->o[i];
             }
-            fprintf(f, "%d %.17g %.17g %.17g", (int)sp->kind, sp->dim[0], sp->dim[1], sp->dim[2]);
+            fprintf(f, "%d %.17g %.17g %.17g", (int)sp->shape->kind, sp->shape->dim[0], sp->shape->dim[1],
+                    sp->shape->dim[2]);
             for (i = 0; i < 12; i++)
                 fprintf(f, " %.17g", sp->world_from_object[i]);
             fprintf(f, " %.17g %.17g %.17g %.17g %.17g %.17g\n", ry->o[0], ry->o[1], ry->o[2],

@@ -59,7 +59,7 @@ static void prim_check_scene(const probe_ops *ops, const scene *sc, uint64_t *s,
             sd = tt_sdf(sp, q);
             if (fabs(sd) > 4 * tol && (sd < 0) != in_span) {
                 if (f->inside++ < 3)
-                    printf("# %s kind %d: t=%.6f sdf=%.3g span=%d [%.6f,%.6f)\n", ops->name, sp->kind,
+                    printf("# %s kind %d: t=%.6f sdf=%.3g span=%d [%.6f,%.6f)\n", ops->name, sp->shape->kind,
                            tt, sd, has, has ? t[0] : 0, has ? t[1] : 0);
             }
         }
@@ -69,9 +69,9 @@ static void prim_check_scene(const probe_ops *ops, const scene *sc, uint64_t *s,
         tt_to_object(sp, h.p, q);
         sd = tt_sdf(sp, q);
         /* the direction is rounded too, so the error grows with distance */
-        if (fabs(sd) > 2 * tol * (1 + h.t / 10) || h.face < 0 || h.face >= prim_face_count(sp->kind)) {
+        if (fabs(sd) > 2 * tol * (1 + h.t / 10) || h.face < 0 || h.face >= prim_face_count(sp->shape->kind)) {
             if (f->surf++ < 3)
-                printf("# %s kind %d: hit off the surface by %.3g (face %d)\n", ops->name, sp->kind, sd, h.face);
+                printf("# %s kind %d: hit off the surface by %.3g (face %d)\n", ops->name, sp->shape->kind, sd, h.face);
         }
         if (!(h.sf.u >= 0 && h.sf.u <= 1 && h.sf.v >= 0 && h.sf.v <= 1))
             f->uv++;
@@ -84,11 +84,11 @@ static void prim_check_scene(const probe_ops *ops, const scene *sc, uint64_t *s,
         if (dn > 0 && i != 0) {
             if (f->respawn_out++ < 3)
                 printf("# %s kind %d: outward re-spawn re-hit face %d at t=%.3g\n", ops->name,
-                       sp->kind, h2.face, h2.t);
+                       sp->shape->kind, h2.face, h2.t);
         }
-        if (dn < 0 && sp->kind != PRIM_HALFSPACE && (i != 1 || h2.entering || !(h2.t > 0))) {
+        if (dn < 0 && sp->shape->kind != PRIM_HALFSPACE && (i != 1 || h2.entering || !(h2.t > 0))) {
             if (f->respawn_in++ < 3)
-                printf("# %s kind %d: inward re-spawn did not find the exit (%d)\n", ops->name, sp->kind, i);
+                printf("# %s kind %d: inward re-spawn did not find the exit (%d)\n", ops->name, sp->shape->kind, i);
         }
     }
     ops->free(cs);
@@ -272,9 +272,9 @@ static void test_prim_rejects_bad_dimensions(void **state)
     diag err;
     (void)state;
     assert_non_null(sc);
-    sc->prims[0].dim[0] = -1;
+    sc->shapes[0]->dim[0] = -1;
     prim_compile_fails(&q16_probe_ops, sc, "test.scene:4:1: error: primitive 'P': sphere radius must be positive");
-    sc->prims[0].dim[0] = 1;
+    sc->shapes[0]->dim[0] = 1;
     sc->prims[0].world_from_object[0] = 0;
     sc->prims[0].world_from_object[5] = 0;
     prim_compile_fails(&f64_probe_ops, sc, "test.scene:4:1: error: primitive 'P': transform is singular");
@@ -284,14 +284,14 @@ static void test_prim_rejects_bad_dimensions(void **state)
     sc = tt_parse("EYE 9 -9 7\nLOOKAT 0 0 0\nLIGHT 0 0 20\nHALFSPACE P\nOBJECT P\n");
     assert_non_null(sc);
     sc->prims[0].world_from_object[11] = -HUGE_VAL;
-    sc->prims[0].dim[2] = NAN;
+    sc->shapes[0]->dim[2] = NAN;
     prim_compile_fails(&q16_probe_ops, sc, "test.scene:4:1: error: primitive 'P': transform is not finite");
     sc->prims[0].world_from_object[11] = 0;
     sc->prims[0].world_from_object[6] = NAN;
     prim_compile_fails(&f64_probe_ops, sc, "test.scene:4:1: error: primitive 'P': transform is not finite");
     sc->prims[0].world_from_object[6] = 0;
     prim_compile_fails(&f64_probe_ops, sc, "test.scene:4:1: error: primitive 'P': dimension is not finite");
-    sc->prims[0].dim[2] = 0;
+    sc->shapes[0]->dim[2] = 0;
     diag_init(&err);
     assert_int_equal(f64_probe_ops.compile(sc, &cs, &err), 0);
     f64_probe_ops.free(cs);

@@ -190,30 +190,31 @@ static void test_scene_parse_primitives(void **state)
                  "HALFSPACE H\nOBJECT S\nOBJECT C\nOBJECT B\nOBJECT K\nOBJECT H\n");
     assert_int_equal(s->nprims, 5);
     assert_int_equal(s->nroots, 5);
-    assert_int_equal(s->prims[0].kind, PRIM_SPHERE);
-    assert_true(s->prims[0].dim[0] == 1.5);
-    assert_int_equal(s->prims[1].kind, PRIM_CYLINDER);
-    assert_true(s->prims[1].dim[0] == 2 && s->prims[1].dim[1] == 3);
-    assert_int_equal(s->prims[2].kind, PRIM_BLOCK);
-    assert_true(s->prims[2].dim[0] == 1 && s->prims[2].dim[1] == 2 && s->prims[2].dim[2] == 3);
-    assert_int_equal(s->prims[3].kind, PRIM_CONE);
-    assert_true(s->prims[3].dim[0] == 1 && s->prims[3].dim[1] == 0 && s->prims[3].dim[2] == 4);
-    assert_int_equal(s->prims[4].kind, PRIM_HALFSPACE);
-    assert_string_equal(s->prims[3].name, "K");
-    assert_int_equal(s->prims[3].loc.line, 7);
-    assert_int_equal(s->prims[3].loc.col, 1);
+    assert_int_equal(s->prims[0].shape->kind, PRIM_SPHERE);
+    assert_true(s->prims[0].shape->dim[0] == 1.5);
+    assert_int_equal(s->prims[1].shape->kind, PRIM_CYLINDER);
+    assert_true(s->prims[1].shape->dim[0] == 2 && s->prims[1].shape->dim[1] == 3);
+    assert_int_equal(s->prims[2].shape->kind, PRIM_BLOCK);
+    assert_true(s->prims[2].shape->dim[0] == 1 && s->prims[2].shape->dim[1] == 2 && s->prims[2].shape->dim[2] == 3);
+    assert_int_equal(s->prims[3].shape->kind, PRIM_CONE);
+    assert_true(s->prims[3].shape->dim[0] == 1 && s->prims[3].shape->dim[1] == 0 && s->prims[3].shape->dim[2] == 4);
+    assert_int_equal(s->prims[4].shape->kind, PRIM_HALFSPACE);
+    assert_string_equal(s->prims[3].shape->name, "K");
+    assert_int_equal(s->prims[3].shape->loc.line, 7);
+    assert_int_equal(s->prims[3].shape->loc.col, 1);
     for (i = 0; i < 5; i++) {
         int k;
         assert_int_equal(s->nodes[s->roots[i]].op, CSG_LEAF);
         assert_int_equal(s->nodes[s->roots[i]].prim, i);
         for (k = 0; k < SCENE_MAX_FACES; k++)
-            assert_int_equal(s->prims[i].face_map[k], -1);
+            assert_int_equal(s->prims[i].shape->face_map[k], -1);
         assert_point(s->prims[i].world_from_object, 1, 2, 3, 1, 2, 3);
     }
     scene_free(s);
 }
 
-/* DIFF A B C = (A - B) - C; each OBJECT its own copies. */
+/* DIFF A B C = (A - B) - C; each OBJECT its own copies, which share their
+ * definition's shape. */
 static void test_scene_parse_csg_fold(void **state)
 {
     scene *s;
@@ -227,14 +228,17 @@ static void test_scene_parse_csg_fold(void **state)
     r = &s->nodes[s->roots[0]];
     assert_int_equal(r->op, CSG_UNION);
     assert_int_equal(s->nodes[r->right].op, CSG_LEAF);
-    assert_string_equal(s->prims[s->nodes[r->right].prim].name, "A");
+    assert_string_equal(s->prims[s->nodes[r->right].prim].shape->name, "A");
     l = &s->nodes[r->left];                         /* D = (A - B) - C */
     assert_int_equal(l->op, CSG_DIFF);
-    assert_string_equal(s->prims[s->nodes[l->right].prim].name, "C");
+    assert_string_equal(s->prims[s->nodes[l->right].prim].shape->name, "C");
     l = &s->nodes[l->left];
     assert_int_equal(l->op, CSG_DIFF);
-    assert_string_equal(s->prims[s->nodes[l->left].prim].name, "A");
-    assert_string_equal(s->prims[s->nodes[l->right].prim].name, "B");
+    assert_string_equal(s->prims[s->nodes[l->left].prim].shape->name, "A");
+    assert_string_equal(s->prims[s->nodes[l->right].prim].shape->name, "B");
+    assert_int_equal(s->nshapes, 3);
+    assert_ptr_equal(s->prims[s->nodes[l->left].prim].shape, s->prims[s->nodes[r->right].prim].shape);
+    assert_ptr_not_equal(s->prims[s->nodes[l->left].prim].shape, s->prims[s->nodes[l->right].prim].shape);
     r = &s->nodes[s->roots[1]];
     assert_int_equal(r->op, CSG_INTER);
     assert_true(s->nodes[r->left].prim != s->nodes[s->roots[0]].right);
@@ -477,7 +481,7 @@ static void test_scene_parse_continuation(void **state)
     (void)state;
     s = parse_ok(TAIL "CYLINDER C -\n* a comment between the cards\n   2 -\n  3 TRANSLATE 1 -\n"
                  "-\n 2 3\nOBJECT C\n");
-    assert_true(s->prims[0].dim[0] == 2 && s->prims[0].dim[1] == 3);
+    assert_true(s->prims[0].shape->dim[0] == 2 && s->prims[0].shape->dim[1] == 3);
     assert_point(s->prims[0].world_from_object, 0, 0, 0, 1, 2, 3);
     scene_free(s);
     /* a blank card may not follow a continued card */
@@ -496,7 +500,7 @@ static void test_scene_parse_case_insensitive(void **state)
                  "attr Red Color 1 0 0\nsphere Ball 1e0 attr RED rotate z 90 Scale 2\n"
                  "Union u BALL ball\nobject U attr red\n");
     assert_int_equal(s->nprims, 2);
-    assert_string_equal(s->prims[0].name, "BALL");
+    assert_string_equal(s->prims[0].shape->name, "BALL");
     assert_string_equal(s->attrs[1].name, "RED");
     assert_int_equal(s->prims[0].attr, 1);
     scene_free(s);
@@ -510,8 +514,8 @@ static void test_scene_parse_names(void **state)
     /* 16 significant characters, and the characters allowed in a name */
     s = parse_ok(TAIL "SPHERE ABCDEFGHIJKLMNOP 1\nSPHERE A_1$#@ 2\nOBJECT abcdefghijklmnop\n"
                  "OBJECT a_1$#@\n");
-    assert_string_equal(s->prims[0].name, "ABCDEFGHIJKLMNOP");
-    assert_string_equal(s->prims[1].name, "A_1$#@");
+    assert_string_equal(s->prims[0].shape->name, "ABCDEFGHIJKLMNOP");
+    assert_string_equal(s->prims[1].shape->name, "A_1$#@");
     scene_free(s);
     /* attributes and solids have separate name spaces */
     s = parse_ok(TAIL "ATTR X COLOR 1 1 1\nSPHERE X 1 ATTR X\nOBJECT X\n");
@@ -792,7 +796,7 @@ static void test_scene_parse_many_definitions(void **state)
         addf(&buf, &len, &cap, "OBJECT b%d\n", i);
     s = parse_ok(buf);
     assert_int_equal(s->nprims, (20000 + 6) / 7);
-    assert_string_equal(s->prims[1].name, "B19992");
+    assert_string_equal(s->prims[1].shape->name, "B19992");
     assert_point(s->prims[1].world_from_object, 0, 0, 0, 19992 % 1000, 0, 0);
     scene_free(s);
     free(buf);
@@ -878,14 +882,14 @@ static void test_scene_parse_shipped_scenes(void **state)
     assert_int_equal(s->nattrs, 17);
     assert_int_equal(s->nmaps, 4);
     assert_int_equal(s->nbumps, 2);
-    assert_int_equal(s->prims[0].kind, PRIM_CYLINDER);
+    assert_int_equal(s->prims[0].shape->kind, PRIM_CYLINDER);
     assert_string_equal(s->attrs[14].name, "CHROME");
     assert_true(s->attrs[14].mirror == 0.75 && s->attrs[14].exponent == 80);  /* continued card */
-    assert_true(s->view.eye[2] > s->prims[0].dim[1]);    /* seen from above the top face */
+    assert_true(s->view.eye[2] > s->prims[0].shape->dim[1]);    /* seen from above the top face */
     /* the cylinder's SIDE and TOP carry PDS, its BOTTOM does not */
-    assert_string_equal(s->maps[s->prims[0].face_map[0]]->name, "SIDEMAP");
-    assert_string_equal(s->maps[s->prims[0].face_map[1]]->name, "TOPMAP");
-    assert_int_equal(s->prims[0].face_map[2], -1);
+    assert_string_equal(s->maps[s->prims[0].shape->face_map[0]]->name, "SIDEMAP");
+    assert_string_equal(s->maps[s->prims[0].shape->face_map[1]]->name, "TOPMAP");
+    assert_int_equal(s->prims[0].shape->face_map[2], -1);
     scene_free(s);
 
     s = parse_file("scenes/csg.scene");
@@ -902,7 +906,7 @@ static void test_scene_parse_shipped_scenes(void **state)
 
     s = parse_file("scenes/coincident.scene");
     assert_int_equal(s->nprims, 3);
-    assert_true(s->prims[1].dim[1] == s->prims[0].dim[2]);   /* caps on the faces */
+    assert_true(s->prims[1].shape->dim[1] == s->prims[0].shape->dim[2]);   /* caps on the faces */
     assert_point(s->prims[1].world_from_object, 0, 0, 1, 1, 1, 1);
     scene_free(s);
 }
@@ -977,7 +981,7 @@ static void test_scene_parse_column72(void **state)
     col72_warnings = 0;
     snprintf(deck, sizeof deck, "%s%-69s1.5FIG10040\nOBJECT B\n", head, "SPHERE B");
     s = st_parse_ok(deck, &ld);
-    assert_true(s->prims[0].dim[0] == 1.5);
+    assert_true(s->prims[0].shape->dim[0] == 1.5);
     scene_free(s);
     assert_int_equal(col72_warnings, 1);
     assert_string_equal(col72_last, "t.scene:4:70: item '1.5' ends in column 72, against "
@@ -988,7 +992,7 @@ static void test_scene_parse_column72(void **state)
     snprintf(deck, sizeof deck, "%s%-69s1.5 FIG10040\n*%-71s%s\n%-72sANYTHING\nOBJECT B\n", head,
              "SPHERE B", "", "a comment crossing 72", "");
     s = st_parse_ok(deck, &ld);
-    assert_true(s->prims[0].dim[0] == 1.5);
+    assert_true(s->prims[0].shape->dim[0] == 1.5);
     scene_free(s);
     assert_int_equal(col72_warnings, 0);
 }

@@ -464,22 +464,22 @@ static void test_scene_pds_face(void **state)
     for (i = 0; i < s->nprims; i++) {
         const scene_prim *pr = &s->prims[i];
         int want[SCENE_MAX_FACES] = { -1, -1, -1, -1, -1, -1 };
-        if (strcmp(pr->name, "CAN") == 0)
+        if (strcmp(pr->shape->name, "CAN") == 0)
             want[0] = 0, want[1] = 1;
-        else if (strcmp(pr->name, "BOX") == 0)
+        else if (strcmp(pr->shape->name, "BOX") == 0)
             want[5] = 1, want[0] = 0;
-        else if (strcmp(pr->name, "FLOOR") == 0)
+        else if (strcmp(pr->shape->name, "FLOOR") == 0)
             want[0] = 0;
-        else if (strcmp(pr->name, "K") == 0)
+        else if (strcmp(pr->shape->name, "K") == 0)
             want[2] = 1;
         for (k = 0; k < SCENE_MAX_FACES; k++)
-            assert_int_equal(pr->face_map[k], want[k]);
+            assert_int_equal(pr->shape->face_map[k], want[k]);
     }
     scene_free(s);
     /* a deck without FACE leaves every face unbound */
     s = parse_ok(TAIL);
     for (k = 0; k < SCENE_MAX_FACES; k++)
-        assert_int_equal(s->prims[0].face_map[k], -1);
+        assert_int_equal(s->prims[0].shape->face_map[k], -1);
     scene_free(s);
 }
 
@@ -790,7 +790,7 @@ static void test_scene_pds_oom_sweep(void **state)
         mem_fail_after(-1);
         if (r == 0) {
             assert_int_equal(s->nmaps, 8);
-            assert_int_equal(s->prims[0].face_map[0], 0);
+            assert_int_equal(s->prims[0].shape->face_map[0], 0);
             scene_free(s);
             break;
         }

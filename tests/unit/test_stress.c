@@ -119,7 +119,7 @@ static void test_stress_deep_floor(void **state)
         render_fb_free(&fb);
     }
     for (i = 0; i < sc->nprims; i++)
-        if (sc->prims[i].kind == PRIM_HALFSPACE)
+        if (sc->prims[i].shape->kind == PRIM_HALFSPACE)
             sc->prims[i].world_from_object[11] = -20000;
     diag_init(&err);
     assert_int_equal(q16_probe_ops.compile(sc, &cs, &err), DIAG_INPUT);

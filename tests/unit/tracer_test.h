@@ -75,7 +75,7 @@ static inline int tt_find_prim(const scene *sc, const char *name)
 {
     size_t i;
     for (i = 0; i < sc->nprims; i++)
-        if (!strcmp(sc->prims[i].name, name))
+        if (!strcmp(sc->prims[i].shape->name, name))
             return (int)i;
     return -1;
 }
@@ -118,9 +118,9 @@ static inline void tt_to_object(const scene_prim *sp, const double *p, double *q
  * (cone: measured horizontally). */
 static inline double tt_sdf(const scene_prim *sp, const double *q)
 {
-    const double *d = sp->dim;
+    const double *d = sp->shape->dim;
     double r = sqrt(q[0] * q[0] + q[1] * q[1]), f;
-    switch (sp->kind) {
+    switch (sp->shape->kind) {
     case PRIM_SPHERE: return sqrt(r * r + q[2] * q[2]) - d[0];
     case PRIM_CYLINDER:
         f = r - d[0];
