@@ -324,12 +324,14 @@ void NS(prim_box)(const prim *p, double lo_out[3], double hi_out[3])
 
 /* ---- one representation for coincident geometry --------------------- */
 
-/* A plane in the sweep: its key, where its value lies and whose it is.
- * The planes are read where they lie, not copied with their keys: on the
+/* A plane in the sweep: its key and whose it is. The planes are read
+ * where they lie (prim_pref_plane), not copied with their keys: on the
  * 10,000-object deck the scan misses the cache once per plane either way,
  * and a copy sorted through radix_order needed the planes twice (unsorted
- * and sorted, 6 MB each) where 3 MB now hold the sorted references. */
-typedef struct prim_pref { double key; double *pl; int prim, k; } prim_pref;
+ * and sorted, 6 MB each) where 2 MB now hold the sorted references. */
+typedef struct prim_pref { double key; int prim, k; } prim_pref;
+
+static double *prim_pref_plane(prim *prims, const prim_pref *e) { return prims[e->prim].pl_d[e->k]; }
 
 /* The orientation (+1, -1) in which plane q equals plane r within
  * PRIM_SAME_TOL, or 0. */
@@ -472,7 +474,8 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
     long *match = arena_alloc(ar, n * sizeof *match);
     void *rb = arena_alloc(ar, radix_bytes(m));
     uint64_t *sort = arena_alloc(ar, m * sizeof *sort);
-    size_t i, p, q, r0, r1, *ord;
+    size_t i, p, q, r0, r1;
+    radix_ix *ord;
     m = 0;
     for (i = 0; i < n; i++) {
         const prim *a = &prims[i];
@@ -507,7 +510,7 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
         t = sk[p];
         for (q = p;;) {
             size_t from = ord[q];
-            ord[q] = q;
+            ord[q] = (radix_ix)q;
             if (from == p) {
                 sk[q] = t;
                 break;
@@ -561,7 +564,8 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
     uint64_t *sort;
     arena ar;
     void *rb;
-    size_t np = 0, m = 0, i, j, *rank, mark, bytes;
+    size_t np = 0, m = 0, i, j, mark, bytes;
+    radix_ix *rank;
     int k;
     for (i = 0; i < n; i++) {
         np += (size_t)prims[i].nplanes;
@@ -588,15 +592,15 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
     for (i = 0; i < n; i++)
         for (k = 0; k < prims[i].nplanes; k++) {
             prim_pref *e = &pr[rank[np++]];
-            e->pl = prims[i].pl_d[k];
-            e->key = fabs(e->pl[3]);
+            e->key = fabs(prims[i].pl_d[k][3]);
             e->prim = (int)i;
             e->k = k;
         }
     for (i = 0; i < np; i++) {
-        double *q = pr[i].pl, w[4];
+        double w[4];
         for (j = i; j-- > 0 && pr[i].key - pr[j].key <= PRIM_SAME_TOL;) {
-            const double *r = pr[j].pl;
+            double *q = prim_pref_plane(prims, &pr[i]);
+            const double *r = prim_pref_plane(prims, &pr[j]);
             int s;
             if (pr[j].prim == pr[i].prim || !(s = prim_plane_same(q, r)))
                 continue;

@@ -383,7 +383,7 @@ static int si_apart(si_ctx *x, size_t n, double gap)
         goto done;
     {   /* the median extent */
         uint64_t *key = mem_alloc(m * sizeof *key);
-        size_t *ord;
+        radix_ix *ord;
         if (!key)
             goto fail;
         for (j = 0; j < m; j++)

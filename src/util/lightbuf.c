@@ -135,7 +135,7 @@ int lightbuf_build(lightbuf *lb, const double at[3], const double (*lo)[3], cons
     double ext[6][4];
     size_t i, j, nr = 0, total = 0, cells = 0;
     uint64_t *key;
-    size_t *order = NULL;
+    radix_ix *order = NULL;
     int *first, (*cell)[4], f, k, status = -1, m[6] = {0, 0, 0, 0, 0, 0};
     memset(lb, 0, sizeof *lb);
     memcpy(lb->at, at, sizeof lb->at);

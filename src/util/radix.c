@@ -4,8 +4,8 @@
 #include <stdint.h>
 #include <string.h>
 
-/* Digit width: 11 bits, six passes over 2048 buckets (96 KiB of counts);
- * from RADIX_WIDE keys on 14 bits, five passes over 16,384 buckets (640
+/* Digit width: 11 bits, six passes over 2048 buckets (48 KiB of counts);
+ * from RADIX_WIDE keys on 14 bits, five passes over 16,384 buckets (320
  * KiB), where the pass one saves outweighs the longer prefix sums: doubles
  * within a few binades share bits 56 to 63, so four passes do where 11-bit
  * digits need five. Measured on 120,000 plane offsets: 19 % fewer
@@ -22,19 +22,19 @@ size_t radix_bytes(size_t n)
 {
     int bits = radix_bits(n);
     size_t counts = (size_t)((64 + bits - 1) / bits) << bits;
-    if (n > (SIZE_MAX / sizeof(size_t) - counts) / 2)
+    if (n > RADIX_MAX || n > (SIZE_MAX / sizeof(radix_ix) - counts) / 2)
         return 0;
-    return (2 * (n ? n : 1) + counts) * sizeof(size_t);
+    return (2 * (n ? n : 1) + counts) * sizeof(radix_ix);
 }
 
 /* radix_order_in on digits of `bits` bits, a constant in each call so
  * that the loops over the digits unroll. buf: the order's 2n entries (the
  * passes go from one half to the other), then the counts. */
-static inline size_t *radix_order_bits(const uint64_t *keys, size_t n, size_t *buf, int bits)
+static inline radix_ix *radix_order_bits(const uint64_t *keys, size_t n, radix_ix *buf, int bits)
 {
     int passes = (64 + bits - 1) / bits, b;
-    size_t buckets = (size_t)1 << bits, mask = buckets - 1;
-    size_t *ord = buf, *count = buf + 2 * (n ? n : 1), *from, *to, i;
+    size_t buckets = (size_t)1 << bits, mask = buckets - 1, i;
+    radix_ix *ord = buf, *count = buf + 2 * (n ? n : 1), *from, *to;
     memset(count, 0, (size_t)passes * buckets * sizeof *count);
     for (i = 0; i < n; i++) {
         uint64_t k = keys[i];
@@ -47,11 +47,12 @@ static inline size_t *radix_order_bits(const uint64_t *keys, size_t n, size_t *b
     from = NULL;
     to = ord;
     for (b = 0; b < passes; b++) {
-        size_t *c = count + b * buckets, sum = 0, d;
+        radix_ix *c = count + b * buckets, sum = 0, t;
+        size_t d;
         if (n == 0 || c[(keys[0] >> bits * b) & mask] == n)
             continue;
         for (d = 0; d < buckets; d++) {
-            size_t t = c[d];
+            t = c[d];
             c[d] = sum;
             sum += t;
         }
@@ -60,40 +61,41 @@ static inline size_t *radix_order_bits(const uint64_t *keys, size_t n, size_t *b
                 to[c[(keys[from[i]] >> bits * b) & mask]++] = from[i];
         else
             for (i = 0; i < n; i++)
-                to[c[(keys[i] >> bits * b) & mask]++] = i;
+                to[c[(keys[i] >> bits * b) & mask]++] = (radix_ix)i;
         from = to;
         to = to == ord ? ord + n : ord;
     }
     if (!from)
         for (i = 0; i < n; i++)
-            ord[i] = i;
+            ord[i] = (radix_ix)i;
     else if (from != ord)
         memcpy(ord, from, n * sizeof *ord);
     return ord;
 }
 
-size_t *radix_order_in(const uint64_t *keys, size_t n, void *buf)
+radix_ix *radix_order_in(const uint64_t *keys, size_t n, void *buf)
 {
     return radix_bits(n) == RADIX_BITS_WIDE ? radix_order_bits(keys, n, buf, RADIX_BITS_WIDE)
                                             : radix_order_bits(keys, n, buf, RADIX_BITS);
 }
 
-size_t *radix_rank_in(const uint64_t *keys, size_t n, void *buf)
+radix_ix *radix_rank_in(const uint64_t *keys, size_t n, void *buf)
 {
-    size_t *ord = radix_order_in(keys, n, buf), i;
+    radix_ix *ord = radix_order_in(keys, n, buf);
+    size_t i;
     for (i = 0; i < n; i++)             /* the block holds 2n */
-        ord[n + ord[i]] = i;
+        ord[n + ord[i]] = (radix_ix)i;
     memcpy(ord, ord + n, n * sizeof *ord);
     return ord;
 }
 
 /* radix_order or radix_rank in a block of its own */
-static size_t *radix_alloc(const uint64_t *keys, size_t n, size_t *(*run)(const uint64_t *, size_t, void *))
+static radix_ix *radix_alloc(const uint64_t *keys, size_t n, radix_ix *(*run)(const uint64_t *, size_t, void *))
 {
     size_t bytes = radix_bytes(n);
     void *buf = bytes ? mem_alloc(bytes) : NULL;
     return buf ? run(keys, n, buf) : NULL;
 }
 
-size_t *radix_order(const uint64_t *keys, size_t n) { return radix_alloc(keys, n, radix_order_in); }
-size_t *radix_rank(const uint64_t *keys, size_t n) { return radix_alloc(keys, n, radix_rank_in); }
+radix_ix *radix_order(const uint64_t *keys, size_t n) { return radix_alloc(keys, n, radix_order_in); }
+radix_ix *radix_rank(const uint64_t *keys, size_t n) { return radix_alloc(keys, n, radix_rank_in); }

@@ -433,7 +433,8 @@ static void test_util_radix_order_matches_comparator(void **state)
                                   -HUGE_VAL, HUGE_VAL, 1.0000000000000002, 0.9999999999999999,
                                   2.5, -2.5, 1e-9, 1024.0};
     static const size_t sizes[] = {0, 1, 2, 3, 255, 2048, 5000, 40000};
-    size_t t, i, *ord;
+    size_t t, i;
+    radix_ix *ord;
     unsigned seed = 12345;
     (void)state;
     for (t = 0; t < 3 * sizeof sizes / sizeof sizes[0]; t++) {
@@ -502,6 +503,12 @@ static void test_util_radix_order_matches_comparator(void **state)
             assert_null(ord);
         }
         assert_int_equal(radix_bytes(SIZE_MAX / 16), 0);   /* too many to count */
+#if SIZE_MAX > UINT32_MAX
+        assert_int_equal(radix_bytes(RADIX_MAX + (size_t)1), 0);   /* or to index */
+        assert_true(radix_bytes(RADIX_MAX) > 0);
+        ord = radix_order(k, RADIX_MAX + (size_t)1);      /* refused before any read */
+        assert_null(ord);
+#endif
     }
 }
 
