@@ -99,7 +99,7 @@ typedef struct scene_bump {
 
 /* What a primitive statement defines, the same for every placement of it:
  * kept once per placed definition (scene.shapes), not once per placement
- * (10,000 objects of five primitives: 4.4 MB less, docs/performance.md,
+ * (10,000 objects of five primitives: 4 MB less, docs/performance.md,
  * run AU). */
 typedef struct scene_shape {
     prim_kind kind;
