@@ -12,7 +12,7 @@ static const int prim_twin_lin[9] = {0, 1, 2, 4, 5, 6, 8, 9, 10};
 int prim_twin_same(const scene_prim *a, const scene_prim *b)
 {
     int k;
-    if (a->shape->kind != b->shape->kind || memcmp(a->shape->dim, b->shape->dim, sizeof a->shape->dim))
+    if (!scene_shape_alike(a->shape, b->shape))
         return 0;
     for (k = 0; k < 9; k++)
         if (memcmp(&a->world_from_object[prim_twin_lin[k]], &b->world_from_object[prim_twin_lin[k]],

@@ -17,6 +17,7 @@
 #ifndef MODEL_SCENE_H
 #define MODEL_SCENE_H
 #include <stddef.h>
+#include <string.h>
 #include "util/diag.h"
 #include "image/image.h"
 
@@ -110,6 +111,13 @@ typedef struct scene_shape {
     char name[SCENE_NAME_MAX + 1];    /* the deck's name for it */
     scene_loc loc;
 } scene_shape;
+
+/* 1 when two shapes have the same kind and dimensions, bit for bit (one
+ * shape, shared by placements of one definition, at once). */
+static inline int scene_shape_alike(const scene_shape *a, const scene_shape *b)
+{
+    return a == b || (a->kind == b->kind && !memcmp(a->dim, b->dim, sizeof a->dim));
+}
 
 typedef struct scene_prim {
     const scene_shape *shape;         /* its definition, in scene.shapes */

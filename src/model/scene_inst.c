@@ -222,7 +222,7 @@ static int si_same(si_ctx *x, si_obj *m, si_obj *i, double tol)
             continue;
         pm = &sc->prims[m->first + a[k].off];
         pi = &sc->prims[i->first + a[k].off];
-        if (pm->shape->kind != pi->shape->kind || memcmp(pm->shape->dim, pi->shape->dim, sizeof pm->shape->dim))
+        if (!scene_shape_alike(pm->shape, pi->shape))
             return 0;
         if (!leaf++) {
             const double *mm = pm->world_from_object, *mi = pi->world_from_object;
