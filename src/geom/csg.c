@@ -1,6 +1,7 @@
 /* csg — tree compilation (flatten, balance, bound) and span-list
  * classification along a ray (see csg.h). */
 #include "geom/csg.h"
+#include "model/scene_box.h"
 #include "util/dmath.h"
 #include "util/mem.h"
 #include "util/bvh.h"
@@ -18,6 +19,7 @@ typedef struct csg_bound { double c[3], r, lo[3], hi[3]; int bounded; size_t nsp
 typedef struct csg_ctx {
     const scene *sc;
     const prim *prims;
+    double scale;            /* the world's (geom_norm) */
     csg_node *nodes;
     csg_bound *bd;           /* double bounds of the current object's
                                 compiled nodes: node i's is bd[i - b0] (no
@@ -122,10 +124,12 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
     nd->right = op == CSG_LEAF ? pi : r;
     if (op == CSG_LEAF) {
         const prim *p = &x->prims[pi];
+        double a[9];
         b->bounded = p->bounded;
         vec3_to_d(p->bc, b->c);
         b->r = num_to_d(p->br);
-        NS(prim_box)(p, b->lo, b->hi);
+        scene_prim_canon_map(&x->sc->prims[pi], x->scale, a);
+        NS(prim_box)(p, a, b->lo, b->hi);
         b->nspans = 1;
         b->peak = 1;
     } else {
@@ -374,7 +378,8 @@ static void csg_hull(const csg_node *nodes, int ni, int hull[CSG_HULL])
     }
 }
 
-int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg *out, diag *err)
+int NS(csg_build)(const scene *sc, const prim *prims, double scale, const csg_inst *inst, csg *out,
+                  diag *err)
 {
     csg_ctx x;
     int *obj = NULL, *src = NULL, *croot = NULL, nb = 0, nu = 0, k;
@@ -386,6 +391,7 @@ int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg 
     out->prims = prims;
     x.sc = sc;
     x.prims = prims;
+    x.scale = scale;
     x.err = err;
     /* Every scene node yields at most one compiled leaf or operator per
      * operand, so 2 * (nodes + roots) + 2 bounds a tree; more means sharing

@@ -138,13 +138,15 @@ typedef struct csg_hit {
 } csg_hit;
 
 /* Builds the compiled tree of sc over the compiled primitives prims (kept
- * by the tree: the queries read them). inst: NULL, or per root of sc its
+ * by the tree: the queries read them), compiled into a world of scale
+ * `scale` (geom_norm: their boxes come from scene_prim_canon_map). inst: NULL, or per root of sc its
  * csg_inst, master naming an earlier root, itself none, whose tree the
  * root's object is traced through (its own primitives need not be
  * compiled).
  * 0 on success; DIAG_INPUT for malformed trees (bad indices, cycles, nesting
  * deeper than CSG_MAX_NEST); DIAG_IO when memory runs out. */
-int NS(csg_build)(const scene *sc, const prim *prims, const csg_inst *inst, csg *out, diag *err);
+int NS(csg_build)(const scene *sc, const prim *prims, double scale, const csg_inst *inst, csg *out,
+                  diag *err);
 void NS(csg_free)(csg *c);
 /* Bytes of arena a thread needs for csg_intersect. */
 size_t NS(csg_arena_bytes)(const csg *c);

@@ -105,24 +105,19 @@ static const prim_cplane prim_block_planes[6] = {
 static const prim_cplane prim_cap_planes[2] = {{{0, 0, 1}, {0, 0, 1}}, {{0, 0, -1}, {0, 0, 0}}};
 static const prim_cplane prim_half_plane[1] = {{{0, 0, 1}, {0, 0, 0}}};
 
-/* What prim_compile derives from p's kind, dimensions (c: the canonical
- * solid's scale; cc, lo, hi: its box's centre and corners) and the linear
- * part of the placement alone: into lin the canonical map a_d and its
- * inverse (p's frame then points at it), into p minv_s with its scale and
- * the shortcuts of its columns and the plane normals (pl_d[k][0..2]), and
- * into *r the bounding radius. */
-static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, const geom_norm *nm,
-                               const double *c, const double *cc, const double *lo, const double *hi,
+/* What prim_compile derives from p's kind, dimensions (cc, lo, hi: the
+ * canonical box's centre and corners) and the linear part a of the
+ * placement (canonical -> normalised world) alone: into lin its inverse
+ * (p's frame then points at it), into p minv_s with its scale and the
+ * shortcuts of its columns and the plane normals (pl_d[k][0..2]), and into
+ * *r the bounding radius. */
+static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, const double *a,
+                               const double *cc, const double *lo, const double *hi,
                                const prim_cplane *cp, double *r, const char *file, diag *err)
 {
-    const double *m = sp->world_from_object;
     double frob = 0;
     int i, j;
-    /* canonical -> normalised world: A = scale * M3 * diag(c) */
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++)
-            lin->a_d[3 * i + j] = nm->scale * m[4 * i + j] * c[j];
-    if (dmath_m3_inverse(lin->a_d, lin->ainv_d))
+    if (dmath_m3_inverse(a, lin->ainv_d))
         return prim_fail(err, file, sp, "transform is singular");
     p->fr->lin = lin;
     for (i = 0; i < 9; i++)
@@ -137,7 +132,7 @@ static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, con
         return prim_fail(err, file, sp, "too small for the numeric range");
     *r = 0;
     if (sp->shape->kind == PRIM_SPHERE) {
-        *r = dmath_m3_spectral_norm(lin->a_d);
+        *r = dmath_m3_spectral_norm(a);
     } else if (p->bounded) {
         int k;
         /* lo and hi lie evenly about cc, so corner 7 - k is corner k negated
@@ -146,7 +141,7 @@ static int prim_compile_linear(prim *p, prim_lin *lin, const scene_prim *sp, con
             double corner[3], w[3], len;
             for (i = 0; i < 3; i++)
                 corner[i] = ((k >> i) & 1 ? hi[i] : lo[i]) - cc[i];
-            dmath_m3_mul_v(lin->a_d, corner, w);
+            dmath_m3_mul_v(a, corner, w);
             len = dmath_len3(w);
             if (len > *r)
                 *r = len;
@@ -184,7 +179,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
 {
     prim p;
     double c[3] = {1, 1, 1}, cc[3] = {0, 0, 0}, lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
-    double r = 0, bc[3];
+    double r = 0, bc[3], a[9];
     const prim_cplane *cp = NULL;
     int i, j, ncp = 0, st;
     const double *d = sp->shape->dim, *m = sp->world_from_object;
@@ -240,11 +235,12 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     }
     if (p.bounded)                /* the canonical box: model/scene_box.h */
         (void)scene_prim_canon_box(sp, c, lo);
+    scene_canon_map(m, nm->scale, c, a);  /* scene_prim_canon_map's */
     p.nplanes = ncp;
     if (twin) {
         prim_compile_twin(&p, twin);
         r = *radius;
-    } else if ((st = prim_compile_linear(&p, lin, sp, nm, c, cc, lo, hi, cp, &r, file, err))) {
+    } else if ((st = prim_compile_linear(&p, lin, sp, a, cc, lo, hi, cp, &r, file, err))) {
         return st;
     }
     for (i = 0; i < 3; i++)
@@ -252,7 +248,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
     p.org = vec3_from_d(p.fr->org_d);
 
     /* bounding sphere */
-    dmath_m3_mul_v(p.fr->lin->a_d, cc, bc);
+    dmath_m3_mul_v(a, cc, bc);
     for (i = 0; i < 3; i++)
         bc[i] += p.fr->org_d[i];
     if (p.bounded) {
@@ -267,7 +263,7 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
      * replace them by a coincident plane of another primitive) */
     for (i = 0; i < ncp; i++) {
         double pt[3];
-        dmath_m3_mul_v(p.fr->lin->a_d, cp[i].p, pt);
+        dmath_m3_mul_v(a, cp[i].p, pt);
         for (j = 0; j < 3; j++)
             pt[j] += p.fr->org_d[j];
         p.pl_d[i][3] = dmath_dot3(p.pl_d[i], pt);
@@ -287,9 +283,8 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
 /* Exact box: ellipsoid extents for the sphere, the two end discs for
  * cylinder and cone, the corners for the block. Computed when asked rather
  * than stored: only the CSG compile needs it. */
-void NS(prim_box)(const prim *p, double lo_out[3], double hi_out[3])
+void NS(prim_box)(const prim *p, const double a[9], double lo_out[3], double hi_out[3])
 {
-    const double *a = p->fr->lin->a_d;
     int i, k, kind = p->kind;
     if (!p->bounded) {
         memset(lo_out, 0, 3 * sizeof *lo_out);
@@ -347,11 +342,11 @@ static int prim_plane_same(const double *q, const double *r)
     return 0;
 }
 
-/* 1 when b is the same point set as a: b's canonical solid maps onto a's
- * by a symmetry of the canonical solid (any rotation or reflection for the
- * sphere; a rotation or reflection about z for cylinder and cone, and for
- * the cylinder also the flip z -> 1 - z). */
-static int prim_same_solid(const prim *a, const prim *b)
+/* 1 when b (its canonical map bm) is the same point set as a: b's
+ * canonical solid maps onto a's by a symmetry of the canonical solid (any
+ * rotation or reflection for the sphere; a rotation or reflection about z
+ * for cylinder and cone, and for the cylinder also the flip z -> 1 - z). */
+static int prim_same_solid(const prim *a, const prim *b, const double *bm)
 {
     double s[9], w[3], t[3], e = PRIM_SAME_TOL;
     int i, j, k;
@@ -364,7 +359,7 @@ static int prim_same_solid(const prim *a, const prim *b)
         for (i = 0; i < 3; i++) {
             s[3 * i + 2] = 0;
             for (k = 0; k < 3; k++)
-                s[3 * i + 2] += a->fr->lin->ainv_d[3 * i + k] * b->fr->lin->a_d[3 * k + 2];
+                s[3 * i + 2] += a->fr->lin->ainv_d[3 * i + k] * bm[3 * k + 2];
         }
         if (fabs(s[2]) > e || fabs(s[5]) > e || fabs(fabs(s[8]) - 1) > e)
             return 0;
@@ -373,7 +368,7 @@ static int prim_same_solid(const prim *a, const prim *b)
         for (j = 0; j < 3; j++) {
             s[3 * i + j] = 0;
             for (k = 0; k < 3; k++)
-                s[3 * i + j] += a->fr->lin->ainv_d[3 * i + k] * b->fr->lin->a_d[3 * k + j];
+                s[3 * i + j] += a->fr->lin->ainv_d[3 * i + k] * bm[3 * k + j];
         }
     dmath_sub3(b->fr->org_d, a->fr->org_d, w);
     dmath_m3_mul_v(a->fr->lin->ainv_d, w, t);
@@ -408,7 +403,7 @@ typedef struct prim_skey {
     int kind;
 } prim_skey;
 
-/* The world axis (the map's third column) of cylinder or cone a as a unit
+/* The world axis (the third column of its map m) of cylinder or cone a as a unit
  * vector, or zeros for a sphere and for a solid so much wider than long
  * (largest radius column R over length L 2^20 or more) that the axes of two
  * placements of it prim_same_solid takes for one could lie far apart.
@@ -417,9 +412,8 @@ typedef struct prim_skey {
  * most 2^-32) leaves the two axes within an angle whose sine is 2 R / L
  * times 2^-30 plus that rounding, below 2^-8: axes more than 60 degrees
  * apart tell solids apart (prim_skey_alike). */
-static void prim_skey_axis(const prim *a, float ax[3])
+static void prim_skey_axis(const prim *a, const double *m, float ax[3])
 {
-    const double *m = a->fr->lin->a_d;
     double l = sqrt(m[2] * m[2] + m[5] * m[5] + m[8] * m[8]);
     double r0 = sqrt(m[0] * m[0] + m[3] * m[3] + m[6] * m[6]);
     double r1 = sqrt(m[1] * m[1] + m[4] * m[4] + m[7] * m[7]);
@@ -445,6 +439,19 @@ static int prim_skey_alike(const prim_skey *a, const prim_skey *b)
     return a->kind == b->kind && a->cone_a == b->cone_a && a->cone_k == b->cone_k && c * c >= 0.25f * na * nb;
 }
 
+/* 1 when the solids of records a and b are the same (prim_skey_alike,
+ * then prim_same_solid); bm holds b's canonical map once formed, bm[0]
+ * NaN before: most solids meet no candidate alike and never need it. */
+static int prim_skey_same(const prim *prims, const scene_prim *sps, double scale, const prim_skey *a,
+                          const prim_skey *b, double *bm)
+{
+    if (!prim_skey_alike(a, b))
+        return 0;
+    if (isnan(bm[0]))
+        scene_prim_canon_map(&sps[b->i], scale, bm);
+    return prim_same_solid(&prims[a->i], &prims[b->i], bm);
+}
+
 /* The bytes of scratch prim_share works in for np planes, m curved solids
  * and n primitives, the larger of its two phases' needs (each part rounded
  * up to ARENA_ALIGN): the planes' references and the order that sorts
@@ -468,7 +475,7 @@ static size_t prim_share_bytes(size_t np, size_t m, size_t n)
  * window, not n^2 / 2 comparisons; of a run of equal keys (copies piled
  * at one place) only the earlier solids up to the first match.
  * Works in ar (prim_share_bytes). */
-static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
+static void prim_share_solids(prim *prims, const scene_prim *sps, double scale, size_t n, size_t m, arena *ar)
 {
     prim_skey *sk = arena_alloc(ar, m * sizeof *sk);
     long *match = arena_alloc(ar, n * sizeof *match);
@@ -480,13 +487,14 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
     for (i = 0; i < n; i++) {
         const prim *a = &prims[i];
         static const double w[3] = {1, 0.7548776662466927, 0.5698402909980532};
-        double cz = a->kind == PRIM_SPHERE ? 0 : 0.5, key = 0, win = 0;
+        double cz = a->kind == PRIM_SPHERE ? 0 : 0.5, key = 0, win = 0, am[9];
         int k;
         match[i] = -1;
         if (!a->bounded || a->kind == PRIM_BLOCK)
             continue;
+        scene_prim_canon_map(&sps[i], scale, am);
         for (k = 0; k < 3; k++) {
-            const double *row = a->fr->lin->a_d + 3 * k;
+            const double *row = am + 3 * k;
             key += w[k] * (a->fr->org_d[k] + row[2] * cz);
             win += w[k] * sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
         }
@@ -495,7 +503,7 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
         sk[m].kind = a->kind;
         sk[m].cone_a = a->cone_a;
         sk[m].cone_k = a->cone_k;
-        prim_skey_axis(a, sk[m].ax);
+        prim_skey_axis(a, am, sk[m].ax);
         sort[m] = radix_key_d(key);
         sk[m++].i = i;
     }
@@ -521,6 +529,8 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
     }
     for (p = 0, r0 = r1 = 0; p < m; p++) {
         size_t bi = sk[p].i;
+        double bm[9];
+        bm[0] = NAN;          /* formed for the first candidate alike */
         if (p == r1) {            /* the run of keys equal to p's: [r0, r1) */
             r0 = p;
             for (r1 = p + 1; r1 < m && sk[r1].key == sk[p].key; r1++)
@@ -530,18 +540,18 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
          * (copies piled at one place cost one comparison each, not one
          * per earlier copy) */
         for (q = r0; q < p; q++)
-            if (prim_skey_alike(&sk[q], &sk[p]) && prim_same_solid(&prims[sk[q].i], &prims[bi])) {
+            if (prim_skey_same(prims, sps, scale, &sk[q], &sk[p], bm)) {
                 match[bi] = (long)sk[q].i;
                 break;
             }
         /* the window's other keys, whatever their indices */
         for (q = r0; q-- > 0 && sk[p].key - sk[q].key <= 2 * sk[p].win;)
             if (sk[q].i < bi && (match[bi] < 0 || sk[q].i < (size_t)match[bi])
-                && prim_skey_alike(&sk[q], &sk[p]) && prim_same_solid(&prims[sk[q].i], &prims[bi]))
+                && prim_skey_same(prims, sps, scale, &sk[q], &sk[p], bm))
                 match[bi] = (long)sk[q].i;
         for (q = r1; q < m && sk[q].key - sk[p].key <= 2 * sk[p].win; q++)
             if (sk[q].i < bi && (match[bi] < 0 || sk[q].i < (size_t)match[bi])
-                && prim_skey_alike(&sk[q], &sk[p]) && prim_same_solid(&prims[sk[q].i], &prims[bi]))
+                && prim_skey_same(prims, sps, scale, &sk[q], &sk[p], bm))
                 match[bi] = (long)sk[q].i;
     }
     for (i = 0; i < n; i++)           /* in index order: an earlier copy is final */
@@ -558,7 +568,7 @@ static void prim_share_solids(prim *prims, size_t n, size_t m, arena *ar)
         }
 }
 
-int NS(prim_share)(prim *prims, size_t n, diag *err)
+int NS(prim_share)(prim *prims, const scene_prim *sps, double scale, size_t n, diag *err)
 {
     prim_pref *pr;
     uint64_t *sort;
@@ -616,7 +626,7 @@ int NS(prim_share)(prim *prims, size_t n, diag *err)
     }
     arena_release(&ar, 0);
     if (m >= 2)
-        prim_share_solids(prims, n, m, &ar);
+        prim_share_solids(prims, sps, scale, n, m, &ar);
     arena_free(&ar);
     return 0;
 }
@@ -900,7 +910,7 @@ const double *NS(prim_face_normal)(const prim *p, int face)
     return prim_flat_normal(p, face);
 }
 
-void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out)
+void NS(prim_surface)(const prim *p, int face, vec3 pt, const double *map, geom_surface *out)
 {
     double w[3], l[3], nl[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
     double u = 0, v = 0, rho = 0, th = 0, ct = 1, st = 0, len;
@@ -909,7 +919,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         out->p[i] = w[i];
-    if (!need_uv && (fn = prim_flat_normal(p, face)) != NULL) {
+    if (!map && (fn = prim_flat_normal(p, face)) != NULL) {
         /* a planar face: its normal is stored, nothing else is asked for */
         for (i = 0; i < 3; i++)
             out->n[i] = fn[i];
@@ -919,14 +929,14 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         w[i] -= p->fr->org_d[i];
     dmath_m3_mul_v(p->fr->lin->ainv_d, w, l);
     /* the sphere's normal alone needs no angle */
-    if (need_uv || p->kind != PRIM_SPHERE) {
+    if (map || p->kind != PRIM_SPHERE) {
         rho = sqrt(l[0] * l[0] + l[1] * l[1]);
         if (rho > 0) {
             ct = l[0] / rho;
             st = l[1] / rho;
         }
     }
-    if (need_uv) {
+    if (map) {
         th = atan2(l[1], l[0]);
         if (th < 0)
             th += 2 * DMATH_PI;
@@ -934,7 +944,7 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
     switch (p->kind) {
     case PRIM_SPHERE:
         u = th / (2 * DMATH_PI);
-        v = need_uv ? 0.5 + atan2(l[2], rho) / DMATH_PI : 0;
+        v = map ? 0.5 + atan2(l[2], rho) / DMATH_PI : 0;
         nl[0] = l[0]; nl[1] = l[1]; nl[2] = l[2];
         du[0] = -2 * DMATH_PI * l[1]; du[1] = 2 * DMATH_PI * l[0];
         dv[0] = -DMATH_PI * l[2] * ct; dv[1] = -DMATH_PI * l[2] * st; dv[2] = DMATH_PI * rho;
@@ -979,11 +989,11 @@ void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surfac
         du[0] = 1; dv[1] = 1;
         break;
     }
-    if (need_uv) {
+    if (map) {
         out->u = prim_clamp01(u);
         out->v = prim_clamp01(v);
-        dmath_m3_mul_v(p->fr->lin->a_d, du, out->dpdu);
-        dmath_m3_mul_v(p->fr->lin->a_d, dv, out->dpdv);
+        dmath_m3_mul_v(map, du, out->dpdu);
+        dmath_m3_mul_v(map, dv, out->dpdv);
     }
     if ((fn = prim_flat_normal(p, face)) != NULL) {
         for (i = 0; i < 3; i++)

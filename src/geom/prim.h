@@ -71,12 +71,15 @@ typedef struct prim_plane {
 typedef char prim_plane_is_4_doubles[sizeof(prim_plane) == 4 * sizeof(double) ? 1 : -1];
 #endif
 
-/* The linear part of a primitive's placement in binary64: the canonical
- * map a_d (world_from_canonical) and its inverse ainv_d. Twins (a kind,
- * dimensions and linear part alike bit for bit: model/prim_twin.h) share
- * one. */
+/* The linear part of a primitive's placement in binary64: the inverse
+ * ainv_d of its canonical map (world_from_canonical), which every hit
+ * reads. The map itself is formed again from the scene primitive where it
+ * is read (scene_prim_canon_map: the compile, a hit's tangents): kept, it
+ * made 10,000 distinct parts' compile 3.6 MB larger (docs/performance.md,
+ * run AV). Twins (a kind, dimensions and linear part alike bit for bit:
+ * model/prim_twin.h) share one. */
 typedef struct prim_lin {
-    double a_d[9], ainv_d[9];
+    double ainv_d[9];
 } prim_lin;
 
 /* A primitive's placement in binary64: its linear part and its origin
@@ -169,10 +172,11 @@ int NS(prim_compile)(const scene_prim *sp, int id, const geom_norm *nm, prim_pla
  * through an equivalent transform) shares that primitive's curved-face data.
  * Intersected with one ray they then give bit-identical parameters. 0, or
  * DIAG_IO when memory runs out. */
-int NS(prim_share)(prim *prims, size_t n, diag *err);
+int NS(prim_share)(prim *prims, const scene_prim *sps, double scale, size_t n, diag *err);
 
-/* The bounding box of p in the world (lo, hi); zeros for the half-space. */
-void NS(prim_box)(const prim *p, double lo[3], double hi[3]);
+/* The bounding box of p in the world (lo, hi), a its canonical map
+ * (scene_prim_canon_map); zeros for the half-space. */
+void NS(prim_box)(const prim *p, const double a[9], double lo[3], double hi[3]);
 
 /* Intersects r with p; the bounding test rejects p when it lies wholly
  * outside the parameters [tmin, tmax] (the span itself is not clipped).
@@ -197,10 +201,11 @@ static inline int NS(prim_intersect_tc)(const prim *p, const prim_ray *r, num tc
 }
 
 /* Surface data of face `face` of p at world point pt (a hit point). With
- * need_uv 0 only p and n are written ((u,v), dP/du and dP/dv are left as
+ * map NULL only p and n are written ((u,v), dP/du and dP/dv are left as
  * they were): no trigonometry, and a planar face only copies its stored
- * normal. */
-void NS(prim_surface)(const prim *p, int face, vec3 pt, int need_uv, geom_surface *out);
+ * normal. Else map is p's canonical map (scene_prim_canon_map), which
+ * carries the tangents into the world. */
+void NS(prim_surface)(const prim *p, int face, vec3 pt, const double *map, geom_surface *out);
 /* The stored outward unit normal of face `face` of p when the face is
  * planar (the normal prim_surface gives anywhere on it), else NULL. */
 const double *NS(prim_face_normal)(const prim *p, int face);

@@ -15,6 +15,13 @@ int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3])
     }
 }
 
+void scene_prim_canon_map(const scene_prim *sp, double scale, double a[9])
+{
+    double c[3] = {1, 1, 1}, lo[3];
+    (void)scene_prim_canon_box(sp, c, lo);
+    scene_canon_map(sp->world_from_object, scale, c, a);
+}
+
 /* Coordinate i of the deck-space corner k (bit j: the high end on axis j)
  * of the canonical box l..h scaled by c, under m. */
 static double scene_box_corner(const double *m, int i, int k, const double *c, const double *l,

@@ -16,6 +16,24 @@
  * the primitive compile, the deck-space box below and its test read it. */
 int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3]);
 
+/* The linear part of primitive sp's canonical map into a world of scale
+ * `scale` (world_from_object's, each column k times c[k] of
+ * scene_prim_canon_box, 1 for a half-space): a[3 i + j] = scale m[i][j]
+ * c[j], formed in that order (scene_canon_map), so that every reader gets
+ * the same bits. The compiled primitive keeps only its inverse: this is
+ * formed again where the map itself is read (the compile, a hit's
+ * tangents). */
+void scene_prim_canon_map(const scene_prim *sp, double scale, double a[9]);
+
+/* The same from the placement m (world_from_object) and the scale c. */
+static inline void scene_canon_map(const double *m, double scale, const double c[3], double a[9])
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            a[3 * i + j] = scale * m[4 * i + j] * c[j];
+}
+
 /* Grows lo/hi to hold primitive sp (bounded kinds only; a half-space
  * leaves them as they are). */
 void scene_prim_grow_box(const scene_prim *sp, double *lo, double *hi);

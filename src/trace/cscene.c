@@ -26,10 +26,10 @@ void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int ne
 {
     const csg_inst *in;
     const prim *p = cscene_prim_of(cs, pi, &in);
-    double w[3], m[3];
+    double w[3], m[3], a[9];
     int i;
     if (!in->turn) {
-        NS(prim_surface)(p, face, vec3_add(pt, in->shift), need_uv, out);
+        NS(prim_surface)(p, face, vec3_add(pt, in->shift), NS(cscene_map)(cs, p, need_uv, a), out);
         vec3_to_d(pt, out->p);    /* the point itself, not its master's */
         return;
     }
@@ -38,7 +38,7 @@ void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int ne
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         m[i] = dmath_dot3(in->turn->q + 3 * i, w) + in->shift_d[i];
-    NS(prim_surface)(p, face, vec3_from_d(m), need_uv, out);
+    NS(prim_surface)(p, face, vec3_from_d(m), NS(cscene_map)(cs, p, need_uv, a), out);
     memcpy(out->p, w, sizeof w);
     NS(cscene_inst_back)(in, out->n);
     NS(cscene_inst_back)(in, out->dpdu);
@@ -219,14 +219,16 @@ static int cscene_ranges(const scene *sc, cscene *cs, diag *err)
         if (cs->prim_root && cs->prim_root[i] >= 0)
             continue;             /* its master's is checked */
         if (p->bounded) {
-            double aspect = 0;
+            double aspect = 0, a[9];
             bounded = 1;
             /* the Frobenius norms' product is never below the aspect by
              * more than rounding (dmath_m3_frobenius): a primitive it keeps
              * 1e-9 under the limit needs no eigenvalues */
+            if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK)
+                scene_prim_canon_map(sp, cs->nm.scale, a);
             if (CSCENE_ASPECT_MAX > 0 && p->kind != PRIM_BLOCK
-                && dmath_m3_frobenius(p->fr->lin->a_d) * dmath_m3_frobenius(p->fr->lin->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
-                && (aspect = dmath_m3_spectral_norm(p->fr->lin->a_d) * dmath_m3_spectral_norm(p->fr->lin->ainv_d))
+                && dmath_m3_frobenius(a) * dmath_m3_frobenius(p->fr->lin->ainv_d) > CSCENE_ASPECT_MAX * (1 - 1e-9)
+                && (aspect = dmath_m3_spectral_norm(a) * dmath_m3_spectral_norm(p->fr->lin->ainv_d))
                        > CSCENE_ASPECT_MAX)
                 return diag_at(err, DIAG_INPUT, cscene_file(sc), sp->shape->loc.line, sp->shape->loc.col,
                                "primitive '%s': aspect ratio %.3g is beyond the %s limit of %g "
@@ -642,7 +644,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         npl += (size_t)prim_nplanes(sp->shape->kind);
     }
     prim_twin_free(&tw);
-    if ((status = NS(prim_share)(cs->prims, cs->nprims, err)) || (status = cscene_ranges(sc, cs, err)))
+    if ((status = NS(prim_share)(cs->prims, sc->prims, cs->nm.scale, cs->nprims, err))
+        || (status = cscene_ranges(sc, cs, err)))
         goto fail;
     for (i = 0; i < sc->nattrs; i++) {
         const scene_attr *a = &sc->attrs[i];
@@ -686,7 +689,8 @@ int NS(cscene_compile)(const scene *sc, cscene **out, diag *err)
         for (j = 0; j < 3; j++)
             cs->lights[i].rgb[j] = l->color[j] * l->intensity;
     }
-    if ((status = NS(csg_build)(sc, cs->prims, cs->root_inst, &cs->tree, err)) || (status = cscene_lights(cs, err)) ||
+    if ((status = NS(csg_build)(sc, cs->prims, cs->nm.scale, cs->root_inst, &cs->tree, err)) ||
+        (status = cscene_lights(cs, err)) ||
         (status = cscene_maps(sc, cs, err)) || (status = cscene_faces(sc, cs, nown, err)))
         goto fail;
     *out = cs;

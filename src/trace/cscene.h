@@ -7,6 +7,7 @@
 #define TRACE_CSCENE_H
 #include "util/dmath.h"
 #include "util/lightbuf.h"
+#include "model/scene_box.h"
 #include "geom/csg.h"
 #include "pds/pds.h"
 #include <string.h>
@@ -131,6 +132,16 @@ static inline void NS(cscene_inst_back)(const csg_inst *in, double v[3])
     memcpy(v, w, sizeof w);
 }
 
+/* a: compiled primitive p's canonical map (scene_prim_canon_map) where
+ * need_uv, for prim_surface's tangents; else NULL. */
+static inline const double *NS(cscene_map)(const cscene *cs, const prim *p, int need_uv, double a[9])
+{
+    if (!need_uv)
+        return NULL;
+    scene_prim_canon_map(&cs->sc->prims[p->id], cs->nm.scale, a);
+    return a;
+}
+
 /* prim_surface of primitive pi (any, an instance's included) at pt: an
  * instance's out of line, so that a scene without them pays one test. */
 void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out);
@@ -139,8 +150,10 @@ static inline void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 p
 {
     if (cs->prim_root && cs->prim_root[pi] >= 0)
         NS(cscene_surface_inst)(cs, pi, face, pt, need_uv, out);
-    else
-        NS(prim_surface)(&cs->prims[pi], face, pt, need_uv, out);
+    else {
+        double a[9];
+        NS(prim_surface)(&cs->prims[pi], face, pt, NS(cscene_map)(cs, &cs->prims[pi], need_uv, a), out);
+    }
 }
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:

@@ -158,7 +158,7 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
         diag_init(&err);
         for (n = 0; n < sc->nprims; n++) {
             const scene_prim *sp = &sc->prims[n];
-            double lo[3] = {-1, -1, 0}, cc[3] = {0, 0, 0.5}, r = 0;
+            double lo[3] = {-1, -1, 0}, cc[3] = {0, 0, 0.5}, r = 0, a[9];
             prim p;
             prim_plane pl[6];
             double pl_d[6][4];
@@ -173,11 +173,12 @@ static void test_cscene_bounding_radius_from_all_corners(void **state)
                 double radius;
                 assert_int_equal(f64_prim_compile(sp, (int)n, &cs->nm, pl, pl_d, &fr, &lin, NULL, &radius, &p, "test", &err), 0);
             }
+            scene_prim_canon_map(sp, cs->nm.scale, a);
             for (k = 0; k < 8; k++) {
                 double corner[3], w[3], len;
                 for (i = 0; i < 3; i++)
                     corner[i] = ((k >> i) & 1 ? 1 : lo[i]) - cc[i];
-                dmath_m3_mul_v(p.fr->lin->a_d, corner, w);
+                dmath_m3_mul_v(a, corner, w);
                 len = dmath_len3(w);
                 if (len > r)
                     r = len;
@@ -204,10 +205,11 @@ static void test_cscene_node_boxes_rounded_outwards(void **state)
         int k, i;
         for (k = 0; k < cs->tree.nnodes; k++) {
             const csg_node *nd = &cs->tree.nodes[k];
-            double lo[3], hi[3];
+            double lo[3], hi[3], a[9];
             if (nd->op != CSG_LEAF || !nd->bounded)
                 continue;
-            f64_prim_box(&cs->prims[csg_leaf_prim(nd)], lo, hi);
+            scene_prim_canon_map(&sc->prims[csg_leaf_prim(nd)], cs->nm.scale, a);
+            f64_prim_box(&cs->prims[csg_leaf_prim(nd)], a, lo, hi);
             for (i = 0; i < 3; i++) {
                 double l = lo[i] - CSG_BOX_PAD, h = hi[i] + CSG_BOX_PAD;
                 if (!(nd->lo[i] <= l && nextafterf(nd->lo[i], INFINITY) > l && nd->hi[i] >= h
