@@ -400,7 +400,10 @@ int NS(csg_build)(const scene *sc, const prim *prims, double scale, const csg_in
     if (cap > (size_t)1 << 26)
         return csg_err(&x, DIAG_INPUT, "CSG tree too large");
     x.cap = (int)cap;
-    out->nodes_mem = mem_calloc(cap + MEM_LINE / sizeof *x.nodes, sizeof *x.nodes);   /* and a line to align */
+    /* and a line to align; most trees compile to as many nodes as the
+     * scene's */
+    out->nodes_mem = mem_calloc_part(cap + MEM_LINE / sizeof *x.nodes, sizeof *x.nodes,
+                                     sc->nnodes + sc->nroots + MEM_LINE / sizeof *x.nodes);
     x.nodes = mem_align_line(out->nodes_mem);
     obj = mem_calloc(sc->nroots + 1, sizeof *obj);
     hull = mem_calloc(sc->nroots + 1, sizeof *hull);

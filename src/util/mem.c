@@ -133,10 +133,16 @@ void *mem_alloc(size_t size)
 
 void *mem_calloc(size_t count, size_t size)
 {
+    return mem_calloc_part(count, size, count);
+}
+
+void *mem_calloc_part(size_t count, size_t size, size_t likely)
+{
+    size_t n;
     if ((size && count > SIZE_MAX / size) || mem_should_fail())
         return NULL;
-    size = mem_huge_size(count * size);
-    return size ? mem_huge(calloc(1, size), size) : calloc(1, 1);
+    n = mem_huge_size(count * size);
+    return n ? mem_huge(calloc(1, n), likely < count ? likely * size : n) : calloc(1, 1);
 }
 
 void *mem_calloc_sparse(size_t count, size_t size)

@@ -16,6 +16,13 @@ void *mem_realloc(void *p, size_t size);      /* NULL on failure; p untouched */
  * (the compiled scene's per-primitive arrays where instances leave most
  * of them unwritten). */
 void *mem_calloc_sparse(size_t count, size_t size);
+/* As mem_calloc, for an array of which about the first `likely` elements
+ * are written (a bound on the count that is twice what most inputs
+ * need): the advice covers the huge pages those elements fill, and the
+ * rest faults in 4 KiB pages as it is written, so that a huge page is not
+ * cleared for the few elements that spill into it (the CSG compile's
+ * nodes, docs/performance.md, run AV). */
+void *mem_calloc_part(size_t count, size_t size, size_t likely);
 void  mem_free(void *p);
 char *mem_strdup(const char *s);
 

@@ -54,6 +54,28 @@ static void test_util_mem_fail_and_overflow(void **state)
     assert_null(mem_calloc((size_t)-1, 16));
 }
 
+/* 1 when the mapping of this process that holds address at carries the
+ * huge-page advice ("hg" in its VmFlags, proc(5) smaps), 0 when not, -1
+ * when no mapping holds it. */
+static int test_util_advised(uintptr_t at)
+{
+    FILE *f = fopen("/proc/self/smaps", "r");
+    char line[512];
+    int in = 0, flagged = -1;
+    assert_non_null(f);
+    while (fgets(line, sizeof line, f)) {
+        unsigned long l, h;
+        if (sscanf(line, "%lx-%lx ", &l, &h) == 2 && strchr(line, '-') < strchr(line, ' ')) {
+            in = at >= (uintptr_t)l && at < (uintptr_t)h;
+        } else if (in && !strncmp(line, "VmFlags:", 8)) {
+            flagged = strstr(line, " hg") != NULL;
+            break;
+        }
+    }
+    fclose(f);
+    return flagged;
+}
+
 /* A block of at least MEM_HUGE_MIN bytes is asked of malloc padded to
  * whole 2 MiB pages, and the pages it covers are advised for huge pages
  * (mem.h). On Linux with transparent huge
@@ -105,29 +127,26 @@ static void test_util_mem_huge_pages(void **state)
     }
     fclose(f);
     {
-        size_t size = 8u << 20;
-        unsigned char *p = mem_alloc(size);
-        uintptr_t lo, hi;
-        int in = 0, flagged = -1;
+        size_t size = 8u << 20, i;
+        unsigned char *p = mem_alloc(size), *q;
         assert_non_null(p);
         memset(p, 1, size);
         assert_int_equal(mem_huge_range((uintptr_t)p, size, &a, &n), 1);
-        f = fopen("/proc/self/smaps", "r");
-        assert_non_null(f);
-        while (fgets(line, sizeof line, f)) {
-            unsigned long l, h;
-            if (sscanf(line, "%lx-%lx ", &l, &h) == 2 && strchr(line, '-') < strchr(line, ' ')) {
-                lo = (uintptr_t)l;
-                hi = (uintptr_t)h;
-                in = a >= lo && a < hi;
-            } else if (in && !strncmp(line, "VmFlags:", 8)) {
-                flagged = strstr(line, " hg") != NULL;
-                break;
-            }
-        }
-        fclose(f);
+        assert_int_equal(test_util_advised(a), 1);
         mem_free(p);
-        assert_int_equal(flagged, 1);
+        /* mem_calloc_part: the pages its first `likely` elements fill,
+         * and not the rest of the block, which reads as zeros */
+        q = mem_calloc_part(size, 1, 5u << 20);
+        assert_non_null(q);
+        for (i = 0; i < size; i += 4096)
+            assert_int_equal(q[i], 0);
+        assert_int_equal(mem_huge_range((uintptr_t)q, 5u << 20, &a, &n), 1);
+        assert_true(n >= 2 * M && (uintptr_t)q + (5u << 20) - (a + n) < M + MEM_HUGE_SLACK);
+        assert_int_equal(test_util_advised(a), 1);
+        assert_int_equal(test_util_advised(a + n - 1), 1);
+        assert_int_equal(test_util_advised(a + n), 0);
+        assert_int_equal(test_util_advised((uintptr_t)q + size - 1), 0);
+        mem_free(q);
     }
 }
 
