@@ -1,9 +1,9 @@
 /* scene_box — the box in deck units that holds a bounded scene primitive:
  * its canonical bounding box under world_from_object, each coordinate the
- * least and greatest of the eight corners as formed in double; and the
- * canonical box it is the image of. Read by the
- * normalisation (cscene) and by the search for copies
- * (scene_inst). */
+ * least and greatest of the eight corners as formed in double; the
+ * canonical box it is the image of, and the canonical map itself. Read by
+ * the normalisation (cscene), the search for copies (scene_inst) and the
+ * compile (geom/prim.h, geom/csg.h), and by a hit's tangents. */
 #ifndef MODEL_SCENE_BOX_H
 #define MODEL_SCENE_BOX_H
 #include "model/scene.h"
