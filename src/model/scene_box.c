@@ -2,26 +2,6 @@
 #include "model/scene_box.h"
 #include <math.h>
 
-int scene_prim_canon_box(const scene_prim *sp, double c[3], double lo[3])
-{
-    const double *d = sp->shape->dim;
-    switch (sp->shape->kind) {
-    case PRIM_SPHERE:   c[0] = c[1] = c[2] = d[0]; lo[0] = lo[1] = lo[2] = -1; return 0;
-    case PRIM_CYLINDER: c[0] = c[1] = d[0]; c[2] = d[1]; lo[0] = lo[1] = -1; lo[2] = 0; return 0;
-    case PRIM_CONE:     c[0] = c[1] = d[0] > d[1] ? d[0] : d[1]; c[2] = d[2];
-                        lo[0] = lo[1] = -1; lo[2] = 0; return 0;
-    case PRIM_BLOCK:    c[0] = d[0]; c[1] = d[1]; c[2] = d[2]; lo[0] = lo[1] = lo[2] = 0; return 0;
-    default:            return -1;
-    }
-}
-
-void scene_prim_canon_map(const scene_prim *sp, double scale, double a[9])
-{
-    double c[3] = {1, 1, 1}, lo[3];
-    (void)scene_prim_canon_box(sp, c, lo);
-    scene_canon_map(sp->world_from_object, scale, c, a);
-}
-
 /* Coordinate i of the deck-space corner k (bit j: the high end on axis j)
  * of the canonical box l..h scaled by c, under m. */
 static double scene_box_corner(const double *m, int i, int k, const double *c, const double *l,
