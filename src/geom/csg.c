@@ -54,42 +54,14 @@ static int csg_err(csg_ctx *x, int status, const char *what)
     return diag_at(x->err, status, x->sc->source ? x->sc->source : "", 0, 0, "%s", what);
 }
 
-/* The binary32 next to f, upwards (up 1) or downwards: its bits one
- * step from zero or towards it, past zero the least subnormal. Inline
- * where nextafterf is a call, made for a node's six bounds. */
-static float csg_f32_next(float f, int up)
-{
-    uint32_t b;
-    memcpy(&b, &f, sizeof b);
-    if (f == 0)
-        b = up ? 1u : 0x80000001u;
-    else
-        b += (f > 0) == (up != 0) ? 1u : UINT32_MAX;
-    memcpy(&f, &b, sizeof f);
-    return f;
-}
-
-/* x in binary32, rounded down, and rounded up. */
-static float csg_f32_down(double x)
-{
-    float f = (float)x;
-    return (double)f > x ? csg_f32_next(f, 0) : f;
-}
-
-static float csg_f32_up(double x)
-{
-    float f = (float)x;
-    return (double)f < x ? csg_f32_next(f, 1) : f;
-}
-
 /* The node's box: its bound's box padded outwards by CSG_BOX_PAD, then
  * rounded outwards to binary32. */
 static void csg_set_box(csg_node *nd, const csg_bound *b)
 {
     int i;
     for (i = 0; i < 3; i++) {
-        nd->lo[i] = csg_f32_down(b->lo[i] - CSG_BOX_PAD);
-        nd->hi[i] = csg_f32_up(b->hi[i] + CSG_BOX_PAD);
+        nd->lo[i] = dmath_f32_round(b->lo[i] - CSG_BOX_PAD, 0);
+        nd->hi[i] = dmath_f32_round(b->hi[i] + CSG_BOX_PAD, 1);
     }
 }
 

@@ -6,6 +6,8 @@
 #ifndef UTIL_DMATH_H
 #define UTIL_DMATH_H
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #define DMATH_PI 3.14159265358979323846
 
@@ -84,5 +86,21 @@ double dmath_m3_spectral_norm(const double *m);
 static inline double dmath_m3_frobenius(const double *m)
 {
     return sqrt(dmath_norm2_3(m) + dmath_norm2_3(m + 3) + dmath_norm2_3(m + 6));
+}
+/* x in binary32 rounded upwards (up 1) or downwards: the nearest binary32,
+ * stepped one unit in the last place (its bits one from zero or towards
+ * it; past zero the least subnormal) where it lies on the wrong side of x.
+ * Without a branch, as about half the conversions step and a branch on
+ * that mispredicts (docs/performance.md, run AW); nextafterf is a call. */
+static inline float dmath_f32_round(double x, int up)
+{
+    float f = (float)x;
+    uint32_t b, s, m;
+    memcpy(&b, &f, sizeof b);
+    m = (uint32_t)0 - (uint32_t)(up ? (double)f < x : (double)f > x);
+    s = (b & 0x7fffffffu) == 0 ? (up ? 1u : 0x80000001u) : (b >> 31) != (uint32_t)(up != 0) ? b + 1 : b - 1;
+    b = (s & m) | (b & ~m);
+    memcpy(&f, &b, sizeof f);
+    return f;
 }
 #endif

@@ -1,5 +1,6 @@
 /* lightbuf — a light buffer over boxes (see lightbuf.h). */
 #include "util/lightbuf.h"
+#include "util/dmath.h"
 #include "util/mem.h"
 #include "util/radix.h"
 #include <math.h>
@@ -68,9 +69,7 @@ static int lightbuf_is_near(const lightbuf *lb, const double lo[3], const double
  * root, then rounded down. */
 static float lightbuf_down(double d2)
 {
-    double v = sqrt(d2) * (1 - 0x1p-20);
-    float f = (float)v;
-    return (double)f > v ? nextafterf(f, 0.0f) : f;
+    return dmath_f32_round(sqrt(d2) * (1 - 0x1p-20), 0);
 }
 
 /* The cells of face r->f that rect r covers: [c[0], c[1]] x [c[2], c[3]].

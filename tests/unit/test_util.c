@@ -588,6 +588,47 @@ static void test_util_frobenius_bounds_spectral_norm(void **state)
     }
 }
 
+/* dmath_f32_round against libm: the binary32 next to x on each side (x
+ * itself where it is one), checked with nextafterf over random doubles of
+ * every binade and sign, the two zeros, subnormals, and values past the
+ * largest binary32; a few by their bits. */
+static void test_util_f32_round_brackets(void **state)
+{
+    static const struct { double x; uint32_t down, up; } bits[] = {
+        {0.1, 0x3dccccccu, 0x3dcccccdu},   {-0.1, 0xbdcccccdu, 0xbdccccccu},
+        {1e-50, 0x00000000u, 0x00000001u}, {-1e-50, 0x80000001u, 0x80000000u},
+        {0.0, 0x00000000u, 0x00000000u},   {1e39, 0x7f7fffffu, 0x7f800000u},
+    };
+    uint64_t seed = 88172645463325252u;
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof bits / sizeof bits[0]; i++) {
+        float d = dmath_f32_round(bits[i].x, 0), u = dmath_f32_round(bits[i].x, 1);
+        uint32_t bd, bu;
+        memcpy(&bd, &d, sizeof bd);
+        memcpy(&bu, &u, sizeof bu);
+        assert_int_equal(bd, bits[i].down);
+        assert_int_equal(bu, bits[i].up);
+    }
+    for (i = 0; i < 1000000; i++) {
+        double x;
+        float d, u, n;
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        x = ldexp((double)(seed >> 11) * 0x1p-53 + 1, (int)(seed % 300) - 160) * (seed & 1024 ? -1 : 1);
+        d = dmath_f32_round(x, 0);
+        u = dmath_f32_round(x, 1);
+        n = (float)x;
+        assert_true((double)d <= x && (double)u >= x);
+        if ((double)n == x) {
+            assert_true(d == n && u == n);
+        } else {
+            assert_true(nextafterf(d, INFINITY) == u);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -600,6 +641,7 @@ int main(void)
         cmocka_unit_test(test_util_radix_order_matches_comparator),
         cmocka_unit_test(test_util_arena_refuses_a_size_that_wraps),
         cmocka_unit_test(test_util_frobenius_bounds_spectral_norm),
+        cmocka_unit_test(test_util_f32_round_brackets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
