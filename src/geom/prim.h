@@ -74,8 +74,9 @@ typedef char prim_plane_is_4_doubles[sizeof(prim_plane) == 4 * sizeof(double) ? 
 /* The linear part of a primitive's placement in binary64: the inverse
  * ainv_d of its canonical map (world_from_canonical), which every hit
  * reads. The map itself is formed again from the scene primitive where it
- * is read (scene_prim_canon_map: the compile, a hit's tangents): kept, it
- * made 10,000 distinct parts' compile 3.6 MB larger (docs/performance.md,
+ * is read (scene_prim_canon_map: the compile, a hit's tangents, each
+ * thread keeping the last it formed, trace/cscene.h): kept, it made
+ * 10,000 distinct parts' compile 3.6 MB larger (docs/performance.md,
  * run AV). Twins (a kind, dimensions and linear part alike bit for bit:
  * model/prim_twin.h) share one. */
 typedef struct prim_lin {

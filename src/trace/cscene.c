@@ -22,14 +22,15 @@ void NS(cscene_to_world)(const cscene *cs, const double *deck, double *world)
         world[i] = cs->nm.scale * deck[i] + cs->nm.off[i];
 }
 
-void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out)
+void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, cscene_map_memo *mm,
+                             geom_surface *out)
 {
     const csg_inst *in;
     const prim *p = cscene_prim_of(cs, pi, &in);
-    double w[3], m[3], a[9];
+    double w[3], m[3];
     int i;
     if (!in->turn) {
-        NS(prim_surface)(p, face, vec3_add(pt, in->shift), NS(cscene_map)(cs, p, need_uv, a), out);
+        NS(prim_surface)(p, face, vec3_add(pt, in->shift), NS(cscene_map)(cs, p, need_uv, mm), out);
         vec3_to_d(pt, out->p);    /* the point itself, not its master's */
         return;
     }
@@ -38,7 +39,7 @@ void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int ne
     vec3_to_d(pt, w);
     for (i = 0; i < 3; i++)
         m[i] = dmath_dot3(in->turn->q + 3 * i, w) + in->shift_d[i];
-    NS(prim_surface)(p, face, vec3_from_d(m), NS(cscene_map)(cs, p, need_uv, a), out);
+    NS(prim_surface)(p, face, vec3_from_d(m), NS(cscene_map)(cs, p, need_uv, mm), out);
     memcpy(out->p, w, sizeof w);
     NS(cscene_inst_back)(in, out->n);
     NS(cscene_inst_back)(in, out->dpdu);

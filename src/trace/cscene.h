@@ -132,28 +132,40 @@ static inline void NS(cscene_inst_back)(const csg_inst *in, double v[3])
     memcpy(v, w, sizeof w);
 }
 
-/* a: compiled primitive p's canonical map (scene_prim_canon_map) where
- * need_uv, for prim_surface's tangents; else NULL. */
-static inline const double *NS(cscene_map)(const cscene *cs, const prim *p, int need_uv, double a[9])
+/* The canonical map a thread formed last, and whose: prim is the
+ * primitive's index plus one (0, as a zeroed context holds it: none).
+ * Consecutive hits that need (u,v) mostly fall on one primitive, which
+ * then forms its map once, not once a hit (docs/performance.md, run AW). */
+typedef struct cscene_map_memo {
+    int prim;
+    double a[9];
+} cscene_map_memo;
+
+/* Compiled primitive p's canonical map (scene_prim_canon_map), from or
+ * into *mm, where need_uv, for prim_surface's tangents; else NULL. */
+static inline const double *NS(cscene_map)(const cscene *cs, const prim *p, int need_uv, cscene_map_memo *mm)
 {
     if (!need_uv)
         return NULL;
-    scene_prim_canon_map(&cs->sc->prims[p->id], cs->nm.scale, a);
-    return a;
+    if (mm->prim != p->id + 1) {
+        scene_prim_canon_map(&cs->sc->prims[p->id], cs->nm.scale, mm->a);
+        mm->prim = p->id + 1;
+    }
+    return mm->a;
 }
 
-/* prim_surface of primitive pi (any, an instance's included) at pt: an
- * instance's out of line, so that a scene without them pays one test. */
-void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, geom_surface *out);
+/* prim_surface of primitive pi (any, an instance's included) at pt, the
+ * map from or into *mm: an instance's out of line, so that a scene
+ * without them pays one test. */
+void NS(cscene_surface_inst)(const cscene *cs, int pi, int face, vec3 pt, int need_uv, cscene_map_memo *mm,
+                             geom_surface *out);
 static inline void NS(cscene_surface)(const cscene *cs, int pi, int face, vec3 pt, int need_uv,
-                                      geom_surface *out)
+                                      cscene_map_memo *mm, geom_surface *out)
 {
     if (cs->prim_root && cs->prim_root[pi] >= 0)
-        NS(cscene_surface_inst)(cs, pi, face, pt, need_uv, out);
-    else {
-        double a[9];
-        NS(prim_surface)(&cs->prims[pi], face, pt, NS(cscene_map)(cs, &cs->prims[pi], need_uv, a), out);
-    }
+        NS(cscene_surface_inst)(cs, pi, face, pt, need_uv, mm, out);
+    else
+        NS(prim_surface)(&cs->prims[pi], face, pt, NS(cscene_map)(cs, &cs->prims[pi], need_uv, mm), out);
 }
 
 /* Compiles sc. 0 and *out (free with cscene_free), or a diag status:

@@ -98,6 +98,7 @@ static int probe_trace(const probe_cs *pc, const prim_ray *r, const lightbuf *lb
     arena *ar = (arena *)&pc->ar;
     geom_stats gs;
     csg_hit ch;
+    cscene_map_memo mm = {0};
     double dd[3], dn;
     int i;
     memset(&gs, 0, sizeof gs);
@@ -105,7 +106,7 @@ static int probe_trace(const probe_cs *pc, const prim_ray *r, const lightbuf *lb
                           : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), ar, &gs, &ch)))
         return 0;
     *pn = vec3_madd(r->o, ch.t, r->d);
-    NS(cscene_surface)(cs, ch.prim, ch.face, *pn, 1, &h->sf);
+    NS(cscene_surface)(cs, ch.prim, ch.face, *pn, 1, &mm, &h->sf);
     h->t = num_to_d(ch.t) / cs->nm.scale;
     h->prim = ch.prim;
     h->face = ch.face;

@@ -76,7 +76,7 @@ static void render_ops_ids(const cscene *cs, trace_ctx *tc, const prim_ray *r, d
                                                     &tc->gs, &h)
                            : NS(csg_intersect)(&cs->tree, r, num_from_i(GEOM_TMAX), &tc->ar, &tc->gs, &h)))
         return;
-    NS(cscene_surface)(cs, h.prim, h.face, vec3_madd(r->o, h.t, r->d), 1, &sf);
+    NS(cscene_surface)(cs, h.prim, h.face, vec3_madd(r->o, h.t, r->d), 1, &tc->map, &sf);
     out->prim = h.prim;
     out->face = h.face;
     out->region = (int32_t)(NS(trace_attribute)(cs, tc, h.prim, h.face, &sf) - cs->sc->attrs);

@@ -60,7 +60,7 @@ static inline void trace_surface(const cscene *cs, trace_ctx *tc, const cscene_f
             return;
         }
     }
-    NS(cscene_surface)(cs, h->prim, h->face, p, f->need_uv, sf);
+    NS(cscene_surface)(cs, h->prim, h->face, p, f->need_uv, &tc->map, sf);
 }
 
 /* Spawns a ray from surface point p of primitive pi (outward normal n_prim,

@@ -12,6 +12,8 @@ typedef struct trace_ctx {
     geom_stats gs;
     render_stats rs;
     unsigned long rays_left;   /* secondary rays the current pixel may still trace */
+    cscene_map_memo map;       /* the canonical map the last hit that needed
+                                  (u,v) formed */
 } trace_ctx;
 
 /* 0, or -1 when memory runs out. */
