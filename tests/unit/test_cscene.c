@@ -758,6 +758,38 @@ static void test_cscene_twins_index_closes(void **state)
     test_free(sh);
 }
 
+/* A thread's kept map (cscene_map_memo) answers as a map formed afresh:
+ * over 500 random decks, the surface at each primitive's bounding centre,
+ * asked in a random order of primitives and faces with one memo kept
+ * throughout, equals bit for bit the surface asked with an empty memo. */
+static void test_cscene_map_memo_as_fresh(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_map_memo_as_fresh");
+    cscene_map_memo kept = {0};
+    int deck, k;
+    (void)state;
+    for (deck = 0; deck < 500; deck++) {
+        char text[2048];
+        scene *sc = cscene_test_deck(&seed, text, sizeof text);
+        cscene *cs = cscene_test_compile(sc);
+        memset(&kept, 0, sizeof kept);
+        for (k = 0; k < 12; k++) {
+            int pi = (int)(test_rand(&seed) % cs->nprims), face = (int)(test_rand(&seed) % 3);
+            cscene_map_memo fresh = {0};
+            geom_surface a, b;
+            memset(&a, 0, sizeof a);
+            memset(&b, 0, sizeof b);
+            f64_cscene_surface(cs, pi, face, cs->prims[pi].bc, 1, &kept, &a);
+            f64_cscene_surface(cs, pi, face, cs->prims[pi].bc, 1, &fresh, &b);
+            if (memcmp(&a, &b, sizeof a) || kept.prim != pi + 1)
+                fail_msg("deck %d, ask %d: primitive %d face %d differs with the kept map\n%s", deck, k, pi, face,
+                         text);
+        }
+        f64_cscene_free(cs);
+        scene_free(sc);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -772,6 +804,7 @@ int main(void)
         cmocka_unit_test(test_cscene_twins_index_grows),
         cmocka_unit_test(test_cscene_twins_index_closes),
         cmocka_unit_test(test_cscene_node_boxes_rounded_outwards),
+        cmocka_unit_test(test_cscene_map_memo_as_fresh),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
