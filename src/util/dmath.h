@@ -1,8 +1,9 @@
 /* dmath — the small double-precision mathematics every module shares: pi,
- * degrees, 3-vectors, 3x3 matrices (row-major) and the singular values of a
- * 2x2 matrix. Used where the scene model, the per-mode compilers, PDS
- * validation, compare and the display shim need the same formula, so that
- * each is written once. Header-only except the 3x3 inverse and norm (dmath.c). */
+ * degrees, 3-vectors, 3x3 matrices (row-major), the singular values of a
+ * 2x2 matrix and binary32 rounded outwards. Used where the scene model,
+ * the per-mode compilers, PDS validation, compare and the display shim
+ * need the same formula, so that each is written once. Header-only except
+ * the 3x3 inverse and norm (dmath.c). */
 #ifndef UTIL_DMATH_H
 #define UTIL_DMATH_H
 #include <math.h>
