@@ -6,7 +6,6 @@
 #include "util/mem.h"
 #include "util/bvh.h"
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
