@@ -3,6 +3,7 @@
 #include "vm_cms_shim/cms_attr.h"
 #include "util/mem.h"
 #include "util/outfile.h"
+#include "util/sha256.h"
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -65,6 +66,13 @@ int cms_file_open_read(cms_file **f, const cms_disks *d, const char *arg,
         cms_name_free(&n);
         mem_free(r);
         return rc;
+    }
+    {
+        sha256 h;                 /* the bytes decoded, for a picture's provenance */
+        sha256_init(&h);
+        if (len)
+            sha256_update(&h, data, len);
+        sha256_hex(&h, r->info.sha256);
     }
     rc = cms_attr_read(n.path, &attr, err);
     cms_name_free(&n);

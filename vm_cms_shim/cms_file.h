@@ -26,6 +26,9 @@ typedef struct cms_file_info {
     cms_fileid header;
     int binary;                       /* raw records (a binary file, see cms_attr) */
     char date[20];                    /* date last written from the sidecar, or "" */
+    char sha256[65];                  /* SHA-256 of the host file's bytes as
+                                         read (cms_file_open_read), 64 hex
+                                         digits; "" for a file written */
 } cms_file_info;
 
 /* Opens an existing file for reading and decodes it whole (at most

@@ -143,6 +143,12 @@ static const char *cli_scene_host_first(const char *name, char *buf, size_t cap,
 
 int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err)
 {
+    char sum[65];
+    return cli_scene_load_sum(f, given, out, sum, err);
+}
+
+int cli_scene_load_sum(const cli_files *f, const char *given, scene **out, char sha256[65], diag *err)
+{
     cms_deck *deck;
     recsrc src;
     cms_name cn;
@@ -181,6 +187,9 @@ int cli_scene_load(const cli_files *f, const char *given, scene **out, diag *err
     ld.warn = cli_scene_warn;
     st = cms_deck_open(&deck, &src, &f->disks, name, &f->decode, err);
     if (st == 0) {
+        cms_file_info info;
+        cms_deck_state(deck, &info);
+        memcpy(sha256, info.sha256, sizeof info.sha256);
         st = scene_parse_with(&src, &ld, out, err);
         cms_deck_close(deck);
     }

@@ -34,6 +34,10 @@ extern const char cli_files_help[];
  * (scene_free it), or a diag status with err naming the file or fileid and
  * record. */
 int cli_scene_load(const cli_files *f, const char *name, scene **out, diag *err);
+/* cli_scene_load that also gives the SHA-256 of the deck's bytes as read
+ * for the parse (64 hex digits), for the picture's provenance: a deck
+ * changed while it renders is not checksummed again. */
+int cli_scene_load_sum(const cli_files *f, const char *name, scene **out, char sha256[65], diag *err);
 
 /* The SHA-256 of the file `name` (as `sha256sum` prints it) for a
  * picture's provenance. 0, or a diag status. */

@@ -55,24 +55,21 @@ int cli_sink_dl(const char *path, const render_fb *fb, dl_image_opts *dlo, int w
     return st;
 }
 
-int cli_sink_provenance(const cli_files *files, const char *deck, const char *mode, int aa,
-                        const render_fb *fb, image_meta *m, diag *err)
+void cli_sink_provenance(const char *deck, const char *deck_sha256, const char *mode, int aa,
+                         const render_fb *fb, image_meta *m)
 {
-    char hex[65], date[32];
-    if (deck && cli_file_sha256(files, deck, hex, err))
-        return err->status;
+    char date[32];
     image_meta_date(date);
     image_meta_init(m);
     image_meta_add(m, "Software", "maprt %s", version_string());
     image_meta_add(m, "Creation Time", "%s", date);
     if (deck) {
         image_meta_add(m, "maprt:deck", "%s", deck);
-        image_meta_add(m, "maprt:deck-sha256", "%s", hex);
+        image_meta_add(m, "maprt:deck-sha256", "%s", deck_sha256);
     }
     image_meta_add(m, "maprt:numeric", "%s", mode);
     image_meta_add(m, "maprt:size", "%dx%d", fb->img.width, fb->img.height);
     image_meta_add(m, "maprt:aa", "%d", aa);
-    return 0;
 }
 
 int cli_sink_dl_option(const char *cmd, int argc, char **argv, int *i, dl_image_opts *dlo,

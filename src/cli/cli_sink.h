@@ -21,8 +21,10 @@ int cli_sink_dl(const char *path, const render_fb *fb, dl_image_opts *dlo, int w
                  dl_image_stats *dls, diag *err);
 /* What made the picture, for its PNG tEXt chunks or PPM/PAM comments:
  * maprt's version, the date (SOURCE_DATE_EPOCH when set), the deck's name
- * and SHA-256 (none when deck is NULL), the numeric mode, size and aa.
- * render and merge write the same, so merged parts give the same bytes. */
-int cli_sink_provenance(const cli_files *files, const char *deck, const char *mode, int aa,
-                        const render_fb *fb, image_meta *m, diag *err);
+ * and SHA-256 (64 hex digits: render's from the bytes it parsed,
+ * cli_scene_load_sum; merge's from the file, cli_file_sha256; neither
+ * when deck is NULL), the numeric mode, size and aa. render and merge
+ * write the same, so merged parts give the same bytes. */
+void cli_sink_provenance(const char *deck, const char *deck_sha256, const char *mode, int aa,
+                         const render_fb *fb, image_meta *m);
 #endif

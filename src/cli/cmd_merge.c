@@ -187,8 +187,11 @@ int cmd_merge(int argc, char **argv)
     outfile_batch_begin();
     {
         image_meta meta;
-        if ((out_png && (cli_sink_provenance(&files, deck, first.mode, first.aa, &fb, &meta, &err)
-                         || image_out_write(out_png, pic_format, &fb.img, &meta, &err)))
+        char deck_sum[65] = "";
+        int summed = !(out_png && deck) || !cli_file_sha256(&files, deck, deck_sum, &err);
+        if (out_png && summed)
+            cli_sink_provenance(deck, deck_sum, first.mode, first.aa, &fb, &meta);
+        if (!summed || (out_png && image_out_write(out_png, pic_format, &fb.img, &meta, &err))
             || (out_dl && cli_sink_dl(out_dl, &fb, &dlo, wireframe, &dls, &err))
             || (out_ids && idmap_write(out_ids, &fb.ids, &err))
             || outfile_batch_commit(&err)) {

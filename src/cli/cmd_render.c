@@ -161,6 +161,7 @@ static int cmd_render_write_part(const char *path, const render_fb *fb, const re
 int cmd_render(int argc, char **argv)
 {
     const char *scene_name = NULL, *out_png = NULL, *out_dl = NULL, *out_part = NULL;
+    char deck_sum[65] = "";
     const char *out_ids = NULL, *mode = "q16", *v;
     const char *format = NULL;
     image_out_format pic_format = IMAGE_OUT_NONE;
@@ -308,7 +309,7 @@ int cmd_render(int argc, char **argv)
         || (out_ids && cli_output_path(&files, out_ids, &ids_path, &err))
         || (outs[0] = png_path, outs[1] = dl_path, outs[2] = part_path, outs[3] = ids_path,
             outfile_check_set(outs, 4, &err))
-        || cli_scene_load(&files, scene_name, &sc, &err) || outfile_check_set(outs, 4, &err)) {
+        || cli_scene_load_sum(&files, scene_name, &sc, deck_sum, &err) || outfile_check_set(outs, 4, &err)) {
         cli_mpi_agree(err.status, &root_status);
         quiet = cli_mpi_rank() != 0 && root_status;   /* rank 0 says it */
         goto done;
@@ -352,10 +353,10 @@ int cmd_render(int argc, char **argv)
     outfile_batch_begin();
     {
         image_meta meta;
+        if (out_png)
+            cli_sink_provenance(scene_name, deck_sum, ops->name, o.aa, &fb, &meta);
         if ((part_path && cmd_render_write_part(part_path, &fb, &o, part_ids, ops, &st, &err))
-            || (out_png && (cli_sink_provenance(&files, scene_name, ops->name, o.aa, &fb, &meta, &err)
-                            || image_out_write(png_path ? png_path : "-", pic_format, &fb.img,
-                                               &meta, &err)))
+            || (out_png && image_out_write(png_path ? png_path : "-", pic_format, &fb.img, &meta, &err))
             || (dl_path && cli_sink_dl(dl_path, &fb, &dlo, wireframe, &dls, &err))
             || (ids_path && idmap_write(ids_path, &fb.ids, &err))
             || outfile_batch_commit(&err)) {

@@ -9,6 +9,7 @@
 #include "support.h"
 #include "util/mem.h"
 #include "vm_cms_shim/cms_deck.h"
+#include "util/sha256.h"
 #include "vm_cms_shim/cms_file.h"
 
 /* The Figure 1 deck used throughout: card text (columns 1-72) and its
@@ -578,6 +579,19 @@ static void test_cms_deck_recsrc_names_fileid(void **state)
     assert_string_equal(src.name, "FIG1 SCENE A1");
     cms_deck_state(dk, &info);
     assert_int_equal(info.form, CMS_FORM_EBCDIC);
+    /* the checksum is of the bytes read: the card images, not their text,
+     * and still theirs after the file changes (a picture's provenance) */
+    {
+        sha256 h;
+        char hex[65];
+        sha256_init(&h);
+        sha256_update(&h, b.p, b.n);
+        sha256_hex(&h, hex);
+        assert_string_equal(info.sha256, hex);
+        t_write(dir, "FIG1.SCENE", "changed", 7);
+        cms_deck_state(dk, &info);
+        assert_string_equal(info.sha256, hex);
+    }
     while (src.next(src.ctx, &rec, &len, &e) == 1) {
         fig1_card((size_t)n, card);
         assert_int_equal(len, 80);
