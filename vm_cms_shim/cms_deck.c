@@ -29,6 +29,7 @@ int cms_deck_open(cms_deck **deck, recsrc *src, const cms_disks *d, const char *
     src->next = cms_deck_next;
     src->ctx = dk;
     src->name = dk->info.label;
+    src->records = dk->info.records > 0 ? (size_t)dk->info.records : 0;
     *deck = dk;
     return 0;
 }

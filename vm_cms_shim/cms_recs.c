@@ -170,6 +170,25 @@ static int cms_recs_take_header(recs_build *b, const char *s, size_t len, size_t
     return 1;
 }
 
+/* Room for all the records of text buf (one per line) and their bytes,
+ * which a line's never exceed but where a card is padded to 80 columns:
+ * grown a record at a time, 10,000 objects' deck was copied to fresh
+ * pages as it doubled, about 260 page faults (docs/performance.md, run
+ * AY). 0, or DIAG_IO when memory runs out. */
+static int cms_recs_reserve(recs_build *b, const unsigned char *buf, size_t n, diag *err)
+{
+    size_t lines = 1;
+    const unsigned char *at = buf, *end = buf + n, *nl;
+    while (at < end && (nl = memchr(at, '\n', (size_t)(end - at))) != NULL) {
+        lines++;
+        at = nl + 1;
+    }
+    if (mem_grow((void **)&b->r.rec, &b->reccap, lines, sizeof *b->r.rec)
+        || (n && mem_grow((void **)&b->r.text, &b->textcap, n, 1)))
+        return diag_at(err, DIAG_IO, "", 0, 0, "out of memory");
+    return 0;
+}
+
 /* Text and punch decks: one line per record. */
 static int cms_recs_decode_text(const unsigned char *buf, size_t n, cms_form form, int forced,
                        int raw, const char *name, cms_recs *out, diag *err)
@@ -179,6 +198,10 @@ static int cms_recs_decode_text(const unsigned char *buf, size_t n, cms_form for
     long recno = 0, first_cols = 0;
     int same = 1;
     memset(&b, 0, sizeof b);
+    if (cms_recs_reserve(&b, buf, n, err)) {
+        cms_recs_build_free(&b);
+        return DIAG_IO;
+    }
     while (pos < n) {
         const unsigned char *s = buf + pos, *nl = memchr(s, '\n', n - pos);
         size_t len = nl ? (size_t)(nl - s) : n - pos;

@@ -706,9 +706,30 @@ static int scene_parse_expand(scene_parser *p, int di, const double m[16], int m
     return left;
 }
 
-/* OBJECT name tail: checks the expansion against the scene limits, reserves
- * exactly the room it needs, expands it and adds its root. On error the
- * scene is left as before the statement. */
+/* The room to ask for when an array of the expansion must grow to hold
+ * need entries, `adds` of them this statement's (at most limit): where
+ * the source knows its records in all, room for the rest of the deck as
+ * statements like this one (as many records each, adding as many
+ * entries), else need (mem_grow then doubles). Each growth copies the
+ * array to pages never touched before: 10,000 objects' primitives and
+ * nodes doubled thirteen and fourteen times, about 690 of the load's
+ * 2,860 page faults, where each now grows once (docs/performance.md,
+ * run AY). A deck that is not all such statements is given room it
+ * does not touch, at most limit entries. */
+static size_t scene_parse_room(const scene_parser *p, size_t need, size_t adds, size_t limit)
+{
+    size_t total = p->lex.src->records, read = p->lex.recno > 0 ? (size_t)p->lex.recno : 0;
+    size_t first = p->st.tok[0].line > 0 ? (size_t)p->st.tok[0].line : read;
+    double guess;
+    if (!total || read >= total || first > read || need >= limit)
+        return need;
+    guess = (double)need + (double)adds * (double)(total - read) / (double)(read - first + 1);
+    return guess >= (double)limit ? limit : (size_t)guess;
+}
+
+/* OBJECT name tail: checks the expansion against the scene limits, makes
+ * room for it (scene_parse_room), expands it and adds its root. On error
+ * the scene is left as before the statement. */
 static int scene_parse_object(scene_parser *p, scene_cur *c)
 {
     scene *s = p->s;
@@ -727,10 +748,16 @@ static int scene_parse_object(scene_parser *p, scene_cur *c)
     if (2 * leaves - 1 > SCENE_PARSE_MAX_NODES - s->nnodes)
         return scene_cur_error(c, at, "%s brings the scene to more than %d CSG nodes",
                                at->text, SCENE_PARSE_MAX_NODES);
-    if (mem_grow((void **)&s->prims, &p->cap_prims, s->nprims + leaves, sizeof *s->prims) ||
-        mem_grow((void **)&s->nodes, &p->cap_nodes, s->nnodes + 2 * leaves - 1,
-                 sizeof *s->nodes) ||
-        mem_grow((void **)&s->roots, &p->cap_roots, s->nroots + 1, sizeof *s->roots))
+    if ((s->nprims + leaves > p->cap_prims
+         && mem_grow((void **)&s->prims, &p->cap_prims,
+                     scene_parse_room(p, s->nprims + leaves, leaves, SCENE_PARSE_MAX_PRIMS), sizeof *s->prims))
+        || (s->nnodes + 2 * leaves - 1 > p->cap_nodes
+            && mem_grow((void **)&s->nodes, &p->cap_nodes,
+                        scene_parse_room(p, s->nnodes + 2 * leaves - 1, 2 * leaves - 1, SCENE_PARSE_MAX_NODES),
+                        sizeof *s->nodes))
+        || (s->nroots + 1 > p->cap_roots
+            && mem_grow((void **)&s->roots, &p->cap_roots, scene_parse_room(p, s->nroots + 1, 1, SCENE_PARSE_MAX_NODES),
+                        sizeof *s->roots)))
         return scene_parse_oom(p, at);
     root = scene_parse_expand(p, u.def, u.m, 1, u.attr >= 0 ? u.attr : 0, c->st->tok[0].line, &bad);
     if (root < 0) {

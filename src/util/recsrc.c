@@ -30,4 +30,5 @@ void recsrc_from_memory(recsrc *src, recsrc_mem *state, const char *name,
     src->next = recsrc_mem_next;
     src->ctx = state;
     src->name = name;
+    src->records = 0;
 }

@@ -14,6 +14,9 @@ typedef struct recsrc {
     int (*next)(void *ctx, const char **rec, size_t *len, diag *err);
     void *ctx;
     const char *name;   /* file name or fileid for diagnostics */
+    size_t records;     /* records in all where known before the first is
+                           read (a deck decoded whole), else 0: a reader
+                           may size its arrays by it, never trust it */
 } recsrc;
 
 /* Line reader over a memory buffer: splits at LF, drops a CR before it; the

@@ -657,6 +657,7 @@ static void test_scene_parse_read_error(void **state)
     src.next = failing_next;
     src.ctx = &calls;
     src.name = "r.scene";
+    src.records = 0;
     diag_init(&err);
     assert_int_equal(scene_parse(&src, &s, &err), DIAG_IO);
     assert_null(s);
@@ -997,6 +998,57 @@ static void test_scene_parse_column72(void **state)
     assert_int_equal(col72_warnings, 0);
 }
 
+/* The deck's record count (recsrc.records) only sizes the parser's
+ * arrays: a count too small, right, or far too large (the room then
+ * stops at the documented limits) gives the same scene, and a deck of
+ * objects followed by a long tail of comments, which the first objects'
+ * rate overestimates, parses alike. */
+static void test_scene_parse_record_hint(void **state)
+{
+    static const size_t hints[] = {0, 1, 0 /* exact, below */, 1000000000};
+    char *deck = malloc(200000);
+    size_t len = 0, records = 0, h, i;
+    scene *ref = NULL;
+    (void)state;
+    assert_non_null(deck);
+    len += (size_t)sprintf(deck + len, "EYE 0 -40 10\nLOOKAT 0 0 0\nLIGHT 0 -40 40\nSPHERE S 1\nBLOCK C 1 1 1\n"
+                           "CYLINDER Y 0.3 2\nDIFF P S C Y\n");
+    records = 7;
+    for (i = 0; i < 700; i++, records += 2)
+        len += (size_t)sprintf(deck + len, "OBJECT P TRANSLATE %zu 0 0 -\n ROTATE Z %zu\n", i % 40, i);
+    for (i = 0; i < 3000; i++, records++)
+        len += (size_t)sprintf(deck + len, "* a comment after the objects\n");
+    for (h = 0; h < sizeof hints / sizeof hints[0]; h++) {
+        recsrc src;
+        recsrc_mem m;
+        scene *s = NULL;
+        diag err;
+        diag_init(&err);
+        recsrc_from_memory(&src, &m, "t.scene", deck, len);
+        src.records = h == 2 ? records : hints[h];
+        if (scene_parse_with(&src, NULL, &s, &err)) {
+            char buf[512];
+            diag_format(&err, buf, sizeof buf);
+            fail_msg("%s", buf);
+        }
+        assert_int_equal(s->nprims, 2100);
+        assert_int_equal(s->nroots, 700);
+        if (!ref) {
+            ref = s;
+            continue;
+        }
+        assert_int_equal(s->nnodes, ref->nnodes);
+        for (i = 0; i < s->nprims; i++)
+            assert_memory_equal(s->prims[i].world_from_object, ref->prims[i].world_from_object,
+                                sizeof s->prims[i].world_from_object);
+        assert_memory_equal(s->nodes, ref->nodes, s->nnodes * sizeof *s->nodes);
+        assert_memory_equal(s->roots, ref->roots, s->nroots * sizeof *s->roots);
+        scene_free(s);
+    }
+    scene_free(ref);
+    free(deck);
+}
+
 /* An unknown keyword names the nearest one, inside a block its body's. */
 static void test_scene_parse_did_you_mean(void **state)
 {
@@ -1026,6 +1078,7 @@ int main(void)
         cmocka_unit_test(test_scene_parse_names),
         cmocka_unit_test(test_scene_parse_error_texts),
         cmocka_unit_test(test_scene_parse_read_error),
+        cmocka_unit_test(test_scene_parse_record_hint),
         cmocka_unit_test(test_scene_parse_light_limit),
         cmocka_unit_test(test_scene_parse_item_limit),
         cmocka_unit_test(test_scene_parse_expansion_limit),
