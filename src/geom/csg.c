@@ -166,7 +166,13 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
 
 /* Balanced tree of operator op over the compiled nodes items[0..n-1]:
  * bounded operands are split at the median of their centres along the axis
- * of largest spread; unbounded ones are chained on top. */
+ * of largest spread; unbounded ones are chained on top. Operands whose
+ * centres agree within PRIM_SAME_TOL on every axis (a block and the sphere
+ * that rounds it, bores through one point) are split in the deck's order:
+ * sorted, they would follow the rounding of their placement, and copies of
+ * one part would compile to different trees wherever they stood (10,000
+ * turned copies of csg81's part split 5,346 to 4,654 between the two orders
+ * of its block and sphere, docs/performance.md, run AZ). */
 static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
 {
     int nb = 0, i, j, l, r, axis = 0;
@@ -192,21 +198,23 @@ static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
     for (j = 1; j < 3; j++)
         if (hi[j] - lo[j] > hi[axis] - lo[axis])
             axis = j;
-    for (i = 0; i < n; i++) {
-        keys[i].key = x->bd[items[i] - x->b0].c[axis];
-        keys[i].idx = items[i];
-    }
-    if (n <= CSG_SORT_SHORT)                 /* the same order, without calls */
-        for (i = 1; i < n; i++) {
-            csg_key k = keys[i];
-            for (j = i; j > 0 && csg_key_cmp(&k, &keys[j - 1]) < 0; j--)
-                keys[j] = keys[j - 1];
-            keys[j] = k;
+    if (hi[axis] - lo[axis] > PRIM_SAME_TOL) {
+        for (i = 0; i < n; i++) {
+            keys[i].key = x->bd[items[i] - x->b0].c[axis];
+            keys[i].idx = items[i];
         }
-    else
-        qsort(keys, (size_t)n, sizeof *keys, csg_key_cmp);
-    for (i = 0; i < n; i++)
-        items[i] = keys[i].idx;
+        if (n <= CSG_SORT_SHORT)             /* the same order, without calls */
+            for (i = 1; i < n; i++) {
+                csg_key k = keys[i];
+                for (j = i; j > 0 && csg_key_cmp(&k, &keys[j - 1]) < 0; j--)
+                    keys[j] = keys[j - 1];
+                keys[j] = k;
+            }
+        else
+            qsort(keys, (size_t)n, sizeof *keys, csg_key_cmp);
+        for (i = 0; i < n; i++)
+            items[i] = keys[i].idx;
+    }
     l = csg_balance(x, items, n / 2, op, keys);
     if (l < 0)
         return -1;

@@ -758,6 +758,70 @@ static void test_cscene_twins_index_closes(void **state)
     test_free(sh);
 }
 
+/* The compiled tree of object k, pre-order, into out: each operator's
+ * letter and each leaf's primitive name. */
+static void cscene_test_shape(const cscene *cs, const scene *sc, int ni, char *out, size_t cap)
+{
+    const csg_node *nd = &cs->tree.nodes[ni];
+    size_t len = strlen(out);
+    if (nd->op == CSG_LEAF) {
+        snprintf(out + len, cap - len, "%s ", sc->prims[csg_leaf_prim(nd)].shape->name);
+        return;
+    }
+    snprintf(out + len, cap - len, "%c(", "LUID"[nd->op]);
+    cscene_test_shape(cs, sc, (int)nd->left, out, cap);
+    cscene_test_shape(cs, sc, nd->right, out, cap);
+    len = strlen(out);
+    snprintf(out + len, cap - len, ") ");
+}
+
+/* 60 copies of csg81's part (a block meeting a sphere, minus three
+ * bores; the centres of each operator's operands coincide) at random
+ * turns, scales and places: each compiles to the same tree, its
+ * operands in the deck's order. Ordered by the rounding of their
+ * centres, they split between the two orders of block and sphere, and
+ * each order takes its own path through the classification. */
+static void test_cscene_copies_compile_alike(void **state)
+{
+    uint64_t seed = test_seed("test_cscene_copies_compile_alike");
+    static char text[16384];
+    size_t len = 0;
+    scene *sc;
+    cscene *cs;
+    char want[256] = "", got[256];
+    int k;
+    (void)state;
+    len += (size_t)snprintf(text + len, sizeof text - len,
+                            "EYE 30 -40 20\nLOOKAT 0 0 0\nLIGHT 0 0 50\n"
+                            "BLOCK CUBE 2 2 2 TRANSLATE -1 -1 -1\nSPHERE BALL 1.35\n"
+                            "CYLINDER BORE 0.5 3 TRANSLATE 0 0 -1.5\nINTER ROUND CUBE BALL\n"
+                            "DIFF PART ROUND BORE ROTATE Y 90 BORE ROTATE X 90 BORE\n");
+    for (k = 0; k < 60; k++)
+        len += (size_t)snprintf(text + len, sizeof text - len,
+                                "OBJECT PART SCALE %.9f ROTATE X %.4f ROTATE Y %.4f -\n"
+                                "  ROTATE Z %.4f TRANSLATE %.4f %.4f %.4f\n",
+                                test_uniform(&seed, 0.2, 3), test_uniform(&seed, 0, 360), test_uniform(&seed, 0, 360),
+                                test_uniform(&seed, 0, 360), test_uniform(&seed, -90, 90), test_uniform(&seed, -90, 90),
+                                test_uniform(&seed, -9, 9));
+    assert_true(len < sizeof text);
+    sc = tt_parse(text);
+    cs = cscene_test_compile(sc);
+    assert_int_equal(cs->tree.nobjects, 60);
+    assert_int_equal(cs->tree.ninst, 0);
+    for (k = 0; k < 60; k++) {
+        assert_true(cs->tree.objects[k] >= 0);
+        got[0] = 0;
+        cscene_test_shape(cs, sc, cs->tree.objects[k], got, sizeof got);
+        if (!k)
+            memcpy(want, got, sizeof want);
+        else if (strcmp(got, want))
+            fail_msg("object %d compiles to %s, object 0 to %s", k, got, want);
+    }
+    assert_string_equal(want, "D(I(CUBE BALL ) U(BORE U(BORE BORE ) ) ) ");
+    f64_cscene_free(cs);
+    scene_free(sc);
+}
+
 /* A thread's kept map (cscene_map_memo) answers as a map formed afresh:
  * over 500 random decks, the surface at each primitive's bounding centre,
  * asked in a random order of primitives and faces with one memo kept
@@ -804,6 +868,7 @@ int main(void)
         cmocka_unit_test(test_cscene_twins_index_grows),
         cmocka_unit_test(test_cscene_twins_index_closes),
         cmocka_unit_test(test_cscene_node_boxes_rounded_outwards),
+        cmocka_unit_test(test_cscene_copies_compile_alike),
         cmocka_unit_test(test_cscene_map_memo_as_fresh),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
