@@ -164,6 +164,13 @@ static int csg_add(csg_ctx *x, int op, int l, int r, int pi)
     return x->n++;
 }
 
+/* 1 when compiled node ni is a sphere's leaf. */
+static int csg_is_sphere(const csg_ctx *x, int ni)
+{
+    const csg_node *nd = &x->nodes[ni];
+    return nd->op == CSG_LEAF && x->prims[csg_leaf_prim(nd)].kind == PRIM_SPHERE;
+}
+
 /* Balanced tree of operator op over the compiled nodes items[0..n-1]:
  * bounded operands are split at the median of their centres along the axis
  * of largest spread; unbounded ones are chained on top. Operands whose
@@ -214,6 +221,14 @@ static int csg_balance(csg_ctx *x, int *items, int n, int op, csg_key *keys)
             qsort(keys, (size_t)n, sizeof *keys, csg_key_cmp);
         for (i = 0; i < n; i++)
             items[i] = keys[i].idx;
+    }
+    /* a sphere meeting one other operand goes second, where
+     * csg_diff_first looks for it: the sweep gives an intersection the
+     * same spans in either order (span.c) */
+    if (op == CSG_INTER && n == 2 && csg_is_sphere(x, items[0]) && !csg_is_sphere(x, items[1])) {
+        int t = items[0];
+        items[0] = items[1];
+        items[1] = t;
     }
     l = csg_balance(x, items, n / 2, op, keys);
     if (l < 0)
