@@ -9,8 +9,13 @@
 # cost over its own cost at one object: the median of the ratios of runs
 # paired in time (each round runs the one-object scene just before the
 # n x n one, so that a shared machine's load, which drifts over the
-# minutes a table takes, weighs on both alike) and (last three columns)
-# the ratio of the minima, the runs such a machine disturbed least. The
+# minutes a table takes, weighs on both alike), the ratio of the minima
+# (the three columns after the pixels), the runs such a machine
+# disturbed least, and (the last two) in how many rounds each mode grew
+# less than POV-Ray in the same round, k/N: were the tools alike, each
+# round would go either way as a coin does, so k near N/2 says the
+# growths are level, and k or N - k at most 1 of 11 rounds is a
+# difference a coin gives by chance about once in 85 (a sign test). The
 # scenes are written here, both from the one list of placements. GROW_TURN=1 turns
 # each object about x, then y, then z by angles drawn from a fixed
 # pseudo-random sequence (awk's srand(1)): no two objects then share a
@@ -108,13 +113,22 @@ paired() {
     awk '{ v[NR] = $1 } END { printf "%.2f\n", (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
 
+# below T N: in how many rounds T's growth at n = N (its CPU at N over
+# its CPU at one object, as paired takes it) was below POV-Ray's in the
+# same round, as k/rounds ("-" for N = 1)
+below() {
+  [ "$2" = 1 ] && { echo -; return; }
+  paste -d ' ' "$tmp/$1$2.t" "$tmp/${1}1_$2.t" "$tmp/p$2.t" "$tmp/p1_$2.t" |
+    awk '$5 > 0 && $13 > 0 { n++; k += $1 / $5 < $9 / $13 } END { printf "%d/%d\n", k, n }'
+}
+
 # least1 T N: T's least CPU at one object, of the n = 1 runs and those
 # paired with n = N
 least1() {
   cat "$tmp/${1}1.t" $( [ "$2" = 1 ] || echo "$tmp/${1}1_$2.t") | sort -n | awk 'NR == 1 { printf "%.3f\n", $1 }'
 }
 
-echo "objects,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_growth,f64_growth,pov_growth,pixels_over_8,q16_growth_min,f64_growth_min,pov_growth_min"
+echo "objects,q16_cpu_s,f64_cpu_s,pov_cpu_s,q16_growth,f64_growth,pov_growth,pixels_over_8,q16_growth_min,f64_growth_min,pov_growth_min,q16_rounds_below_pov,f64_rounds_below_pov"
 for n in 1 3 10 32 100; do
   scenes "$n"
   povray "+I$tmp/g$n.pov" "+L$dir" "+O$tmp/g.ppm" "+W$w" "+H$h" +WT1 +FP -D "File_Gamma=1.0" Display=off >/dev/null 2>&1 \
@@ -141,5 +155,6 @@ for n in 1 3 10 32 100; do
   for t in q f p; do row="$row,$(paired "$t" "$n")"; done
   row="$row,$over"
   for t in q f p; do row="$row,$(ratio "$(least "$t$n" 1)" "$(least1 "$t" "$n")")"; done
+  for t in q f; do row="$row,$(below "$t" "$n")"; done
   echo "$row"
 done
